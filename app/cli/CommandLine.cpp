@@ -1,0 +1,118 @@
+#include "CommandLine.hpp"
+
+#include <set>
+#include <stdexcept>
+
+namespace mcdda::cli {
+
+std::string usage_text() {
+    return R"(mcdda - elastic-plastic discontinuous deformation analysis (MC-DDA)
+
+Usage:
+  mcdda check  MODEL [--set POINTER=VALUE]...
+  mcdda mesh   MODEL --out DIR [--profile] [--set POINTER=VALUE]...
+  mcdda render MODEL --out FILE.png [--size WxH] [--no-mesh] [--set POINTER=VALUE]...
+  mcdda --help | --version
+
+Commands:
+  check    validate the model: every problem is printed with its JSON pointer;
+           exit status 1 when there is any error
+  mesh     cut the regions into blocks, mesh every block and write DIR/<model>.vtu
+           (cell data: block, material) with the mesh statistics
+  render   draw blocks, joints, mesh, supports and loads with a legend into a PNG
+           (starts a virtual X server through xvfb-run when DISPLAY is not set)
+
+Options:
+  --set POINTER=VALUE  override any field of the model by JSON pointer before it is
+                       read, e.g. --set /materials/0/cohesion=3.45e6 (repeatable;
+                       VALUE is JSON, or a string when it is not valid JSON)
+  --out PATH           output directory (mesh) or PNG file (render)
+  --profile            print a timing breakdown of the stages
+  --size WxH           picture size in pixels for render (default 1600x1000)
+  --no-mesh            do not draw element edges in render
+  --quiet              print errors only
+  --help, --version
+
+Exit status: 0 success, 1 the model has errors, 2 bad command line, 3 could not write output.
+)";
+}
+
+std::optional<Request> parse_command_line(const std::vector<std::string>& args, std::string& error) {
+    Request r;
+    static const std::set<std::string> commands{"check", "mesh", "render"};
+    std::vector<std::string> positional;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&](const char* option) -> std::optional<std::string> {
+            const std::string prefix = std::string(option) + "=";
+            if (a.rfind(prefix, 0) == 0) return a.substr(prefix.size());
+            if (i + 1 >= args.size()) {
+                error = std::string(option) + " needs a value";
+                return std::nullopt;
+            }
+            return args[++i];
+        };
+        auto is = [&](const char* option) { return a == option || a.rfind(std::string(option) + "=", 0) == 0; };
+        if (a == "--help" || a == "-h") r.help = true;
+        else if (a == "--version") r.version = true;
+        else if (a == "--profile") r.profile = true;
+        else if (a == "--quiet" || a == "-q") r.quiet = true;
+        else if (a == "--no-mesh") r.show_mesh = false;
+        else if (is("--set")) {
+            const auto v = value("--set");
+            if (!v) return std::nullopt;
+            r.overrides.push_back(*v);
+        } else if (is("--out") || a == "-o") {
+            const auto v = value("--out");
+            if (!v) return std::nullopt;
+            r.out = *v;
+        } else if (is("--size")) {
+            const auto v = value("--size");
+            if (!v) return std::nullopt;
+            const auto x = v->find('x');
+            try {
+                if (x == std::string::npos) throw std::invalid_argument("no x");
+                r.width = std::stoi(v->substr(0, x));
+                r.height = std::stoi(v->substr(x + 1));
+            } catch (const std::exception&) {
+                error = "--size expects WIDTHxHEIGHT, e.g. 1600x1000, got \"" + *v + "\"";
+                return std::nullopt;
+            }
+            if (r.width < 64 || r.height < 64 || r.width > 8192 || r.height > 8192) {
+                error = "--size must lie between 64x64 and 8192x8192";
+                return std::nullopt;
+            }
+        } else if (!a.empty() && a[0] == '-' && a != "-") {
+            error = "unknown option " + a;
+            return std::nullopt;
+        } else {
+            positional.push_back(a);
+        }
+    }
+    if (r.help || r.version) return r;
+    if (positional.empty()) {
+        error = "no command given";
+        return std::nullopt;
+    }
+    r.command = positional[0];
+    if (!commands.count(r.command)) {
+        error = "unknown command \"" + r.command + "\" (expected check, mesh or render)";
+        return std::nullopt;
+    }
+    if (positional.size() < 2) {
+        error = r.command + ": no model file given";
+        return std::nullopt;
+    }
+    if (positional.size() > 2) {
+        error = r.command + ": unexpected argument \"" + positional[2] + "\"";
+        return std::nullopt;
+    }
+    r.model = positional[1];
+    if ((r.command == "mesh" || r.command == "render") && r.out.empty()) {
+        error = r.command + ": --out is required";
+        return std::nullopt;
+    }
+    return r;
+}
+
+}  // namespace mcdda::cli

@@ -1,0 +1,30 @@
+#pragma once
+/// \file CommandLine.hpp
+/// Parsing of `mcdda COMMAND MODEL [options]`; no behaviour, just the user's request.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mcdda::cli {
+
+struct Request {
+    std::string command;                 ///< check, mesh, render; empty with --help/--version
+    std::string model;                   ///< model file path
+    std::string out;                     ///< --out (directory for mesh, PNG file for render)
+    std::vector<std::string> overrides;  ///< --set POINTER=VALUE, in order
+    bool help = false;
+    bool version = false;
+    bool profile = false;                ///< --profile: print a timing breakdown
+    bool quiet = false;                  ///< --quiet: errors only
+    int width = 1600, height = 1000;     ///< --size WxH for render
+    bool show_mesh = true;               ///< --no-mesh hides element edges in render
+};
+
+/// Parses argv; returns the request or sets `error` to a message for the user.
+std::optional<Request> parse_command_line(const std::vector<std::string>& args, std::string& error);
+
+/// The text printed by --help.
+std::string usage_text();
+
+}  // namespace mcdda::cli

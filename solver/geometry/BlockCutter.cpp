@@ -1,0 +1,231 @@
+#include "geometry/BlockCutter.hpp"
+
+#include "geometry/PolygonChecks.hpp"
+#include "model/ModelValidator.hpp"
+
+#include <CGAL/Arr_consolidated_curve_data_traits_2.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <queue>
+#include <set>
+#include <sstream>
+
+namespace mcdda {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
+// Each curve carries its source: id ≥ 0 is a joint, id < 0 is the boundary of region −id−1.
+// Consolidated data merges the ids of curves that overlap (a joint along a region boundary).
+using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, int>;
+using Arrangement = CGAL::Arrangement_2<Traits>;
+using Curve = Traits::Curve_2;
+using FaceHandle = Arrangement::Face_const_handle;
+using Halfedge = Arrangement::Halfedge_const_handle;
+
+int region_id(int r) { return -r - 1; }
+
+void add_ring(std::vector<Curve>& curves, const Ring& ring, int id) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Point2& a = ring[i];
+        const Point2& b = ring[(i + 1) % ring.size()];
+        curves.emplace_back(Kernel::Segment_2({a.x, a.y}, {b.x, b.y}), id);
+    }
+}
+
+/// The regions whose boundary contains the edge: crossing it toggles membership of each.
+std::vector<int> regions_of(Halfedge e) {
+    std::vector<int> out;
+    for (auto it = e->curve().data().begin(); it != e->curve().data().end(); ++it)
+        if (*it < 0) out.push_back(-*it - 1);
+    return out;
+}
+
+std::vector<int> joints_of(Halfedge e) {
+    std::vector<int> out;
+    for (auto it = e->curve().data().begin(); it != e->curve().data().end(); ++it)
+        if (*it >= 0) out.push_back(*it);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+/// Membership (sorted region indices) of every face, found by walking from the unbounded face:
+/// crossing an edge of region r's boundary (outer ring or hole) toggles being inside r.
+std::map<const void*, std::vector<int>> face_membership(const Arrangement& arr) {
+    std::map<const void*, std::vector<int>> inside;
+    std::queue<FaceHandle> queue;
+    inside[&*arr.unbounded_face()] = {};
+    queue.push(arr.unbounded_face());
+    auto visit_ccb = [&](Arrangement::Ccb_halfedge_const_circulator first, const std::vector<int>& here) {
+        auto c = first;
+        do {
+            const FaceHandle other = c->twin()->face();
+            if (!inside.count(&*other)) {
+                std::vector<int> next = here;
+                for (int r : regions_of(c)) {
+                    const auto it = std::find(next.begin(), next.end(), r);
+                    if (it == next.end()) next.push_back(r); else next.erase(it);
+                }
+                std::sort(next.begin(), next.end());
+                inside[&*other] = next;
+                queue.push(other);
+            }
+        } while (++c != first);
+    };
+    while (!queue.empty()) {
+        const FaceHandle f = queue.front();
+        queue.pop();
+        const std::vector<int> here = inside[&*f];
+        if (!f->is_unbounded()) visit_ccb(f->outer_ccb(), here);
+        for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) visit_ccb(*h, here);
+    }
+    return inside;
+}
+
+Point2 to_point(const Arrangement::Point_2& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+
+/// A boundary ring of a block from one CCB, skipping halfedges that have the block on both sides
+/// (dangling joint pieces); empty if nothing is left.
+void ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, Ring& ring, std::vector<EdgeTag>& tags) {
+    auto c = first;
+    do {
+        if (c->twin()->face() != c->face()) {
+            ring.push_back(to_point(c->source()->point()));
+            EdgeTag tag;
+            const auto joints = joints_of(c);
+            if (!joints.empty()) tag.joint = joints.front();
+            const auto regions = regions_of(c);
+            if (!regions.empty()) tag.region_boundary = *std::min_element(regions.begin(), regions.end());
+            tags.push_back(tag);
+        }
+    } while (++c != first);
+}
+
+std::string length_text(double metres) {
+    std::ostringstream out;
+    out.precision(3);
+    out << metres << " m";
+    return out.str();
+}
+
+}  // namespace
+
+std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagnostics) {
+    std::vector<Curve> curves;
+    for (std::size_t r = 0; r < model.regions.size(); ++r) {
+        add_ring(curves, model.regions[r].boundary, region_id(static_cast<int>(r)));
+        for (const Ring& h : model.regions[r].holes) add_ring(curves, h, region_id(static_cast<int>(r)));
+    }
+    for (std::size_t j = 0; j < model.joints.size(); ++j) {
+        const auto& pts = model.joints[j].points;
+        for (std::size_t k = 1; k < pts.size(); ++k) {
+            if (pts[k].x == pts[k - 1].x && pts[k].y == pts[k - 1].y) continue;
+            curves.emplace_back(Kernel::Segment_2({pts[k - 1].x, pts[k - 1].y}, {pts[k].x, pts[k].y}),
+                                static_cast<int>(j));
+        }
+    }
+    Arrangement arr;
+    CGAL::insert(arr, curves.begin(), curves.end());
+
+    const auto inside = face_membership(arr);
+
+    // Overlapping regions: a face inside two regions at once.
+    std::set<std::pair<int, int>> overlaps;
+    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+        const auto& in = inside.at(&*f);
+        for (std::size_t a = 0; a < in.size(); ++a)
+            for (std::size_t b = a + 1; b < in.size(); ++b) overlaps.insert({in[a], in[b]});
+    }
+    for (const auto& [a, b] : overlaps)
+        diagnostics.push_back({Diagnostic::Severity::Error, "/regions/" + std::to_string(b),
+                               "region \"" + model.regions[b].name + "\" overlaps region \"" +
+                                   model.regions[a].name + "\" (/regions/" + std::to_string(a) + ")"});
+    if (!overlaps.empty()) return {};
+
+    // Classify joint pieces: cutting (two different in-region faces), dangling (same face on
+    // both sides), or outside (no region on either side).
+    std::vector<double> cutting(model.joints.size(), 0.0), dangling(model.joints.size(), 0.0),
+        in_region(model.joints.size(), 0.0);
+    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+        const auto joints = joints_of(e);
+        if (joints.empty()) continue;
+        const bool left_in = !inside.at(&*e->face()).empty();
+        const bool right_in = !inside.at(&*e->twin()->face()).empty();
+        const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(e->source()->point(), e->target()->point())));
+        for (int j : joints) {
+            if (left_in || right_in) in_region[j] += length;
+            if (!left_in || !right_in) continue;  // outside, or lying on the model's outer boundary
+            if (e->face() == e->twin()->face()) dangling[j] += length;
+            else cutting[j] += length;
+        }
+    }
+    // Generated traces are reported per joint set: a set with a limited extent always leaves
+    // dangling ends, and one line per trace would drown the other messages.
+    std::vector<double> set_dangling(model.joint_sets.size(), 0.0);
+    std::vector<int> set_pieces(model.joint_sets.size(), 0);
+    for (std::size_t j = 0; j < model.joints.size(); ++j) {
+        const Joint& joint = model.joints[j];
+        if (joint.joint_set >= 0) {
+            set_dangling[joint.joint_set] += dangling[j];
+            set_pieces[joint.joint_set] += dangling[j] > 0.0;
+            continue;
+        }
+        const std::string path = joint_path(model, static_cast<int>(j));
+        if (in_region[j] == 0.0) {
+            diagnostics.push_back({Diagnostic::Severity::Error, path,
+                                   "joint \"" + joint.name + "\" lies outside every region"});
+        } else if (dangling[j] > 0.0) {
+            diagnostics.push_back({Diagnostic::Severity::Warning, path,
+                                   "joint \"" + joint.name + "\": " + length_text(dangling[j]) +
+                                       " of its trace separates no blocks and was dropped" +
+                                       (cutting[j] == 0.0 ? " (all of it)" : "")});
+        }
+    }
+    for (std::size_t s = 0; s < model.joint_sets.size(); ++s)
+        if (set_dangling[s] > 0.0)
+            diagnostics.push_back({Diagnostic::Severity::Warning, "/joint_sets/" + std::to_string(s),
+                                   "joint set \"" + model.joint_sets[s].name + "\": " + length_text(set_dangling[s]) +
+                                       " of " + std::to_string(set_pieces[s]) +
+                                       " traces separates no blocks and was dropped"});
+
+    std::vector<Block> blocks;
+    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+        if (f->is_unbounded()) continue;
+        const auto& in = inside.at(&*f);
+        if (in.size() != 1) continue;
+        Block b;
+        b.region = in.front();
+        b.material = model.regions[b.region].material;
+        b.tags.emplace_back();
+        ccb_ring(f->outer_ccb(), b.outer, b.tags.back());
+        for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) {
+            Ring ring;
+            std::vector<EdgeTag> tags;
+            ccb_ring(*h, ring, tags);
+            if (ring.size() < 3) continue;  // a joint trace floating inside the block
+            b.holes.push_back(std::move(ring));
+            b.tags.push_back(std::move(tags));
+        }
+        b.area = signed_area(b.outer);
+        for (const Ring& h : b.holes) b.area += signed_area(h);  // holes are clockwise
+        blocks.push_back(std::move(b));
+    }
+    // A stable order (by region, then lowest-left vertex) so block numbers do not depend on
+    // the arrangement's internal order.
+    auto key = [](const Block& b) {
+        Point2 low = b.outer.front();
+        for (const Point2& p : b.outer)
+            if (p.y < low.y || (p.y == low.y && p.x < low.x)) low = p;
+        return std::make_tuple(b.region, low.y, low.x);
+    };
+    std::stable_sort(blocks.begin(), blocks.end(), [&](const Block& a, const Block& b) { return key(a) < key(b); });
+    return blocks;
+}
+
+}  // namespace mcdda

@@ -1,0 +1,30 @@
+#include "io/AtomicFile.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace mcdda {
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+    try {
+        {
+            std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+            if (!out) throw std::runtime_error("cannot create " + temporary + ": " + std::strerror(errno));
+            write(out);
+            out.flush();
+            if (!out) throw std::runtime_error("writing " + temporary + " failed (disk full?)");
+        }
+        if (std::rename(temporary.c_str(), path.c_str()) != 0)
+            throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + std::strerror(errno));
+    } catch (...) {
+        std::remove(temporary.c_str());
+        throw;
+    }
+}
+
+}  // namespace mcdda

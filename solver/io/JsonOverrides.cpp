@@ -1,0 +1,75 @@
+#include "io/JsonOverrides.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace mcdda {
+
+namespace {
+
+Diagnostic override_error(const std::string& pointer, const std::string& message) {
+    return {Diagnostic::Severity::Error, pointer, "--set: " + message};
+}
+
+}  // namespace
+
+void apply_overrides(nlohmann::json& document, const std::vector<std::string>& assignments,
+                     std::vector<Diagnostic>& diagnostics) {
+    using nlohmann::json;
+    for (const std::string& assignment : assignments) {
+        const auto eq = assignment.find('=');
+        if (eq == std::string::npos || eq == 0) {
+            diagnostics.push_back(override_error(
+                assignment, "expected POINTER=VALUE, e.g. /materials/0/cohesion=3.45e6"));
+            continue;
+        }
+        const std::string pointer_text = assignment.substr(0, eq);
+        const std::string value_text = assignment.substr(eq + 1);
+        json value = json::parse(value_text, nullptr, /*allow_exceptions=*/false);
+        if (value.is_discarded()) value = value_text;  // a bare word is a string
+
+        try {
+            const json::json_pointer pointer(pointer_text);
+            if (pointer.empty()) {
+                diagnostics.push_back(override_error(pointer_text, "cannot replace the whole model"));
+                continue;
+            }
+            const json::json_pointer parent = pointer.parent_pointer();
+            if (!document.contains(parent)) {
+                diagnostics.push_back(override_error(
+                    pointer_text, "no field " + parent.to_string() + " in the model"));
+                continue;
+            }
+            json& container = document.at(parent);
+            if (container.is_array()) {
+                const std::string& last = pointer.back();
+                const bool append = last == "-";
+                std::size_t index = 0;
+                if (!append) {
+                    if (last.empty() || last.find_first_not_of("0123456789") != std::string::npos) {
+                        diagnostics.push_back(override_error(pointer_text, "array index expected"));
+                        continue;
+                    }
+                    index = std::stoul(last);
+                    if (index >= container.size()) {
+                        diagnostics.push_back(override_error(
+                            pointer_text, "index " + last + " is past the end (size " +
+                                              std::to_string(container.size()) + ")"));
+                        continue;
+                    }
+                }
+                if (append) container.push_back(value); else container[index] = value;
+            } else if (container.is_object()) {
+                container[pointer.back()] = value;
+            } else {
+                diagnostics.push_back(override_error(
+                    pointer_text, parent.to_string() + " is neither an object nor an array"));
+            }
+        } catch (const json::exception& e) {
+            diagnostics.push_back(override_error(pointer_text, e.what()));
+        } catch (const std::exception& e) {
+            diagnostics.push_back(override_error(pointer_text, e.what()));
+        }
+    }
+}
+
+}  // namespace mcdda

@@ -1,0 +1,665 @@
+#include "io/ModelReader.hpp"
+
+#include "io/JsonOverrides.hpp"
+#include "Version.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace mcdda {
+
+namespace {
+
+using nlohmann::json;
+constexpr double pi = 3.14159265358979323846;
+constexpr double degree = pi / 180.0;
+constexpr double standard_gravity = 9.81;  // m/s², converts unit weight to density
+
+std::string type_name(const json& j) {
+    switch (j.type()) {
+        case json::value_t::null: return "null";
+        case json::value_t::boolean: return "a boolean";
+        case json::value_t::string: return "a string";
+        case json::value_t::array: return "an array";
+        case json::value_t::object: return "an object";
+        case json::value_t::discarded: return "nothing";
+        default: return "a number";
+    }
+}
+
+std::string number_text(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+/// Walks the JSON document, collecting diagnostics with JSON pointers. Every accessor returns a
+/// value even on error (a default), so one pass reports as many problems as possible.
+class Parser {
+public:
+    explicit Parser(std::vector<Diagnostic>& diagnostics) : diagnostics_(diagnostics) {}
+
+    void error(const std::string& path, const std::string& message) {
+        diagnostics_.push_back({Diagnostic::Severity::Error, path, message});
+    }
+    void warning(const std::string& path, const std::string& message) {
+        diagnostics_.push_back({Diagnostic::Severity::Warning, path, message});
+    }
+
+    /// Reports keys of `object` that are not in `allowed` (typos must not pass silently).
+    void check_keys(const json& object, const std::string& path,
+                    std::initializer_list<const char*> allowed) {
+        std::set<std::string> known(allowed.begin(), allowed.end());
+        for (auto it = object.begin(); it != object.end(); ++it) {
+            if (!known.count(it.key())) {
+                std::string list;
+                for (const char* k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
+                error(path + "/" + it.key(), "unknown key \"" + it.key() + "\" (expected one of: " + list + ")");
+            }
+        }
+    }
+
+    bool is_object(const json& j, const std::string& path) {
+        if (j.is_object()) return true;
+        error(path, "must be an object, got " + type_name(j));
+        return false;
+    }
+
+    /// The array at `key`, or an empty array when absent (or wrong, after an error).
+    const json& array(const json& object, const std::string& path, const char* key) {
+        static const json empty = json::array();
+        if (!object.contains(key)) return empty;
+        const json& j = object.at(key);
+        if (!j.is_array()) {
+            error(path + "/" + key, "must be an array, got " + type_name(j));
+            return empty;
+        }
+        return j;
+    }
+
+    double number(const json& object, const std::string& path, const char* key,
+                  std::optional<double> fallback) {
+        const std::string where = path + "/" + key;
+        if (!object.contains(key)) {
+            if (!fallback) error(where, "required number is missing");
+            return fallback.value_or(0.0);
+        }
+        return number_value(object.at(key), where, fallback.value_or(0.0));
+    }
+
+    double number_value(const json& j, const std::string& where, double fallback = 0.0) {
+        if (!j.is_number()) {
+            error(where, "must be a number, got " + type_name(j));
+            return fallback;
+        }
+        const double v = j.get<double>();
+        if (!std::isfinite(v)) {
+            error(where, "must be finite");
+            return fallback;
+        }
+        return v;
+    }
+
+    long integer(const json& object, const std::string& path, const char* key, long fallback) {
+        const std::string where = path + "/" + key;
+        if (!object.contains(key)) return fallback;
+        const json& j = object.at(key);
+        if (j.is_number_integer()) return j.get<long>();
+        if (j.is_number_float()) {
+            const double v = j.get<double>();
+            if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 9e15) return static_cast<long>(v);
+        }
+        error(where, "must be a whole number, got " + (j.is_number() ? number_text(j.get<double>()) : type_name(j)));
+        return fallback;
+    }
+
+    bool boolean(const json& object, const std::string& path, const char* key, bool fallback) {
+        if (!object.contains(key)) return fallback;
+        const json& j = object.at(key);
+        if (j.is_boolean()) return j.get<bool>();
+        error(path + "/" + key, "must be true or false, got " + type_name(j));
+        return fallback;
+    }
+
+    std::string string(const json& object, const std::string& path, const char* key,
+                       std::optional<std::string> fallback) {
+        const std::string where = path + "/" + key;
+        if (!object.contains(key)) {
+            if (!fallback) error(where, "required text is missing");
+            return fallback.value_or("");
+        }
+        const json& j = object.at(key);
+        if (j.is_string()) return j.get<std::string>();
+        error(where, "must be a string, got " + type_name(j));
+        return fallback.value_or("");
+    }
+
+    Point2 point_value(const json& j, const std::string& where) {
+        if (!j.is_array() || j.size() != 2) {
+            error(where, "must be a point [x, y], got " + (j.is_array() ? "an array of " + std::to_string(j.size()) : type_name(j)));
+            return {};
+        }
+        return {number_value(j[0], where + "/0"), number_value(j[1], where + "/1")};
+    }
+
+    Point2 point(const json& object, const std::string& path, const char* key,
+                 std::optional<Point2> fallback = std::nullopt) {
+        if (!object.contains(key)) {
+            if (!fallback) error(path + "/" + key, "required point [x, y] is missing");
+            return fallback.value_or(Point2{});
+        }
+        return point_value(object.at(key), path + "/" + key);
+    }
+
+    /// Angle given in degrees in the file; returned in radians.
+    double angle(const json& object, const std::string& path, const char* key,
+                 std::optional<double> fallback_deg) {
+        return number(object, path, key, fallback_deg) * degree;
+    }
+
+private:
+    std::vector<Diagnostic>& diagnostics_;
+};
+
+/// Appends `segments` points of an arc (both ends included when `include_end`).
+void append_arc(Ring& ring, Point2 c, double r, double a0, double a1, int segments, bool include_end) {
+    const int last = include_end ? segments : segments - 1;
+    for (int i = 0; i <= last; ++i) {
+        const double a = a0 + (a1 - a0) * i / segments;
+        ring.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+    }
+}
+
+int segment_count(Parser& p, const json& o, const std::string& path, long fallback) {
+    const long n = p.integer(o, path, "segments", fallback);
+    if (n < 3 || n > 100000) {
+        p.error(path + "/segments", "must be between 3 and 100000, got " + std::to_string(n));
+        return static_cast<int>(fallback);
+    }
+    return static_cast<int>(n);
+}
+
+/// RING := [ [x,y] | {"arc": {...}} , ... ]  |  {"circle": {"center", "radius", "segments"}}
+Ring parse_ring(Parser& p, const json& j, const std::string& path) {
+    Ring ring;
+    if (j.is_object()) {
+        p.check_keys(j, path, {"circle"});
+        if (!j.contains("circle")) {
+            p.error(path, "a ring is an array of points or {\"circle\": {...}}");
+            return ring;
+        }
+        const json& c = j.at("circle");
+        const std::string cpath = path + "/circle";
+        if (!p.is_object(c, cpath)) return ring;
+        p.check_keys(c, cpath, {"center", "radius", "segments"});
+        const Point2 center = p.point(c, cpath, "center");
+        const double radius = p.number(c, cpath, "radius", std::nullopt);
+        const int n = segment_count(p, c, cpath, 64);
+        if (!(radius > 0.0)) {
+            p.error(cpath + "/radius", "must be positive, got " + number_text(radius));
+            return ring;
+        }
+        append_arc(ring, center, radius, 0.0, 2.0 * pi, n, false);
+        return ring;
+    }
+    if (!j.is_array()) {
+        p.error(path, "must be an array of points [x, y], got " + type_name(j));
+        return ring;
+    }
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const std::string epath = path + "/" + std::to_string(i);
+        const json& e = j[i];
+        if (e.is_object()) {
+            p.check_keys(e, epath, {"arc"});
+            if (!e.contains("arc") || !p.is_object(e.at("arc"), epath + "/arc")) {
+                if (!e.contains("arc")) p.error(epath, "expected a point [x, y] or {\"arc\": {...}}");
+                continue;
+            }
+            const json& a = e.at("arc");
+            const std::string apath = epath + "/arc";
+            p.check_keys(a, apath, {"center", "radius", "start", "end", "segments"});
+            const Point2 center = p.point(a, apath, "center");
+            const double radius = p.number(a, apath, "radius", std::nullopt);
+            const double start = p.angle(a, apath, "start", std::nullopt);
+            const double end = p.angle(a, apath, "end", std::nullopt);
+            const int n = segment_count(p, a, apath, 16);
+            if (!(radius > 0.0)) {
+                p.error(apath + "/radius", "must be positive, got " + number_text(radius));
+                continue;
+            }
+            if (start == end) {
+                p.error(apath, "start and end angles are equal");
+                continue;
+            }
+            append_arc(ring, center, radius, start, end, n, true);
+        } else {
+            ring.push_back(p.point_value(e, epath));
+        }
+    }
+    return ring;
+}
+
+/// Resolves a name to an index in `names`; reports an unknown name listing the known ones.
+int lookup(Parser& p, const std::map<std::string, int>& names, const std::string& name,
+           const std::string& where, const char* what) {
+    const auto it = names.find(name);
+    if (it != names.end()) return it->second;
+    std::string list;
+    for (const auto& [n, i] : names) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
+    p.error(where, std::string("no ") + what + " named \"" + name + "\"" +
+                       (list.empty() ? std::string(" (none are defined)") : " (defined: " + list + ")"));
+    return -1;
+}
+
+/// Records names, reporting duplicates and empty names.
+std::map<std::string, int> collect_names(Parser& p, const json& list, const std::string& path) {
+    std::map<std::string, int> names;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        if (!list[i].is_object() || !list[i].contains("name") || !list[i]["name"].is_string()) continue;
+        const std::string name = list[i]["name"].get<std::string>();
+        const std::string where = path + "/" + std::to_string(i) + "/name";
+        if (name.empty()) p.error(where, "must not be empty");
+        else if (!names.emplace(name, static_cast<int>(i)).second)
+            p.error(where, "duplicate name \"" + name + "\"");
+    }
+    return names;
+}
+
+void parse_materials(Parser& p, const json& root, Model& m) {
+    const json& list = p.array(root, "", "materials");
+    if (list.empty()) p.error("/materials", "at least one material is required");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "/materials/" + std::to_string(i);
+        const json& o = list[i];
+        Material mat;
+        if (!p.is_object(o, path)) { m.materials.push_back(mat); continue; }
+        p.check_keys(o, path, {"name", "young_modulus", "poisson_ratio", "density", "unit_weight", "cohesion",
+                               "friction_angle", "dilation_angle", "tensile_strength", "plastic"});
+        mat.name = p.string(o, path, "name", std::nullopt);
+        mat.young_modulus = p.number(o, path, "young_modulus", std::nullopt);
+        mat.poisson_ratio = p.number(o, path, "poisson_ratio", std::nullopt);
+        if (o.contains("density") && o.contains("unit_weight"))
+            p.error(path, "give either density or unit_weight, not both");
+        if (o.contains("unit_weight")) mat.density = p.number(o, path, "unit_weight", 0.0) / standard_gravity;
+        else mat.density = p.number(o, path, "density", 0.0);
+        mat.cohesion = p.number(o, path, "cohesion", 0.0);
+        mat.friction_angle = p.angle(o, path, "friction_angle", 0.0);
+        mat.dilation_angle = p.angle(o, path, "dilation_angle", 0.0);
+        mat.tensile_strength = p.number(o, path, "tensile_strength", 0.0);
+        mat.plastic = p.boolean(o, path, "plastic", true);
+        m.materials.push_back(mat);
+    }
+}
+
+void parse_joint_materials(Parser& p, const json& root, Model& m, std::map<std::string, int>& names) {
+    const json& list = p.array(root, "", "joint_materials");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "/joint_materials/" + std::to_string(i);
+        const json& o = list[i];
+        JointMaterial jm;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "friction_angle", "cohesion", "tensile_strength",
+                                   "normal_stiffness", "shear_stiffness"});
+            jm.name = p.string(o, path, "name", std::nullopt);
+            jm.friction_angle = p.angle(o, path, "friction_angle", std::nullopt);
+            jm.cohesion = p.number(o, path, "cohesion", 0.0);
+            jm.tensile_strength = p.number(o, path, "tensile_strength", 0.0);
+            jm.normal_stiffness = p.number(o, path, "normal_stiffness", 0.0);
+            jm.shear_stiffness = p.number(o, path, "shear_stiffness", 0.0);
+        }
+        m.joint_materials.push_back(jm);
+    }
+    if (m.joint_materials.empty()) {
+        // Region interfaces need some contact law; a frictional, cohesionless one is the safe default.
+        JointMaterial fallback;
+        fallback.name = "default";
+        fallback.friction_angle = 30.0 * degree;
+        m.joint_materials.push_back(fallback);
+        names["default"] = 0;
+    }
+    if (root.contains("default_joint_material")) {
+        const std::string name = p.string(root, "", "default_joint_material", std::string());
+        m.default_joint_material = lookup(p, names, name, "/default_joint_material", "joint material");
+    } else {
+        m.default_joint_material = 0;
+    }
+}
+
+int optional_reference(Parser& p, const json& o, const std::string& path, const char* key,
+                       const std::map<std::string, int>& names, const char* what) {
+    if (!o.contains(key)) return -1;
+    const std::string name = p.string(o, path, key, std::string());
+    return lookup(p, names, name, path + "/" + key, what);
+}
+
+void parse_geometry(Parser& p, const json& root, Model& m, const std::map<std::string, int>& material_names,
+                    const std::map<std::string, int>& joint_material_names) {
+    const json& regions = p.array(root, "", "regions");
+    if (regions.empty()) p.error("/regions", "at least one region is required");
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+        const std::string path = "/regions/" + std::to_string(i);
+        const json& o = regions[i];
+        Region r;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "material", "boundary", "holes"});
+            r.name = p.string(o, path, "name", "region " + std::to_string(i + 1));
+            const std::string material = p.string(o, path, "material", std::nullopt);
+            r.material = lookup(p, material_names, material, path + "/material", "material");
+            if (o.contains("boundary")) r.boundary = parse_ring(p, o.at("boundary"), path + "/boundary");
+            else p.error(path + "/boundary", "required ring of points is missing");
+            const json& holes = p.array(o, path, "holes");
+            for (std::size_t h = 0; h < holes.size(); ++h)
+                r.holes.push_back(parse_ring(p, holes[h], path + "/holes/" + std::to_string(h)));
+        }
+        m.regions.push_back(std::move(r));
+    }
+
+    const json& joints = p.array(root, "", "joints");
+    for (std::size_t i = 0; i < joints.size(); ++i) {
+        const std::string path = "/joints/" + std::to_string(i);
+        const json& o = joints[i];
+        Joint jt;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "points", "joint_material"});
+            jt.name = p.string(o, path, "name", "joint " + std::to_string(i + 1));
+            const json& pts = p.array(o, path, "points");
+            if (!o.contains("points")) p.error(path + "/points", "required list of points is missing");
+            for (std::size_t k = 0; k < pts.size(); ++k)
+                jt.points.push_back(p.point_value(pts[k], path + "/points/" + std::to_string(k)));
+            jt.joint_material = optional_reference(p, o, path, "joint_material", joint_material_names, "joint material");
+        }
+        m.joints.push_back(std::move(jt));
+    }
+
+    const json& sets = p.array(root, "", "joint_sets");
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+        const std::string path = "/joint_sets/" + std::to_string(i);
+        const json& o = sets[i];
+        JointSet s;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "angle", "spacing", "origin", "extent", "joint_material"});
+            s.name = p.string(o, path, "name", "set " + std::to_string(i + 1));
+            s.angle = p.angle(o, path, "angle", std::nullopt);
+            s.spacing = p.number(o, path, "spacing", std::nullopt);
+            s.origin = p.point(o, path, "origin", Point2{0.0, 0.0});
+            if (o.contains("extent")) {
+                const json& e = o.at("extent");
+                if (!e.is_array() || e.size() != 4) {
+                    p.error(path + "/extent", "must be [xmin, ymin, xmax, ymax]");
+                } else {
+                    std::array<double, 4> box{};
+                    for (int k = 0; k < 4; ++k) box[k] = p.number_value(e[k], path + "/extent/" + std::to_string(k));
+                    s.extent = box;
+                }
+            }
+            s.joint_material = optional_reference(p, o, path, "joint_material", joint_material_names, "joint material");
+        }
+        m.joint_sets.push_back(s);
+    }
+}
+
+void parse_tables(Parser& p, const json& root, Model& m) {
+    const json& list = p.array(root, "", "load_tables");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "/load_tables/" + std::to_string(i);
+        const json& o = list[i];
+        LoadTable t;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "variable", "points", "extrapolate"});
+            t.name = p.string(o, path, "name", std::nullopt);
+            const std::string variable = p.string(o, path, "variable", std::string("step"));
+            if (variable == "step") t.variable = LoadTable::Variable::Step;
+            else if (variable == "time") t.variable = LoadTable::Variable::Time;
+            else p.error(path + "/variable", "must be \"step\" or \"time\", got \"" + variable + "\"");
+            const json& pts = p.array(o, path, "points");
+            if (pts.empty()) p.error(path + "/points", "needs at least one [abscissa, factor] pair");
+            for (std::size_t k = 0; k < pts.size(); ++k) {
+                const Point2 q = p.point_value(pts[k], path + "/points/" + std::to_string(k));
+                t.points.push_back({q.x, q.y});
+            }
+            t.extrapolate = p.boolean(o, path, "extrapolate", false);
+        }
+        m.load_tables.push_back(t);
+    }
+}
+
+void parse_supports_and_loads(Parser& p, const json& root, Model& m, const std::map<std::string, int>& table_names) {
+    const json& fixed = p.array(root, "", "fixed_points");
+    for (std::size_t i = 0; i < fixed.size(); ++i) {
+        const std::string path = "/fixed_points/" + std::to_string(i);
+        FixedPoint f;
+        if (p.is_object(fixed[i], path)) {
+            p.check_keys(fixed[i], path, {"name", "point"});
+            f.name = p.string(fixed[i], path, "name", "fixed " + std::to_string(i + 1));
+            f.point = p.point(fixed[i], path, "point");
+        }
+        m.fixed_points.push_back(f);
+    }
+    const json& rollers = p.array(root, "", "rollers");
+    for (std::size_t i = 0; i < rollers.size(); ++i) {
+        const std::string path = "/rollers/" + std::to_string(i);
+        const json& o = rollers[i];
+        Roller r;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "from", "to", "fixed"});
+            r.name = p.string(o, path, "name", "roller " + std::to_string(i + 1));
+            r.from = p.point(o, path, "from");
+            r.to = p.point(o, path, "to");
+            const std::string fixed_dir = p.string(o, path, "fixed", std::nullopt);
+            r.fix_x = fixed_dir == "x" || fixed_dir == "xy";
+            r.fix_y = fixed_dir == "y" || fixed_dir == "xy";
+            if (!r.fix_x && !r.fix_y && !fixed_dir.empty())
+                p.error(path + "/fixed", "must be \"x\", \"y\" or \"xy\", got \"" + fixed_dir + "\"");
+        }
+        m.rollers.push_back(r);
+    }
+    const json& loads = p.array(root, "", "point_loads");
+    for (std::size_t i = 0; i < loads.size(); ++i) {
+        const std::string path = "/point_loads/" + std::to_string(i);
+        const json& o = loads[i];
+        PointLoad l;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "point", "force", "table"});
+            l.name = p.string(o, path, "name", "load " + std::to_string(i + 1));
+            l.point = p.point(o, path, "point");
+            l.force = p.point(o, path, "force");
+            l.table = optional_reference(p, o, path, "table", table_names, "load table");
+        }
+        m.point_loads.push_back(l);
+    }
+    const json& pressures = p.array(root, "", "edge_pressures");
+    for (std::size_t i = 0; i < pressures.size(); ++i) {
+        const std::string path = "/edge_pressures/" + std::to_string(i);
+        const json& o = pressures[i];
+        EdgePressure e;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "from", "to", "pressure", "table"});
+            e.name = p.string(o, path, "name", "pressure " + std::to_string(i + 1));
+            e.from = p.point(o, path, "from");
+            e.to = p.point(o, path, "to");
+            e.pressure = p.number(o, path, "pressure", std::nullopt);
+            e.table = optional_reference(p, o, path, "table", table_names, "load table");
+        }
+        m.edge_pressures.push_back(e);
+    }
+    if (root.contains("gravity")) m.gravity = p.point(root, "", "gravity");
+
+    if (root.contains("initial_stress")) {
+        const json& o = root.at("initial_stress");
+        const std::string path = "/initial_stress";
+        if (p.is_object(o, path)) {
+            const std::string type = p.string(o, path, "type", std::nullopt);
+            InitialStress& s = m.initial_stress;
+            if (type == "uniform") {
+                p.check_keys(o, path, {"type", "sxx", "syy", "sxy"});
+                // Entered compression positive (geotechnical); stored tension positive.
+                s.kind = InitialStress::Kind::Uniform;
+                s.stress = {-p.number(o, path, "sxx", 0.0), -p.number(o, path, "syy", 0.0),
+                            -p.number(o, path, "sxy", 0.0)};
+            } else if (type == "gravity") {
+                p.check_keys(o, path, {"type", "surface_y", "k0"});
+                s.kind = InitialStress::Kind::Gravity;
+                s.surface_y = p.number(o, path, "surface_y", std::nullopt);
+                s.k0 = p.number(o, path, "k0", std::nullopt);
+            } else if (type == "none") {
+                p.check_keys(o, path, {"type"});
+            } else if (!type.empty()) {
+                p.error(path + "/type", "must be \"uniform\", \"gravity\" or \"none\", got \"" + type + "\"");
+            }
+        }
+    }
+
+    const json& points = p.array(root, "", "measurement_points");
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::string path = "/measurement_points/" + std::to_string(i);
+        MeasurementPoint mp;
+        if (p.is_object(points[i], path)) {
+            p.check_keys(points[i], path, {"name", "point"});
+            mp.name = p.string(points[i], path, "name", std::nullopt);
+            mp.point = p.point(points[i], path, "point");
+        }
+        m.measurement_points.push_back(mp);
+    }
+    collect_names(p, points, "/measurement_points");
+}
+
+void parse_mesh(Parser& p, const json& root, Model& m) {
+    if (!root.contains("mesh")) return;
+    const json& o = root.at("mesh");
+    const std::string path = "/mesh";
+    if (!p.is_object(o, path)) return;
+    p.check_keys(o, path, {"size", "min_angle", "grading", "local", "max_elements"});
+    MeshControls& c = m.mesh;
+    c.size = p.number(o, path, "size", 0.0);
+    c.min_angle = p.angle(o, path, "min_angle", 25.0);
+    c.grading = p.number(o, path, "grading", c.grading);
+    c.max_elements = p.integer(o, path, "max_elements", c.max_elements);
+    const json& local = p.array(o, path, "local");
+    for (std::size_t i = 0; i < local.size(); ++i) {
+        const std::string lpath = path + "/local/" + std::to_string(i);
+        const json& l = local[i];
+        if (!p.is_object(l, lpath)) continue;
+        p.check_keys(l, lpath, {"point", "from", "to", "size", "radius"});
+        LocalSize s;
+        if (l.contains("point")) {
+            if (l.contains("from") || l.contains("to")) p.error(lpath, "give either point or from/to, not both");
+            s.from = s.to = p.point(l, lpath, "point");
+        } else {
+            s.from = p.point(l, lpath, "from");
+            s.to = p.point(l, lpath, "to");
+        }
+        s.size = p.number(l, lpath, "size", std::nullopt);
+        s.radius = p.number(l, lpath, "radius", 0.0);
+        c.local.push_back(s);
+    }
+}
+
+void parse_analysis(Parser& p, const json& root, Model& m) {
+    if (!root.contains("analysis")) return;
+    const json& o = root.at("analysis");
+    const std::string path = "/analysis";
+    if (!p.is_object(o, path)) return;
+    p.check_keys(o, path, {"type", "steps", "time_step", "max_displacement_ratio", "penalty", "dynamic_ratio",
+                           "open_close_iterations", "plastic_iterations", "plastic_tolerance", "output_every",
+                           "plasticity"});
+    AnalysisSettings& a = m.analysis;
+    const std::string type = p.string(o, path, "type", std::string("static"));
+    if (type == "static") a.kind = AnalysisSettings::Kind::Static;
+    else if (type == "dynamic") a.kind = AnalysisSettings::Kind::Dynamic;
+    else p.error(path + "/type", "must be \"static\" or \"dynamic\", got \"" + type + "\"");
+    a.steps = static_cast<int>(p.integer(o, path, "steps", a.steps));
+    a.time_step = p.number(o, path, "time_step", a.time_step);
+    a.max_displacement_ratio = p.number(o, path, "max_displacement_ratio", a.max_displacement_ratio);
+    a.penalty = p.number(o, path, "penalty", a.penalty);
+    a.dynamic_ratio = p.number(o, path, "dynamic_ratio", a.dynamic_ratio);
+    a.max_open_close_iterations = static_cast<int>(p.integer(o, path, "open_close_iterations", a.max_open_close_iterations));
+    a.max_plastic_iterations = static_cast<int>(p.integer(o, path, "plastic_iterations", a.max_plastic_iterations));
+    a.plastic_tolerance = p.number(o, path, "plastic_tolerance", a.plastic_tolerance);
+    a.output_every = static_cast<int>(p.integer(o, path, "output_every", a.output_every));
+    a.plasticity = p.boolean(o, path, "plasticity", a.plasticity);
+}
+
+/// Line and column (1-based) of a byte offset, for messages about malformed JSON.
+std::pair<std::size_t, std::size_t> line_and_column(const std::string& text, std::size_t byte) {
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+    }
+    return {line, column};
+}
+
+}  // namespace
+
+ReadResult read_model_text(const std::string& text, const std::vector<std::string>& overrides,
+                           const std::string& source) {
+    ReadResult result;
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        // nlohmann reports the byte just past the problem; step back to point at it.
+        const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
+        const auto [line, column] = line_and_column(text, byte);
+        std::string what = e.what();
+        const auto colon = what.rfind(": ");
+        if (colon != std::string::npos) what = what.substr(colon + 2);
+        result.diagnostics.push_back({Diagnostic::Severity::Error, "",
+                                      source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                                          ": malformed JSON: " + what});
+        return result;
+    }
+    apply_overrides(root, overrides, result.diagnostics);
+
+    Parser p(result.diagnostics);
+    if (!p.is_object(root, "")) return result;
+    p.check_keys(root, "", {"format", "version", "name", "description", "materials", "joint_materials",
+                            "default_joint_material", "regions", "joints", "joint_sets", "load_tables",
+                            "fixed_points", "rollers", "point_loads", "edge_pressures", "gravity",
+                            "initial_stress", "measurement_points", "mesh", "analysis"});
+    const std::string format = p.string(root, "", "format", std::nullopt);
+    if (!format.empty() && format != model_format_name)
+        p.error("/format", "must be \"" + std::string(model_format_name) + "\", got \"" + format + "\"");
+    const long version = p.integer(root, "", "version", -1);
+    if (!root.contains("version")) p.error("/version", "required format version is missing");
+    else if (version != model_format_version)
+        p.error("/version", "this program reads version " + std::to_string(model_format_version) +
+                                ", the file is version " + std::to_string(version));
+
+    Model m;
+    m.name = p.string(root, "", "name", std::string());
+    m.description = p.string(root, "", "description", std::string());
+
+    parse_materials(p, root, m);
+    const auto material_names = collect_names(p, p.array(root, "", "materials"), "/materials");
+    auto joint_material_names = collect_names(p, p.array(root, "", "joint_materials"), "/joint_materials");
+    parse_joint_materials(p, root, m, joint_material_names);
+    parse_tables(p, root, m);
+    const auto table_names = collect_names(p, p.array(root, "", "load_tables"), "/load_tables");
+    parse_geometry(p, root, m, material_names, joint_material_names);
+    parse_supports_and_loads(p, root, m, table_names);
+    parse_mesh(p, root, m);
+    parse_analysis(p, root, m);
+
+    if (has_errors(result.diagnostics)) return result;
+    result.model = std::move(m);
+    return result;
+}
+
+ReadResult read_model_file(const std::string& path, const std::vector<std::string>& overrides) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        ReadResult r;
+        r.diagnostics.push_back({Diagnostic::Severity::Error, "", path + ": cannot open the file"});
+        return r;
+    }
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return read_model_text(buffer.str(), overrides, path);
+}
+
+}  // namespace mcdda

@@ -1,0 +1,28 @@
+#pragma once
+/// \file VtuWriter.hpp
+/// VTK XML unstructured grid (.vtu) files of the mesh and its fields, for ParaView.
+
+#include "mesh/Mesh.hpp"
+
+#include <string>
+#include <vector>
+
+namespace mcdda {
+
+/// A named field on nodes or cells; `components` values per entry, stored entry by entry.
+struct VtuField {
+    std::string name;
+    int components = 1;
+    std::vector<double> values;
+};
+
+struct VtuFields {
+    std::vector<VtuField> point_data;
+    std::vector<VtuField> cell_data;
+};
+
+/// Writes the mesh (triangles, z = 0) with cell data `block` and `material` (Int32) plus the
+/// given fields, atomically. Throws std::runtime_error on failure.
+void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& fields = {});
+
+}  // namespace mcdda

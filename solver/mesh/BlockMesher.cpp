@@ -1,0 +1,231 @@
+#include "mesh/BlockMesher.hpp"
+
+#include "mesh/SizeField.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_criteria_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+#include <list>
+#include <sstream>
+#include <unordered_map>
+
+namespace mcdda {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Delaunay_mesh_vertex_base_2<Kernel>;
+using Fb = CGAL::Delaunay_mesh_face_base_2<Kernel>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+using CgalPoint = Kernel::Point_2;
+
+/// Mesh_2 criteria: the shape bound of Delaunay_mesh_criteria_2 plus a size bound that varies
+/// over the plane (CGAL's own size criteria has one constant bound). Same structure as
+/// CGAL::Delaunay_mesh_size_criteria_2, whose Quality ordering it copies.
+class SizeFieldCriteria {
+public:
+    using Face_handle = CDT::Face_handle;
+
+    struct Quality : public std::pair<double, double> {
+        Quality() = default;
+        Quality(double sine, double size) : std::pair<double, double>(sine, size) {}
+        double size() const { return second; }
+        double sine() const { return first; }
+        bool operator<(const Quality& q) const {  // q1 < q2: q1 is refined first
+            if (size() > 1) return q.size() > 1 ? size() > q.size() : true;
+            if (q.size() > 1) return false;
+            return sine() < q.sine();
+        }
+    };
+
+    class Is_bad {
+    public:
+        Is_bad(double squared_sine_bound, const SizeField* field) : bound_(squared_sine_bound), field_(field) {}
+        CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
+            if (q.size() > 1) return CGAL::Mesh_2::IMPERATIVELY_BAD;
+            return q.sine() < bound_ ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
+        }
+        CGAL::Mesh_2::Face_badness operator()(const Face_handle& fh, Quality& q) const {
+            const CgalPoint& pa = fh->vertex(0)->point();
+            const CgalPoint& pb = fh->vertex(1)->point();
+            const CgalPoint& pc = fh->vertex(2)->point();
+            double l[3] = {CGAL::squared_distance(pb, pc), CGAL::squared_distance(pc, pa), CGAL::squared_distance(pa, pb)};
+            std::sort(l, l + 3);
+            const Point2 centroid{(pa.x() + pb.x() + pc.x()) / 3.0, (pa.y() + pb.y() + pc.y()) / 3.0};
+            const double h = (*field_)(centroid);
+            q.second = l[2] / (h * h);
+            if (q.size() > 1) {
+                q.first = 1;
+                return CGAL::Mesh_2::IMPERATIVELY_BAD;
+            }
+            const double area2 = 2.0 * CGAL::area(pa, pb, pc);
+            q.first = area2 * area2 / (l[2] * l[1]);  // squared sine of the smallest angle
+            return q.sine() < bound_ ? CGAL::Mesh_2::BAD : CGAL::Mesh_2::NOT_BAD;
+        }
+
+    private:
+        double bound_;
+        const SizeField* field_;
+    };
+
+    SizeFieldCriteria(double min_angle, const SizeField& field)
+        : bound_(std::pow(std::sin(min_angle), 2)), field_(&field) {}
+    Is_bad is_bad_object() const { return Is_bad(bound_, field_); }
+
+private:
+    double bound_;
+    const SizeField* field_;
+};
+
+bool ring_contains(const Ring& ring, Point2 p) {
+    bool inside = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        const Point2& a = ring[i];
+        const Point2& b = ring[j];
+        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+    }
+    return inside;
+}
+
+bool block_contains(const Block& b, Point2 p) {
+    if (!ring_contains(b.outer, p)) return false;
+    for (const Ring& h : b.holes)
+        if (ring_contains(h, p)) return false;
+    return true;
+}
+
+/// One point inside every hole of the constrained triangulation: a face centroid from each
+/// component at even nesting depth ≥ 2 (depth counts constraints crossed from infinity).
+std::list<CgalPoint> hole_seeds(CDT& cdt) {
+    std::list<CgalPoint> seeds;
+    std::unordered_map<CDT::Face_handle, int> depth;
+    std::vector<CDT::Face_handle> frontier{cdt.infinite_face()};
+    depth[cdt.infinite_face()] = 0;
+    // Breadth over depths: flood each depth through unconstrained edges, queue across constraints.
+    for (int level = 0; !frontier.empty(); ++level) {
+        std::vector<CDT::Face_handle> next;
+        while (!frontier.empty()) {
+            CDT::Face_handle start = frontier.back();
+            frontier.pop_back();
+            if (depth[start] != level) continue;
+            bool first_of_component = true;
+            std::vector<CDT::Face_handle> stack{start};
+            while (!stack.empty()) {
+                CDT::Face_handle f = stack.back();
+                stack.pop_back();
+                if (first_of_component && level >= 2 && level % 2 == 0 && !cdt.is_infinite(f)) {
+                    seeds.push_back(CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+                    first_of_component = false;
+                }
+                for (int i = 0; i < 3; ++i) {
+                    CDT::Face_handle n = f->neighbor(i);
+                    if (depth.count(n)) continue;
+                    if (cdt.is_constrained({f, i})) {
+                        next.push_back(n);
+                    } else {
+                        depth[n] = level;
+                        stack.push_back(n);
+                    }
+                }
+            }
+        }
+        for (CDT::Face_handle n : next)
+            if (!depth.count(n)) {
+                depth[n] = level + 1;
+                frontier.push_back(n);
+            }
+    }
+    return seeds;
+}
+
+void insert_ring(CDT& cdt, const Ring& ring) {
+    std::vector<CDT::Vertex_handle> v;
+    v.reserve(ring.size());
+    for (const Point2& p : ring) v.push_back(cdt.insert(CgalPoint(p.x, p.y)));
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (v[i] != v[(i + 1) % v.size()]) cdt.insert_constraint(v[i], v[(i + 1) % v.size()]);
+}
+
+}  // namespace
+
+double estimate_triangle_count(const Model& model, const std::vector<Block>& blocks) {
+    const SizeField field(model.mesh, resolved_global_size(model));
+    // Refinement to a max-edge bound h gives triangles of about 0.3 h² on average.
+    constexpr double area_per_h2 = 0.3;
+    double count = 0.0;
+    for (const Block& b : blocks) {
+        double box[4] = {1e300, 1e300, -1e300, -1e300};
+        for (const Point2& p : b.outer) {
+            box[0] = std::min(box[0], p.x); box[1] = std::min(box[1], p.y);
+            box[2] = std::max(box[2], p.x); box[3] = std::max(box[3], p.y);
+        }
+        constexpr int n = 24;
+        const double dx = (box[2] - box[0]) / n, dy = (box[3] - box[1]) / n;
+        double sampled = 0.0, inside_cells = 0.0;
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < n; ++k) {
+                const Point2 c{box[0] + (i + 0.5) * dx, box[1] + (k + 0.5) * dy};
+                if (!block_contains(b, c)) continue;
+                const double h = field(c);
+                sampled += 1.0 / (area_per_h2 * h * h);
+                inside_cells += 1.0;
+            }
+        if (inside_cells > 0) count += b.area * sampled / inside_cells;
+        else count += b.area / (area_per_h2 * std::pow(field(b.outer.front()), 2));
+    }
+    return count;
+}
+
+Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics) {
+    Mesh mesh;
+    const double estimate = estimate_triangle_count(model, blocks);
+    if (estimate > static_cast<double>(model.mesh.max_elements)) {
+        std::ostringstream msg;
+        msg.precision(3);
+        msg << "the mesh would have about " << estimate << " triangles, above the limit of "
+            << model.mesh.max_elements << " (raise /mesh/max_elements or coarsen /mesh/size)";
+        diagnostics.push_back({Diagnostic::Severity::Error, "/mesh", msg.str()});
+        return mesh;
+    }
+    const SizeField field(model.mesh, resolved_global_size(model));
+    const SizeFieldCriteria criteria(model.mesh.min_angle, field);
+
+    for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
+        const Block& block = blocks[bi];
+        CDT cdt;
+        insert_ring(cdt, block.outer);
+        for (const Ring& h : block.holes) insert_ring(cdt, h);
+        const std::list<CgalPoint> seeds = hole_seeds(cdt);
+        CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), criteria, /*seeds in domain=*/false);
+
+        std::unordered_map<CDT::Vertex_handle, int> node_of;
+        for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+            if (!f->is_in_domain()) continue;
+            std::array<int, 3> tri{};
+            for (int k = 0; k < 3; ++k) {
+                const CDT::Vertex_handle v = f->vertex(k);
+                auto it = node_of.find(v);
+                if (it == node_of.end()) {
+                    it = node_of.emplace(v, static_cast<int>(mesh.nodes.size())).first;
+                    mesh.nodes.push_back({v->point().x(), v->point().y()});
+                    mesh.node_block.push_back(static_cast<int>(bi));
+                }
+                tri[k] = it->second;
+            }
+            mesh.triangles.push_back(tri);
+            mesh.triangle_block.push_back(static_cast<int>(bi));
+            mesh.triangle_material.push_back(block.material);
+        }
+        mesh.block_node_begin.push_back(static_cast<int>(mesh.nodes.size()));
+        mesh.block_triangle_begin.push_back(static_cast<int>(mesh.triangles.size()));
+    }
+    return mesh;
+}
+
+}  // namespace mcdda

@@ -1,0 +1,40 @@
+#include "model/Model.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace mcdda {
+
+double LoadTable::factor(double s) const {
+    if (points.empty()) return 1.0;
+    if (s <= points.front()[0]) return points.front()[1];
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        if (s <= points[i][0]) {
+            const auto& a = points[i - 1];
+            const auto& b = points[i];
+            return a[1] + (b[1] - a[1]) * (s - a[0]) / (b[0] - a[0]);
+        }
+    }
+    if (!extrapolate || points.size() < 2) return points.back()[1];
+    // Linear extrapolation from the last two points: a ramp keeps growing.
+    const auto& a = points[points.size() - 2];
+    const auto& b = points.back();
+    return b[1] + (b[1] - a[1]) * (s - b[0]) / (b[0] - a[0]);
+}
+
+std::array<double, 4> Model::bounds() const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    std::array<double, 4> box{inf, inf, -inf, -inf};
+    for (const Region& r : regions) {
+        for (const Point2& p : r.boundary) {
+            box[0] = std::min(box[0], p.x);
+            box[1] = std::min(box[1], p.y);
+            box[2] = std::max(box[2], p.x);
+            box[3] = std::max(box[3], p.y);
+        }
+    }
+    if (box[0] > box[2]) box = {0.0, 0.0, 0.0, 0.0};
+    return box;
+}
+
+}  // namespace mcdda

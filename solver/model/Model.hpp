@@ -1,0 +1,191 @@
+#pragma once
+/// \file Model.hpp
+/// The in-memory description of an MC-DDA model: what the model file holds, after units and
+/// signs are converted (see docs/model-format.md). Plain values only: no geometry library types,
+/// so every layer (reader, GUI document, solver) can share it cheaply.
+///
+/// Conventions (one place for all of them):
+///  - SI units: m, N, Pa, kg, s. Angles in radians.
+///  - Stress: tension positive. The file's compressive magnitudes (in-situ stress, pressures)
+///    are converted once, in the reader.
+///  - Voigt order of plane stress components: (xx, yy, xy).
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mcdda {
+
+/// A point in the model plane (m).
+struct Point2 {
+    double x = 0.0;
+    double y = 0.0;
+};
+
+/// A closed ring of vertices; the closing edge (last → first) is implicit.
+using Ring = std::vector<Point2>;
+
+/// Rock or soil of a region: linear elastic, Mohr–Coulomb perfectly plastic.
+struct Material {
+    std::string name;
+    double young_modulus = 0.0;     ///< E (Pa), > 0
+    double poisson_ratio = 0.0;     ///< ν, in (−1, 0.5)
+    double density = 0.0;           ///< ρ (kg/m³); from unit weight as γ/g when given so
+    double cohesion = 0.0;          ///< c (Pa), ≥ 0
+    double friction_angle = 0.0;    ///< φ (rad), in [0, π/2)
+    double dilation_angle = 0.0;    ///< ψ (rad), in [0, φ]
+    double tensile_strength = 0.0;  ///< tension cut-off (Pa), ≥ 0; 0 = no cut-off beyond MC apex
+    bool plastic = true;            ///< false: stays elastic whatever the stress
+};
+
+/// Strength and stiffness of the contacts along a joint (or a region interface).
+struct JointMaterial {
+    std::string name;
+    double friction_angle = 0.0;    ///< φj (rad)
+    double cohesion = 0.0;          ///< cj (Pa), multiplied by the contact length
+    double tensile_strength = 0.0;  ///< tj (Pa)
+    double normal_stiffness = 0.0;  ///< kn (N/m per m thickness); 0 = analysis penalty
+    double shear_stiffness = 0.0;   ///< ks (N/m); 0 = analysis penalty / 2.5 … set by solver
+};
+
+/// A region of one material: an outer ring with optional holes (openings).
+struct Region {
+    std::string name;
+    int material = -1;  ///< index into Model::materials
+    Ring boundary;
+    std::vector<Ring> holes;
+};
+
+/// A joint trace: a straight segment or a polyline that cuts regions into blocks.
+struct Joint {
+    std::string name;
+    std::vector<Point2> points;  ///< ≥ 2 vertices
+    int joint_material = -1;     ///< index into Model::joint_materials; −1 = the default
+    int joint_set = -1;          ///< index of the joint set that generated it, −1 = explicit
+};
+
+/// A family of parallel, fully persistent joints.
+struct JointSet {
+    std::string name;
+    double angle = 0.0;      ///< trace direction, counter-clockwise from +x (rad)
+    double spacing = 0.0;    ///< normal distance between traces (m), > 0
+    Point2 origin;           ///< one trace passes through this point
+    std::optional<std::array<double, 4>> extent;  ///< xmin, ymin, xmax, ymax; default: model box
+    int joint_material = -1;
+};
+
+/// A table of (abscissa, factor) pairs, linearly interpolated; abscissa is the step number or
+/// the time. Beyond the last point the factor is either held or extrapolated linearly.
+struct LoadTable {
+    enum class Variable { Step, Time };
+    std::string name;
+    Variable variable = Variable::Step;
+    std::vector<std::array<double, 2>> points;  ///< strictly increasing abscissa
+    bool extrapolate = false;                   ///< false: hold the last value
+
+    /// Factor at step number or time `s`.
+    double factor(double s) const;
+};
+
+/// A displacement constraint on the mesh node nearest to a point (both directions fixed).
+struct FixedPoint {
+    std::string name;
+    Point2 point;
+};
+
+/// A roller: every boundary node on the segment [from, to] has the chosen directions fixed.
+struct Roller {
+    std::string name;
+    Point2 from, to;
+    bool fix_x = false;
+    bool fix_y = false;
+};
+
+/// A point load (N per m thickness) applied at the node nearest to `point`.
+struct PointLoad {
+    std::string name;
+    Point2 point;
+    Point2 force;        ///< reference force vector (N/m), multiplied by the table factor
+    int table = -1;      ///< index into Model::load_tables; −1 = constant factor 1
+};
+
+/// A normal pressure on the block boundary lying along [from, to].
+struct EdgePressure {
+    std::string name;
+    Point2 from, to;
+    double pressure = 0.0;  ///< reference magnitude (Pa); positive pushes into the material
+    int table = -1;
+};
+
+/// Initial (in-situ) stress. Stored tension positive.
+struct InitialStress {
+    enum class Kind { None, Uniform, Gravity };
+    Kind kind = Kind::None;
+    std::array<double, 3> stress{0.0, 0.0, 0.0};  ///< Uniform: (σxx, σyy, τxy), tension positive
+    double surface_y = 0.0;  ///< Gravity: ground surface elevation (m)
+    double k0 = 1.0;         ///< Gravity: σh/σv
+};
+
+/// A named point whose displacement history is recorded.
+struct MeasurementPoint {
+    std::string name;
+    Point2 point;
+};
+
+/// Local mesh refinement near a point (from == to) or a segment.
+struct LocalSize {
+    Point2 from, to;
+    double size = 0.0;    ///< target element edge length at the feature (m)
+    double radius = 0.0;  ///< distance within which `size` applies (m)
+};
+
+struct MeshControls {
+    double size = 0.0;              ///< global target edge length (m); 0 = 1/20 of the model
+    double min_angle = 25.0 * 3.14159265358979323846 / 180.0;  ///< (rad)
+    double grading = 0.3;           ///< growth of the size with distance beyond a local radius
+    std::vector<LocalSize> local;
+    long max_elements = 2000000;    ///< refuse to mesh beyond this estimate
+};
+
+struct AnalysisSettings {
+    enum class Kind { Static, Dynamic };
+    Kind kind = Kind::Static;
+    int steps = 100;
+    double time_step = 0.01;              ///< initial/maximum Δt (s)
+    double max_displacement_ratio = 0.005;///< Shi's g2: max step displacement / model size
+    double penalty = 0.0;                 ///< contact spring (N/m); 0 = automatic (from E)
+    double dynamic_ratio = 1.0;           ///< velocity carried into the next step (dynamic)
+    int max_open_close_iterations = 10;
+    int max_plastic_iterations = 200;
+    double plastic_tolerance = 1e-4;      ///< relative unbalanced force
+    int output_every = 10;                ///< save every n-th step (the last always saved)
+    bool plasticity = true;               ///< false: every material stays elastic
+};
+
+/// The whole model.
+struct Model {
+    std::string name;
+    std::string description;
+    std::vector<Material> materials;
+    std::vector<JointMaterial> joint_materials;
+    int default_joint_material = -1;  ///< used for region interfaces and unassigned joints
+    std::vector<Region> regions;
+    std::vector<Joint> joints;        ///< explicit joints and those expanded from joint sets
+    std::vector<JointSet> joint_sets;
+    std::vector<LoadTable> load_tables;
+    std::vector<FixedPoint> fixed_points;
+    std::vector<Roller> rollers;
+    std::vector<PointLoad> point_loads;
+    std::vector<EdgePressure> edge_pressures;
+    Point2 gravity{0.0, 0.0};         ///< acceleration (m/s²)
+    InitialStress initial_stress;
+    std::vector<MeasurementPoint> measurement_points;
+    MeshControls mesh;
+    AnalysisSettings analysis;
+
+    /// Axis-aligned box of all region boundaries: xmin, ymin, xmax, ymax.
+    std::array<double, 4> bounds() const;
+};
+
+}  // namespace mcdda

@@ -1,0 +1,200 @@
+#include "model/ModelValidator.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace mcdda {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double max_coordinate = 1e7;  // m; beyond this the model is surely in the wrong units
+
+std::string num(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+std::string deg(double radians) { return num(radians * 180.0 / pi) + "°"; }
+
+class Checker {
+public:
+    explicit Checker(std::vector<Diagnostic>& d) : d_(d) {}
+    void error(const std::string& path, const std::string& message) {
+        d_.push_back({Diagnostic::Severity::Error, path, message});
+    }
+    void warning(const std::string& path, const std::string& message) {
+        d_.push_back({Diagnostic::Severity::Warning, path, message});
+    }
+    void point(const Point2& p, const std::string& path) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::fabs(p.x) > max_coordinate ||
+            std::fabs(p.y) > max_coordinate)
+            error(path, "coordinates (" + num(p.x) + ", " + num(p.y) + ") are beyond ±1e7 m");
+    }
+
+private:
+    std::vector<Diagnostic>& d_;
+};
+
+void check_materials(Checker& c, const Model& m) {
+    for (std::size_t i = 0; i < m.materials.size(); ++i) {
+        const Material& mat = m.materials[i];
+        const std::string path = "/materials/" + std::to_string(i);
+        if (!(mat.young_modulus > 0.0))
+            c.error(path + "/young_modulus", "Young's modulus must be positive (got " + num(mat.young_modulus) + " Pa)");
+        if (!(mat.poisson_ratio > -1.0 && mat.poisson_ratio < 0.5))
+            c.error(path + "/poisson_ratio", "Poisson's ratio must lie in (-1, 0.5) (got " + num(mat.poisson_ratio) + ")");
+        if (!(mat.density >= 0.0)) c.error(path + "/density", "density must not be negative (got " + num(mat.density) + ")");
+        if (!(mat.cohesion >= 0.0)) c.error(path + "/cohesion", "cohesion must not be negative (got " + num(mat.cohesion) + " Pa)");
+        if (!(mat.friction_angle >= 0.0 && mat.friction_angle < pi / 2))
+            c.error(path + "/friction_angle", "friction angle must lie in [0°, 90°) (got " + deg(mat.friction_angle) + ")");
+        if (!(mat.dilation_angle >= 0.0))
+            c.error(path + "/dilation_angle", "dilation angle must not be negative (got " + deg(mat.dilation_angle) + ")");
+        else if (mat.dilation_angle > mat.friction_angle)
+            c.error(path + "/dilation_angle", "dilation angle " + deg(mat.dilation_angle) +
+                                                  " exceeds the friction angle " + deg(mat.friction_angle));
+        if (!(mat.tensile_strength >= 0.0))
+            c.error(path + "/tensile_strength", "tensile strength must not be negative (got " + num(mat.tensile_strength) + " Pa)");
+        if (mat.plastic && m.analysis.plasticity && mat.cohesion == 0.0 && mat.friction_angle == 0.0)
+            c.error(path, "a plastic material needs cohesion or friction (both are zero)");
+        if (m.analysis.kind == AnalysisSettings::Kind::Dynamic && !(mat.density > 0.0))
+            c.error(path + "/density", "a dynamic analysis needs a positive density (or unit weight)");
+    }
+    for (std::size_t i = 0; i < m.joint_materials.size(); ++i) {
+        const JointMaterial& j = m.joint_materials[i];
+        const std::string path = "/joint_materials/" + std::to_string(i);
+        if (!(j.friction_angle >= 0.0 && j.friction_angle < pi / 2))
+            c.error(path + "/friction_angle", "joint friction angle must lie in [0°, 90°) (got " + deg(j.friction_angle) + ")");
+        if (!(j.cohesion >= 0.0)) c.error(path + "/cohesion", "joint cohesion must not be negative (got " + num(j.cohesion) + " Pa)");
+        if (!(j.tensile_strength >= 0.0))
+            c.error(path + "/tensile_strength", "joint tensile strength must not be negative (got " + num(j.tensile_strength) + " Pa)");
+        if (!(j.normal_stiffness >= 0.0))
+            c.error(path + "/normal_stiffness", "normal stiffness must not be negative (0 = automatic)");
+        if (!(j.shear_stiffness >= 0.0))
+            c.error(path + "/shear_stiffness", "shear stiffness must not be negative (0 = automatic)");
+    }
+}
+
+void check_geometry(Checker& c, const Model& m) {
+    for (std::size_t i = 0; i < m.regions.size(); ++i) {
+        const Region& r = m.regions[i];
+        const std::string path = "/regions/" + std::to_string(i);
+        if (r.boundary.size() < 3)
+            c.error(path + "/boundary", "a region boundary needs at least 3 vertices (got " + std::to_string(r.boundary.size()) + ")");
+        for (std::size_t k = 0; k < r.boundary.size(); ++k) c.point(r.boundary[k], path + "/boundary/" + std::to_string(k));
+        for (std::size_t h = 0; h < r.holes.size(); ++h) {
+            const std::string hpath = path + "/holes/" + std::to_string(h);
+            if (r.holes[h].size() < 3)
+                c.error(hpath, "a hole needs at least 3 vertices (got " + std::to_string(r.holes[h].size()) + ")");
+            for (std::size_t k = 0; k < r.holes[h].size(); ++k) c.point(r.holes[h][k], hpath + "/" + std::to_string(k));
+        }
+    }
+    for (std::size_t i = 0; i < m.joints.size(); ++i) {
+        const Joint& j = m.joints[i];
+        if (j.joint_set >= 0) continue;
+        const std::string path = "/joints/" + std::to_string(i);
+        if (j.points.size() < 2) c.error(path + "/points", "a joint needs at least 2 points");
+        for (std::size_t k = 0; k < j.points.size(); ++k) {
+            c.point(j.points[k], path + "/points/" + std::to_string(k));
+            if (k > 0 && j.points[k].x == j.points[k - 1].x && j.points[k].y == j.points[k - 1].y)
+                c.error(path + "/points/" + std::to_string(k), "repeats the previous point (zero-length joint segment)");
+        }
+    }
+    const auto box = m.bounds();
+    const double diagonal = std::hypot(box[2] - box[0], box[3] - box[1]);
+    for (std::size_t i = 0; i < m.joint_sets.size(); ++i) {
+        const JointSet& s = m.joint_sets[i];
+        const std::string path = "/joint_sets/" + std::to_string(i);
+        c.point(s.origin, path + "/origin");
+        if (!(s.spacing > 0.0)) {
+            c.error(path + "/spacing", "spacing must be positive (got " + num(s.spacing) + " m)");
+        } else if (diagonal / s.spacing > 5000.0) {
+            c.error(path + "/spacing", "spacing " + num(s.spacing) + " m would generate more than 5000 joints");
+        }
+        if (s.extent && !((*s.extent)[2] > (*s.extent)[0] && (*s.extent)[3] > (*s.extent)[1]))
+            c.error(path + "/extent", "extent must be [xmin, ymin, xmax, ymax] with xmax > xmin and ymax > ymin");
+    }
+}
+
+void check_boundary_conditions(Checker& c, const Model& m) {
+    for (std::size_t i = 0; i < m.fixed_points.size(); ++i)
+        c.point(m.fixed_points[i].point, "/fixed_points/" + std::to_string(i) + "/point");
+    for (std::size_t i = 0; i < m.rollers.size(); ++i) {
+        const Roller& r = m.rollers[i];
+        const std::string path = "/rollers/" + std::to_string(i);
+        c.point(r.from, path + "/from");
+        c.point(r.to, path + "/to");
+        if (r.from.x == r.to.x && r.from.y == r.to.y) c.error(path, "from and to are the same point");
+    }
+    for (std::size_t i = 0; i < m.point_loads.size(); ++i)
+        c.point(m.point_loads[i].point, "/point_loads/" + std::to_string(i) + "/point");
+    for (std::size_t i = 0; i < m.edge_pressures.size(); ++i) {
+        const EdgePressure& e = m.edge_pressures[i];
+        const std::string path = "/edge_pressures/" + std::to_string(i);
+        if (e.from.x == e.to.x && e.from.y == e.to.y) c.error(path, "from and to are the same point");
+    }
+    for (std::size_t i = 0; i < m.load_tables.size(); ++i) {
+        const LoadTable& t = m.load_tables[i];
+        for (std::size_t k = 1; k < t.points.size(); ++k)
+            if (!(t.points[k][0] > t.points[k - 1][0]))
+                c.error("/load_tables/" + std::to_string(i) + "/points/" + std::to_string(k),
+                        "abscissas must increase strictly (" + num(t.points[k][0]) + " follows " + num(t.points[k - 1][0]) + ")");
+    }
+    if (m.initial_stress.kind == InitialStress::Kind::Gravity) {
+        if (!(m.initial_stress.k0 >= 0.0)) c.error("/initial_stress/k0", "K0 must not be negative");
+        if (m.gravity.x == 0.0 && m.gravity.y == 0.0)
+            c.warning("/initial_stress", "gravity-based in-situ stress with zero gravity gives no stress");
+    }
+    if (m.fixed_points.empty() && m.rollers.empty()) {
+        if (m.analysis.kind == AnalysisSettings::Kind::Static)
+            c.error("", "nothing is fixed: add fixed points or rollers (a static analysis of free blocks is a mechanism)");
+        else
+            c.warning("", "nothing is fixed: every block is free to move");
+    }
+    for (std::size_t i = 0; i < m.measurement_points.size(); ++i)
+        c.point(m.measurement_points[i].point, "/measurement_points/" + std::to_string(i) + "/point");
+}
+
+void check_controls(Checker& c, const Model& m) {
+    const MeshControls& mesh = m.mesh;
+    if (!(mesh.size >= 0.0)) c.error("/mesh/size", "mesh size must be positive (or 0 for automatic)");
+    if (!(mesh.min_angle > 0.0 && mesh.min_angle <= 34.0 * pi / 180.0))
+        c.error("/mesh/min_angle", "minimum angle must lie in (0°, 34°] for the refinement to end (got " + deg(mesh.min_angle) + ")");
+    if (!(mesh.grading > 0.0)) c.error("/mesh/grading", "grading must be positive");
+    if (!(mesh.max_elements > 0)) c.error("/mesh/max_elements", "must be positive");
+    for (std::size_t i = 0; i < mesh.local.size(); ++i) {
+        const std::string path = "/mesh/local/" + std::to_string(i);
+        if (!(mesh.local[i].size > 0.0)) c.error(path + "/size", "local size must be positive");
+        if (!(mesh.local[i].radius >= 0.0)) c.error(path + "/radius", "radius must not be negative");
+    }
+    const AnalysisSettings& a = m.analysis;
+    if (a.steps < 1) c.error("/analysis/steps", "at least one step is needed");
+    if (!(a.time_step > 0.0)) c.error("/analysis/time_step", "time step must be positive (got " + num(a.time_step) + " s)");
+    if (!(a.max_displacement_ratio > 0.0 && a.max_displacement_ratio <= 0.1))
+        c.error("/analysis/max_displacement_ratio", "must lie in (0, 0.1] (got " + num(a.max_displacement_ratio) + ")");
+    if (!(a.penalty >= 0.0)) c.error("/analysis/penalty", "penalty must not be negative (0 = automatic)");
+    if (!(a.dynamic_ratio >= 0.0 && a.dynamic_ratio <= 1.0)) c.error("/analysis/dynamic_ratio", "must lie in [0, 1]");
+    if (a.max_open_close_iterations < 1) c.error("/analysis/open_close_iterations", "must be at least 1");
+    if (a.max_plastic_iterations < 1) c.error("/analysis/plastic_iterations", "must be at least 1");
+    if (!(a.plastic_tolerance > 0.0)) c.error("/analysis/plastic_tolerance", "must be positive");
+    if (a.output_every < 1) c.error("/analysis/output_every", "must be at least 1");
+}
+
+}  // namespace
+
+void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics) {
+    Checker c(diagnostics);
+    check_materials(c, model);
+    check_geometry(c, model);
+    check_boundary_conditions(c, model);
+    check_controls(c, model);
+}
+
+std::string joint_path(const Model& model, int joint) {
+    if (joint < 0 || joint >= static_cast<int>(model.joints.size())) return "";
+    const Joint& j = model.joints[joint];
+    if (j.joint_set >= 0) return "/joint_sets/" + std::to_string(j.joint_set);
+    return "/joints/" + std::to_string(joint);
+}
+
+}  // namespace mcdda
