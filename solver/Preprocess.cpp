@@ -41,7 +41,7 @@ void run_pipeline(Preprocessed& p, PreprocessStage last) {
         }
         t = clock::now();
         p.mesh = mesh_blocks(p.model, p.blocks, p.diagnostics);
-        p.statistics = compute_statistics(p.mesh);
+        p.statistics = compute_statistics(p.mesh, p.blocks);
         p.seconds_mesh = seconds_since(t);
         p.ok = !has_errors(p.diagnostics);
     } catch (const std::exception& e) {

@@ -38,10 +38,11 @@ std::string ring_problem(const std::vector<P>& ring) {
     for (std::size_t i = 0; i < ring.size(); ++i)
         if (ring[i] == ring[(i + 1) % ring.size()])
             return "vertex " + std::to_string((i + 1) % ring.size()) + " repeats vertex " + std::to_string(i);
+    bool collinear = true;
+    for (std::size_t i = 2; i < ring.size() && collinear; ++i) collinear = CGAL::collinear(ring[0], ring[1], ring[i]);
+    if (collinear) return "the polygon has zero area (all vertices on one line)";
     if (!CGAL::is_simple_2(ring.begin(), ring.end(), Kernel()))
         return "the polygon intersects itself";
-    if (CGAL::orientation_2(ring.begin(), ring.end(), Kernel()) == CGAL::COLLINEAR)
-        return "the polygon has zero area";
     return {};
 }
 

@@ -166,12 +166,21 @@ private:
     std::vector<Diagnostic>& diagnostics_;
 };
 
-/// Appends `segments` points of an arc (both ends included when `include_end`).
+bool near(Point2 a, Point2 b, double scale) { return std::hypot(a.x - b.x, a.y - b.y) <= 1e-9 * scale; }
+
+/// Appends the points of an arc (both ends when `include_end`). Cosines and sines that are zero
+/// up to rounding are snapped, so an arc from 0° to 90° meets the axes exactly; a point equal to
+/// the ring's previous one (an arc starting where the last edge ended) is not repeated.
 void append_arc(Ring& ring, Point2 c, double r, double a0, double a1, int segments, bool include_end) {
     const int last = include_end ? segments : segments - 1;
     for (int i = 0; i <= last; ++i) {
         const double a = a0 + (a1 - a0) * i / segments;
-        ring.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+        double cs = std::cos(a), sn = std::sin(a);
+        if (std::fabs(cs) < 1e-12) cs = 0.0;
+        if (std::fabs(sn) < 1e-12) sn = 0.0;
+        const Point2 p{c.x + r * cs, c.y + r * sn};
+        if (!ring.empty() && near(ring.back(), p, r)) continue;
+        ring.push_back(p);
     }
 }
 
@@ -237,6 +246,8 @@ Ring parse_ring(Parser& p, const json& j, const std::string& path) {
                 continue;
             }
             append_arc(ring, center, radius, start, end, n, true);
+            // An arc that closes the ring ends on its first point.
+            if (i + 1 == j.size() && ring.size() > 1 && near(ring.back(), ring.front(), radius)) ring.pop_back();
         } else {
             ring.push_back(p.point_value(e, epath));
         }

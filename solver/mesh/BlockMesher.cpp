@@ -202,7 +202,24 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         insert_ring(cdt, block.outer);
         for (const Ring& h : block.holes) insert_ring(cdt, h);
         const std::list<CgalPoint> seeds = hole_seeds(cdt);
-        CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), criteria, /*seeds in domain=*/false);
+        // Step by step, so that a refinement that cannot finish (a minimum angle near the
+        // theoretical limit next to sharp corners) is stopped instead of running forever.
+        CGAL::Delaunay_mesher_2<CDT, SizeFieldCriteria> mesher(cdt, criteria);
+        mesher.set_seeds(seeds.begin(), seeds.end(), /*seeds in domain=*/false);
+        mesher.init();
+        const std::size_t vertex_budget = static_cast<std::size_t>(model.mesh.max_elements) + 1000;
+        long steps = 0;
+        while (!mesher.is_refinement_done()) {
+            mesher.step_by_step_refine_mesh();
+            if (++steps % 4096 == 0 && mesh.nodes.size() + cdt.number_of_vertices() > vertex_budget) {
+                diagnostics.push_back({Diagnostic::Severity::Error, "/mesh",
+                                       "refinement of block " + std::to_string(bi) + " (region \"" +
+                                           model.regions[block.region].name +
+                                           "\") exceeded the element limit; lower /mesh/min_angle or raise "
+                                           "/mesh/max_elements"});
+                return Mesh{};
+            }
+        }
 
         std::unordered_map<CDT::Vertex_handle, int> node_of;
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {

@@ -6,9 +6,35 @@
 
 namespace mcdda {
 
-MeshStatistics compute_statistics(const Mesh& mesh) {
-    constexpr double to_deg = 180.0 / 3.14159265358979323846;
+namespace {
+constexpr double to_deg = 180.0 / 3.14159265358979323846;
+}
+
+double smallest_corner_angle_deg(const std::vector<Block>& blocks) {
+    double smallest = 180.0;
+    auto visit = [&](const Ring& ring) {
+        const std::size_t n = ring.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const Point2& prev = ring[(i + n - 1) % n];
+            const Point2& v = ring[i];
+            const Point2& next = ring[(i + 1) % n];
+            // The block lies left of every ring edge (outer rings CCW, holes CW), so the
+            // interior angle is π minus the left turn from the incoming to the outgoing edge.
+            const double ix = v.x - prev.x, iy = v.y - prev.y, ox = next.x - v.x, oy = next.y - v.y;
+            const double turn = std::atan2(ix * oy - iy * ox, ix * ox + iy * oy);
+            smallest = std::min(smallest, 180.0 - turn * to_deg);
+        }
+    };
+    for (const Block& b : blocks) {
+        visit(b.outer);
+        for (const Ring& h : b.holes) visit(h);
+    }
+    return smallest;
+}
+
+MeshStatistics compute_statistics(const Mesh& mesh, const std::vector<Block>& blocks) {
     MeshStatistics s;
+    s.min_input_angle_deg = smallest_corner_angle_deg(blocks);
     s.blocks = mesh.block_count();
     s.nodes = static_cast<int>(mesh.nodes.size());
     s.elements = static_cast<int>(mesh.triangles.size());
@@ -42,6 +68,7 @@ std::string describe(const MeshStatistics& s) {
     out << s.blocks << " blocks, " << s.nodes << " nodes, " << s.elements << " triangles\n"
         << "angles: min " << s.min_angle_deg << "°, max " << s.max_angle_deg << "°\n"
         << "areas: min " << s.min_area << " m², max " << s.max_area << " m², total " << s.total_area << " m²\n"
+        << "sharpest block corner: " << s.min_input_angle_deg << "°\n"
         << "triangles by smallest angle:";
     for (int k = 0; k < 6; ++k)
         out << (k ? ", " : " ") << 10 * k << (k == 5 ? "+" : "-" + std::to_string(10 * k + 10)) << "°: "

@@ -1,0 +1,140 @@
+// The model file reader: structure, types, units and signs, overrides, messages with locations.
+
+#include "TestModels.hpp"
+#include "io/ModelReader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace mcdda;
+using mcdda::test::all_messages;
+using mcdda::test::has_diagnostic;
+using mcdda::test::square_model_json;
+using Severity = Diagnostic::Severity;
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+}
+
+TEST(ModelReader, ReadsEveryExample) {
+    for (const std::string& file : mcdda::test::example_files()) {
+        const ReadResult r = read_model_file(file);
+        EXPECT_TRUE(r.model.has_value()) << file << "\n" << all_messages(r.diagnostics);
+        EXPECT_FALSE(has_errors(r.diagnostics)) << file << "\n" << all_messages(r.diagnostics);
+    }
+}
+
+TEST(ModelReader, ConvertsDegreesUnitWeightAndCompressionPositiveStress) {
+    const std::string text = R"({"format": "mcdda-model", "version": 1,
+      "materials": [{"name": "m", "young_modulus": 1e9, "poisson_ratio": 0.2, "unit_weight": 24525,
+                     "cohesion": 1e5, "friction_angle": 30, "dilation_angle": 10}],
+      "regions": [{"material": "m", "boundary": [[0,0],[1,0],[1,1]]}],
+      "fixed_points": [{"point": [0,0]}],
+      "initial_stress": {"type": "uniform", "sxx": 3e6, "syy": 4e6, "sxy": 1e6}})";
+    const ReadResult r = read_model_text(text);
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    const Model& m = *r.model;
+    EXPECT_NEAR(m.materials[0].friction_angle, pi / 6, 1e-12);
+    EXPECT_NEAR(m.materials[0].dilation_angle, pi / 18, 1e-12);
+    EXPECT_NEAR(m.materials[0].density, 2500.0, 1e-9);  // γ / 9.81
+    // Entered compression positive, stored tension positive.
+    EXPECT_EQ(m.initial_stress.kind, InitialStress::Kind::Uniform);
+    EXPECT_DOUBLE_EQ(m.initial_stress.stress[0], -3e6);
+    EXPECT_DOUBLE_EQ(m.initial_stress.stress[1], -4e6);
+    EXPECT_DOUBLE_EQ(m.initial_stress.stress[2], -1e6);
+    // No joint materials given: a default exists for region interfaces.
+    ASSERT_EQ(m.joint_materials.size(), 1u);
+    EXPECT_EQ(m.default_joint_material, 0);
+}
+
+TEST(ModelReader, MalformedJsonReportsLineAndColumn) {
+    const std::string text = "{\n  \"format\": \"mcdda-model\",\n  \"version\": 1,,\n}";
+    const ReadResult r = read_model_text(text, {}, "bad.json");
+    ASSERT_FALSE(r.model);
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_NE(r.diagnostics[0].message.find("bad.json:3:"), std::string::npos) << r.diagnostics[0].message;
+    EXPECT_NE(r.diagnostics[0].message.find("malformed JSON"), std::string::npos);
+}
+
+TEST(ModelReader, UnknownKeysMissingFieldsAndWrongTypesAreNamed) {
+    const ReadResult r = read_model_text(square_model_json(),
+                                         {"/materials/0/youngs_modulus=1e9", "/regions/0/material=\"granite\"",
+                                          "/mesh/size=\"fine\"", "/analysis={\"steps\": 2.5}"});
+    EXPECT_FALSE(r.model);
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/materials/0/youngs_modulus", "unknown key"))
+        << all_messages(r.diagnostics);
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/regions/0/material", "no material named \"granite\""));
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/mesh/size", "must be a number, got a string"));
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/analysis/steps", "whole number"));
+
+    const ReadResult missing = read_model_text(square_model_json(), {"/materials/0={\"name\": \"rock\"}"});
+    EXPECT_TRUE(has_diagnostic(missing.diagnostics, Severity::Error, "/materials/0/young_modulus", "missing"));
+    EXPECT_TRUE(has_diagnostic(missing.diagnostics, Severity::Error, "/materials/0/poisson_ratio", "missing"));
+}
+
+TEST(ModelReader, FormatAndVersionAreChecked) {
+    const ReadResult wrong = read_model_text(square_model_json(), {"/version=2", "/format=\"dda\""});
+    EXPECT_TRUE(has_diagnostic(wrong.diagnostics, Severity::Error, "/version", "version 2"));
+    EXPECT_TRUE(has_diagnostic(wrong.diagnostics, Severity::Error, "/format", "mcdda-model"));
+}
+
+TEST(ModelReader, OverridesChangeFieldsAndReportBadPointers) {
+    const ReadResult r = read_model_text(square_model_json(), {"/materials/0/cohesion=3.45e6", "/name=study 7"});
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    EXPECT_DOUBLE_EQ(r.model->materials[0].cohesion, 3.45e6);
+    EXPECT_EQ(r.model->name, "study 7");  // not valid JSON, so taken as a string
+
+    const ReadResult bad = read_model_text(square_model_json(), {"/materials/7/cohesion=1", "cohesion", "/regions/0/boundary/9=[1,2]"});
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/materials/7/cohesion", "no field /materials/7"));
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "cohesion", "POINTER=VALUE"));
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/regions/0/boundary/9", "past the end"));
+}
+
+TEST(ModelReader, CirclesAndArcsBecomeRingsThatCloseExactly) {
+    const ReadResult r = read_model_text(square_model_json(),
+        {"/regions/0/boundary=[[10,0],[10,10],[0,10],{\"arc\":{\"center\":[0,0],\"radius\":2,\"start\":90,\"end\":0,\"segments\":8}}]",
+         "/regions/0/holes=[{\"circle\":{\"center\":[6,6],\"radius\":1,\"segments\":16}}]"});
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    const Region& region = r.model->regions[0];
+    // 3 corners + 9 arc points (both ends), none repeated.
+    ASSERT_EQ(region.boundary.size(), 12u);
+    EXPECT_EQ(region.boundary[3].x, 0.0);  // arc start snapped onto the axis
+    EXPECT_EQ(region.boundary[3].y, 2.0);
+    EXPECT_EQ(region.boundary.back().x, 2.0);
+    EXPECT_EQ(region.boundary.back().y, 0.0);
+    ASSERT_EQ(region.holes.size(), 1u);
+    EXPECT_EQ(region.holes[0].size(), 16u);
+    for (const Point2& p : region.holes[0]) EXPECT_NEAR(std::hypot(p.x - 6, p.y - 6), 1.0, 1e-12);
+}
+
+TEST(ModelReader, LoadTableExpressesOneKilopascalPerStep) {
+    const ReadResult r = read_model_file(mcdda::test::example_path("prandtl-footing.json"));
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    const Model& m = *r.model;
+    ASSERT_EQ(m.edge_pressures.size(), 1u);
+    const EdgePressure& load = m.edge_pressures[0];
+    ASSERT_GE(load.table, 0);
+    const LoadTable& table = m.load_tables[load.table];
+    for (int step : {0, 1, 2, 10, 514, 600})
+        EXPECT_NEAR(load.pressure * table.factor(step), 1000.0 * step, 1e-6) << "step " << step;
+}
+
+TEST(ModelReader, LoadTableInterpolatesAndHolds) {
+    LoadTable t;
+    t.points = {{0.0, 0.0}, {10.0, 1.0}, {20.0, 1.0}};
+    EXPECT_DOUBLE_EQ(t.factor(-1.0), 0.0);
+    EXPECT_DOUBLE_EQ(t.factor(5.0), 0.5);
+    EXPECT_DOUBLE_EQ(t.factor(15.0), 1.0);
+    EXPECT_DOUBLE_EQ(t.factor(100.0), 1.0);  // held beyond the table
+    t.points = {{0.0, 0.0}, {10.0, 2.0}};
+    t.extrapolate = true;
+    EXPECT_DOUBLE_EQ(t.factor(30.0), 6.0);
+}
+
+TEST(ModelReader, MissingFileIsAnErrorNotAnException) {
+    const ReadResult r = read_model_file("/nonexistent/model.json");
+    EXPECT_FALSE(r.model);
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_NE(r.diagnostics[0].message.find("cannot open"), std::string::npos);
+}

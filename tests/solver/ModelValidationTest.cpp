@@ -1,0 +1,115 @@
+// Bad input: impossible materials, degenerate and self-intersecting geometry, overlaps, joints
+// outside every region, nothing fixed. Every problem must name the item by its JSON pointer.
+
+#include "TestModels.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace mcdda;
+using mcdda::test::all_messages;
+using mcdda::test::has_diagnostic;
+using mcdda::test::preprocess_text;
+using mcdda::test::square_model_json;
+using Severity = Diagnostic::Severity;
+
+namespace {
+
+/// Runs the square model with `overrides` up to block cutting and expects an error at `path`.
+void expect_error(const std::vector<std::string>& overrides, const std::string& path, const std::string& fragment) {
+    const Preprocessed p = preprocess_text(square_model_json(), overrides, PreprocessStage::Cut);
+    EXPECT_FALSE(p.ok);
+    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Error, path, fragment))
+        << "expected error at " << path << " containing \"" << fragment << "\", got:\n"
+        << all_messages(p.diagnostics);
+}
+
+}  // namespace
+
+TEST(ModelValidation, TheBaseModelIsValid) {
+    const Preprocessed p = preprocess_text(square_model_json());
+    EXPECT_TRUE(p.ok) << all_messages(p.diagnostics);
+    EXPECT_TRUE(p.diagnostics.empty()) << all_messages(p.diagnostics);
+}
+
+TEST(ModelValidation, ImpossibleMaterialValues) {
+    expect_error({"/materials/0/young_modulus=0"}, "/materials/0/young_modulus", "must be positive");
+    expect_error({"/materials/0/young_modulus=-5e9"}, "/materials/0/young_modulus", "must be positive");
+    expect_error({"/materials/0/poisson_ratio=0.5"}, "/materials/0/poisson_ratio", "(-1, 0.5)");
+    expect_error({"/materials/0/poisson_ratio=-1"}, "/materials/0/poisson_ratio", "(-1, 0.5)");
+    expect_error({"/materials/0/friction_angle=90"}, "/materials/0/friction_angle", "[0°, 90°)");
+    expect_error({"/materials/0/friction_angle=-1"}, "/materials/0/friction_angle", "[0°, 90°)");
+    expect_error({"/materials/0/dilation_angle=35"}, "/materials/0/dilation_angle", "exceeds the friction angle");
+    expect_error({"/materials/0/cohesion=-1"}, "/materials/0/cohesion", "must not be negative");
+    expect_error({"/materials/0/tensile_strength=-1"}, "/materials/0/tensile_strength", "must not be negative");
+    expect_error({"/joint_materials/0/friction_angle=95"}, "/joint_materials/0/friction_angle", "[0°, 90°)");
+    expect_error({"/joint_materials/0/cohesion=-3"}, "/joint_materials/0/cohesion", "must not be negative");
+}
+
+TEST(ModelValidation, NothingFixed) {
+    expect_error({"/rollers=[]"}, "", "nothing is fixed");
+    // A dynamic analysis of free blocks is solvable (inertia): only a warning.
+    const Preprocessed p = preprocess_text(square_model_json(), {"/rollers=[]", "/analysis={\"type\": \"dynamic\"}"},
+                                           PreprocessStage::Cut);
+    EXPECT_TRUE(p.ok) << all_messages(p.diagnostics);
+    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Warning, "", "nothing is fixed"));
+}
+
+TEST(ModelValidation, DegenerateAndSelfIntersectingPolygons) {
+    expect_error({"/regions/0/boundary=[[0,0],[10,10],[10,0],[0,10]]"}, "/regions/0/boundary", "intersects itself");
+    expect_error({"/regions/0/boundary=[[0,0],[5,5],[10,10]]"}, "/regions/0/boundary", "zero area");
+    expect_error({"/regions/0/boundary=[[0,0],[10,0]]"}, "/regions/0/boundary", "at least 3 vertices");
+    expect_error({"/regions/0/boundary=[[0,0],[10,0],[10,0],[0,10]]"}, "/regions/0/boundary", "repeats");
+    expect_error({"/regions/0/holes=[[[8,8],[12,8],[12,12],[8,12]]]"}, "/regions/0/holes/0", "not strictly inside");
+    expect_error({"/regions/0/holes=[[[1,1],[3,1],[3,3],[1,3]], [[2,2],[4,2],[4,4],[2,4]]]"}, "/regions/0/holes/1",
+                 "overlaps");
+    expect_error({"/regions/0/holes=[[[1,1],[3,3],[3,1],[1,3]]]"}, "/regions/0/holes/0", "intersects itself");
+}
+
+TEST(ModelValidation, OverlappingRegions) {
+    expect_error({"/regions/-={\"name\": \"intruder\", \"material\": \"rock\", \"boundary\": [[5,5],[15,5],[15,15],[5,15]]}"},
+                 "/regions/1", "overlaps region \"square\"");
+    // Sharing an edge is not an overlap: two blocks result.
+    const Preprocessed p = preprocess_text(
+        square_model_json(),
+        {"/regions/-={\"name\": \"neighbour\", \"material\": \"rock\", \"boundary\": [[10,0],[20,0],[20,10],[10,10]]}"},
+        PreprocessStage::Cut);
+    EXPECT_TRUE(p.ok) << all_messages(p.diagnostics);
+    EXPECT_EQ(p.blocks.size(), 2u);
+    // A region filling another region's hole is no overlap either.
+    const Preprocessed island = preprocess_text(
+        square_model_json(),
+        {"/regions/0/holes=[[[2,2],[8,2],[8,8],[2,8]]]",
+         "/regions/-={\"name\": \"plug\", \"material\": \"rock\", \"boundary\": [[2,2],[8,2],[8,8],[2,8]]}"},
+        PreprocessStage::Cut);
+    EXPECT_TRUE(island.ok) << all_messages(island.diagnostics);
+    EXPECT_EQ(island.blocks.size(), 2u);
+}
+
+TEST(ModelValidation, JointOutsideEveryRegion) {
+    expect_error({"/joints=[{\"name\": \"stray\", \"points\": [[20,20],[30,25]]}]"}, "/joints/0", "outside every region");
+    expect_error({"/joints=[{\"name\": \"dot\", \"points\": [[2,2],[2,2]]}]"}, "/joints/0/points/1", "zero-length");
+    expect_error({"/joints=[{\"name\": \"short\", \"points\": [[2,2]]}]"}, "/joints/0/points", "at least 2 points");
+    expect_error({"/joints=[{\"name\": \"j\", \"points\": [[0,5],[10,5]], \"joint_material\": \"glue\"}]"},
+                 "/joints/0/joint_material", "no joint material named \"glue\"");
+}
+
+TEST(ModelValidation, ControlsOutOfRange) {
+    expect_error({"/mesh/min_angle=40"}, "/mesh/min_angle", "34°");
+    expect_error({"/mesh/size=-1"}, "/mesh/size", "positive");
+    expect_error({"/analysis={\"time_step\": 0}"}, "/analysis/time_step", "must be positive");
+    expect_error({"/analysis={\"steps\": 0}"}, "/analysis/steps", "at least one step");
+    expect_error({"/analysis={\"type\": \"dynamic\"}", "/materials/0/density=0"}, "/materials/0/density",
+                 "dynamic analysis needs a positive density");
+    expect_error({"/load_tables=[{\"name\": \"t\", \"points\": [[0,0],[0,1]]}]"}, "/load_tables/0/points/1",
+                 "increase strictly");
+    expect_error({"/rollers/0/to=[0,0]"}, "/rollers/0", "same point");
+    expect_error({"/rollers/0/fixed=\"z\""}, "/rollers/0/fixed", "\"x\", \"y\" or \"xy\"");
+    expect_error({"/regions/0/boundary/1=[1e12, 0]"}, "/regions/0/boundary/1", "beyond");
+}
+
+TEST(ModelValidation, TooFineAMeshIsRefusedBeforeMeshing) {
+    const Preprocessed p = preprocess_text(square_model_json(), {"/mesh/size=1e-5"});
+    EXPECT_FALSE(p.ok);
+    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Error, "/mesh", "above the limit")) << all_messages(p.diagnostics);
+    EXPECT_TRUE(p.mesh.triangles.empty());
+}
