@@ -31,8 +31,9 @@ void print_profile(const Preprocessed& p, double write_seconds) {
               << p.seconds_cut << ", mesh " << p.seconds_mesh << ", write " << write_seconds << ", total "
               << p.seconds_read + p.seconds_validate + p.seconds_cut + p.seconds_mesh + write_seconds << "\n";
     if (p.seconds_mesh > 0 && p.statistics.elements > 0)
-        std::cout << "meshing rate: " << static_cast<long>(p.statistics.elements / p.seconds_mesh)
-                  << " triangles/s\n";
+        std::cout << "meshed " << p.statistics.elements << " triangles (" << p.statistics.nodes << " nodes, "
+                  << p.statistics.blocks << " blocks) in " << p.seconds_mesh << " s: "
+                  << static_cast<long>(p.statistics.elements / p.seconds_mesh) << " triangles/s\n";
 }
 
 std::string model_stem(const std::string& path) {

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Quick start (a): builds mcdda and runs the main job on the default example.
+#  - with a display: opens the desktop program with examples/jointed-tunnel.json;
+#  - without one: checks, meshes and renders that example headless into out/jointed-tunnel/
+#    (the mesh as .vtu for ParaView and a PNG picture).
+# Usage: bash scripts/run-example.sh [MODEL.json]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+model=${1:-examples/jointed-tunnel.json}
+bash scripts/build.sh
+name=$(basename "$model" .json)
+out=out/$name
+
+if [ -n "${DISPLAY:-}" ] && [ -z "${CI:-}" ]; then
+  echo "Opening $model in the desktop program"
+  exec build/app/gui/mcdda-gui "$model"
+fi
+
+echo "No display: running $model headless into $out/"
+mkdir -p "$out"
+build/app/mcdda check "$model"
+build/app/mcdda mesh "$model" --out "$out"
+build/app/mcdda render "$model" --out "$out/$name.png"
+echo "Results: $(ls "$out" | tr '\n' ' ')"
