@@ -1,0 +1,379 @@
+#include "view/ModelScene.hpp"
+
+#include "view/Palette.hpp"
+#include "view/SceneGeometry.hpp"
+#include "view/SceneLegend.hpp"
+#include "view/Symbols.hpp"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkContourTriangulator.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindow.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace mcdda::view {
+
+namespace {
+
+/// Depth of each layer, in units of the model size ×1e-3. The camera looks down −z with a
+/// parallel projection, so these offsets only decide what is drawn over what.
+enum Layer { fill_layer = 0, mesh_layer = 1, outline_layer = 2, joint_layer = 3, symbol_layer = 4 };
+
+struct Style {
+    double pixel = 1.0;     ///< pixels per point (window DPI / 72): scales line widths and text
+    double z_step = 1e-3;   ///< m between layers
+    double symbol = 1.0;    ///< symbol size (m)
+};
+
+double dpi_of(vtkRenderer* renderer)
+{
+    vtkWindow* window = renderer->GetVTKWindow();
+    const int dpi = window != nullptr ? window->GetDPI() : 72;
+    return dpi > 0 ? dpi : 72;
+}
+
+std::array<unsigned char, 3> bytes(const Rgb& c)
+{
+    auto b = [](double v) { return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+    return {b(c[0]), b(c[1]), b(c[2])};
+}
+
+/// A flat, unlit actor: colours come out exactly as in the palette.
+vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const Rgb& color, double line_width)
+{
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(data);
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+    actor->GetProperty()->SetLineWidth(static_cast<float>(line_width));
+    return actor;
+}
+
+void add_shapes(vtkRenderer* renderer, const Shapes& shapes, const Rgb& color, double line_width, double z)
+{
+    if (shapes.empty()) return;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    vtkNew<vtkCellArray> polys;
+    auto add = [&](const std::vector<Point2>& list, vtkCellArray* cells) {
+        cells->InsertNextCell(static_cast<vtkIdType>(list.size()));
+        for (const Point2& q : list) cells->InsertCellPoint(points->InsertNextPoint(q.x, q.y, z));
+    };
+    for (const auto& l : shapes.lines)
+        if (l.size() >= 2) add(l, lines);
+    for (const auto& f : shapes.fills)
+        if (f.size() >= 3) add(f, polys);
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetLines(lines);
+    data->SetPolys(polys);
+    renderer->AddActor(flat_actor(data, color, line_width));
+}
+
+/// Closed polylines of the given rings.
+Shapes ring_lines(const std::vector<const Ring*>& rings)
+{
+    Shapes s;
+    for (const Ring* r : rings) {
+        if (r->size() < 2) continue;
+        std::vector<Point2> l(r->begin(), r->end());
+        l.push_back(r->front());
+        s.lines.push_back(std::move(l));
+    }
+    return s;
+}
+
+/// Fills with a colour per cell, built up polygon by polygon.
+class FillBuilder {
+public:
+    explicit FillBuilder(double z) : z_(z) { colors_->SetNumberOfComponents(3); }
+
+    /// The mesh nodes; call once, before any add_triangle and on an empty builder.
+    void add_nodes(const std::vector<Point2>& nodes)
+    {
+        for (const Point2& q : nodes) points_->InsertNextPoint(q.x, q.y, z_);
+    }
+    /// A mesh triangle by node indices.
+    void add_triangle(const std::array<int, 3>& t, const Rgb& color)
+    {
+        const vtkIdType ids[3] = {t[0], t[1], t[2]};
+        polys_->InsertNextCell(3, ids);
+        push_color(color);
+    }
+
+    /// A polygon with holes, triangulated here (outer ring made counter-clockwise, holes
+    /// clockwise, as vtkContourTriangulator expects).
+    void add_polygon(const Ring& outer, const std::vector<Ring>& holes, const Rgb& color)
+    {
+        if (outer.size() < 3) return;
+        vtkNew<vtkCellArray> segments;
+        auto add_ring = [&](const Ring& ring, bool counter_clockwise) {
+            if (ring.size() < 3) return;
+            Ring r = ring;
+            if ((signed_area(r) > 0.0) != counter_clockwise) std::reverse(r.begin(), r.end());
+            const vtkIdType first = points_->GetNumberOfPoints();
+            for (const Point2& q : r) points_->InsertNextPoint(q.x, q.y, z_);
+            const auto n = static_cast<vtkIdType>(r.size());
+            for (vtkIdType i = 0; i < n; ++i) {
+                const vtkIdType ids[2] = {first + i, first + (i + 1) % n};
+                segments->InsertNextCell(2, ids);
+            }
+        };
+        add_ring(outer, true);
+        for (const Ring& h : holes) add_ring(h, false);
+
+        vtkNew<vtkPolyData> contours;
+        contours->SetPoints(points_);
+        contours->SetLines(segments);
+        const vtkIdType before = polys_->GetNumberOfCells();
+        const double normal[3] = {0.0, 0.0, 1.0};
+        vtkContourTriangulator::TriangulateContours(contours, 0, segments->GetNumberOfCells(), polys_, normal);
+        for (vtkIdType i = before; i < polys_->GetNumberOfCells(); ++i) push_color(color);
+    }
+
+    vtkSmartPointer<vtkActor> actor() const
+    {
+        vtkNew<vtkPolyData> data;
+        data->SetPoints(points_);
+        data->SetPolys(polys_);
+        data->GetCellData()->SetScalars(colors_);
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(data);
+        mapper->SetScalarModeToUseCellData();
+        mapper->SetColorModeToDirectScalars();
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        actor->GetProperty()->LightingOff();
+        return actor;
+    }
+
+    bool empty() const { return polys_->GetNumberOfCells() == 0; }
+
+private:
+    void push_color(const Rgb& c)
+    {
+        const auto b = bytes(c);
+        colors_->InsertNextTypedTuple(b.data());
+    }
+
+    double z_;
+    vtkNew<vtkPoints> points_;
+    vtkNew<vtkCellArray> polys_;
+    vtkNew<vtkUnsignedCharArray> colors_;
+};
+
+int material_of_triangle(const Preprocessed& p, std::size_t t)
+{
+    if (t < p.mesh.triangle_material.size()) return p.mesh.triangle_material[t];
+    if (t < p.mesh.triangle_block.size()) {
+        const int b = p.mesh.triangle_block[t];
+        if (b >= 0 && b < static_cast<int>(p.blocks.size())) return p.blocks[static_cast<std::size_t>(b)].material;
+    }
+    return -1;
+}
+
+Rgb color_of_material(const Model& m, int index)
+{
+    return material_color(index >= 0 && index < static_cast<int>(m.materials.size()) ? index : -1);
+}
+
+void add_fill(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
+{
+    FillBuilder fill(fill_layer * st.z_step);
+    const Mesh& mesh = p.mesh;
+    const auto node_count = static_cast<int>(mesh.nodes.size());
+    if (!mesh.triangles.empty()) {
+        fill.add_nodes(mesh.nodes);
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const auto& tri = mesh.triangles[t];
+            if (std::any_of(tri.begin(), tri.end(), [&](int n) { return n < 0 || n >= node_count; })) continue;
+            fill.add_triangle(tri, color_of_material(p.model, material_of_triangle(p, t)));
+        }
+    } else if (!p.blocks.empty()) {
+        for (const Block& b : p.blocks) fill.add_polygon(b.outer, b.holes, color_of_material(p.model, b.material));
+    } else {
+        for (const Region& r : p.model.regions)
+            fill.add_polygon(r.boundary, r.holes, color_of_material(p.model, r.material));
+    }
+    if (!fill.empty()) renderer->AddActor(fill.actor());
+}
+
+void add_mesh_edges(vtkRenderer* renderer, const Mesh& mesh, const Style& st)
+{
+    if (mesh.triangles.empty()) return;
+    const auto node_count = static_cast<int>(mesh.nodes.size());
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(mesh.triangles.size() * 3);
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const int a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
+            if (a < 0 || b < 0 || a >= node_count || b >= node_count) continue;
+            edges.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+
+    vtkNew<vtkPoints> points;
+    const double z = mesh_layer * st.z_step;
+    for (const Point2& q : mesh.nodes) points->InsertNextPoint(q.x, q.y, z);
+    vtkNew<vtkCellArray> lines;
+    for (const auto& [a, b] : edges) {
+        const vtkIdType ids[2] = {a, b};
+        lines->InsertNextCell(2, ids);
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetLines(lines);
+    renderer->AddActor(flat_actor(data, palette::mesh_edge, std::max(1.0, 0.8 * st.pixel)));
+}
+
+void add_outlines(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
+{
+    std::vector<const Ring*> rings;
+    if (!p.blocks.empty()) {
+        for (const Block& b : p.blocks) {
+            rings.push_back(&b.outer);
+            for (const Ring& h : b.holes) rings.push_back(&h);
+        }
+    } else {
+        for (const Region& r : p.model.regions) {
+            rings.push_back(&r.boundary);
+            for (const Ring& h : r.holes) rings.push_back(&h);
+        }
+    }
+    add_shapes(renderer, ring_lines(rings), palette::block_outline, 2.0 * st.pixel, outline_layer * st.z_step);
+}
+
+void add_joints(vtkRenderer* renderer, const Model& model, const Style& st)
+{
+    Shapes inside, outside;
+    for (const Joint& j : model.joints)
+        for (std::size_t i = 0; i + 1 < j.points.size(); ++i)
+            for (const SegmentPiece& piece : split_by_material(model, j.points[i], j.points[i + 1]))
+                (piece.in_material ? inside : outside).lines.push_back({piece.from, piece.to});
+    const double z = joint_layer * st.z_step;
+    add_shapes(renderer, outside, palette::joint_outside, 1.5 * st.pixel, z);
+    add_shapes(renderer, inside, palette::joint, 3.0 * st.pixel, z);
+}
+
+void add_measurement_labels(vtkRenderer* renderer, const Model& model, const Style& st)
+{
+    for (const MeasurementPoint& m : model.measurement_points) {
+        if (m.name.empty()) continue;
+        vtkNew<vtkTextActor> text;
+        text->SetInput(m.name.c_str());
+        vtkTextProperty* t = text->GetTextProperty();
+        t->SetFontFamilyToArial();
+        t->SetFontSize(11);
+        t->SetColor(palette::measurement.data());
+        t->SetBackgroundColor(palette::background.data());
+        t->SetBackgroundOpacity(0.75);
+        t->SetJustificationToLeft();
+        t->SetVerticalJustificationToBottom();
+        text->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+        text->GetPositionCoordinate()->SetValue(m.point.x + 0.5 * st.symbol, m.point.y + 0.5 * st.symbol,
+                                                symbol_layer * st.z_step);
+        renderer->AddActor2D(text);
+    }
+}
+
+}  // namespace
+
+void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions& options)
+{
+    if (renderer == nullptr) return;
+    const Box box = model_box(p);
+    Style st;
+    st.pixel = dpi_of(renderer) / 72.0;
+    st.symbol = symbol_size(box);
+    st.z_step = (box.size() > 0.0 ? box.size() : 1.0) * 1e-3;
+
+    renderer->SetBackground(palette::background.data());
+    renderer->GradientBackgroundOff();
+
+    add_fill(renderer, p, st);
+    if (options.show_mesh) add_mesh_edges(renderer, p.mesh, st);
+    add_outlines(renderer, p, st);
+    if (options.show_joints) add_joints(renderer, p.model, st);
+
+    const double z = symbol_layer * st.z_step;
+    if (options.show_supports) {
+        add_shapes(renderer, roller_shapes(p.model, st.symbol), palette::support, 2.0 * st.pixel, z);
+        add_shapes(renderer, fixed_point_shapes(p.model, st.symbol), palette::support, 1.5 * st.pixel, z);
+    }
+    if (options.show_loads) {
+        add_shapes(renderer, edge_pressure_shapes(p.model, st.symbol), palette::pressure, 1.5 * st.pixel, z);
+        add_shapes(renderer, point_load_shapes(p.model, st.symbol), palette::point_load, 1.5 * st.pixel, z);
+    }
+    if (options.show_points) {
+        add_shapes(renderer, measurement_shapes(p.model, st.symbol), palette::measurement, 1.0 * st.pixel, z);
+        add_measurement_labels(renderer, p.model, st);
+    }
+    add_legend(renderer, legend_title(p), legend_entries(p, options), dpi_of(renderer));
+    fit_camera(renderer, p, options);
+}
+
+void fit_camera(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions& options)
+{
+    if (renderer == nullptr) return;
+    double b[6];
+    renderer->ComputeVisiblePropBounds(b);
+    if (!vtkMath::AreBoundsInitialized(b)) {
+        const Box box = model_box(p);
+        if (box.valid()) {
+            b[0] = box.xmin, b[1] = box.xmax, b[2] = box.ymin, b[3] = box.ymax;
+        } else {
+            b[0] = -1, b[1] = 1, b[2] = -1, b[3] = 1;
+        }
+        b[4] = b[5] = 0.0;
+    }
+    const double cx = 0.5 * (b[0] + b[1]), cy = 0.5 * (b[2] + b[3]);
+    double wx = b[1] - b[0], wy = b[3] - b[2];
+    if (!(wx > 0.0) && !(wy > 0.0)) wx = wy = 2.0;  // a single point: show 2 m around it
+
+    const int* size = renderer->GetSize();
+    const double width = std::max(1, size[0]), height = std::max(1, size[1]);
+    const double dpi = dpi_of(renderer);
+    const auto entries = legend_entries(p, options);
+    double reserved = entries.empty() ? 0.0 : legend_width(legend_title(p), entries, dpi) + 2.0 * legend_margin(dpi);
+    if (reserved > 0.45 * width) reserved = 0.0;  // narrow window: let the legend overlap instead
+    const double usable = width - reserved;
+
+    const double margin = 1.08;  // 4 % free on each side
+    double half_height = margin * std::max(0.5 * wy, 0.5 * wx * height / usable);
+    if (!(half_height > 0.0)) half_height = 1.0;
+    const double metres_per_pixel = 2.0 * half_height / height;
+    const double fx = cx + 0.5 * reserved * metres_per_pixel;  // model centred in the free part
+
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    const double distance = std::max({wx, wy, 1.0}) * 10.0;
+    camera->SetFocalPoint(fx, cy, 0.0);
+    camera->SetPosition(fx, cy, distance);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetParallelScale(half_height);
+    renderer->ResetCameraClippingRange();
+}
+
+}  // namespace mcdda::view

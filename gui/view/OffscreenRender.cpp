@@ -1,0 +1,101 @@
+#include "view/OffscreenRender.hpp"
+
+#include "view/DisplayCheck.hpp"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+namespace mcdda::view {
+
+namespace {
+
+void remove_quietly(const std::filesystem::path& path)
+{
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+}
+
+}  // namespace
+
+int png_dpi(int width, int height)
+{
+    const double scale = std::clamp(std::min(width, height) / 800.0, 1.0, 3.0);
+    return static_cast<int>(std::lround(72.0 * scale));
+}
+
+void render_png(const Preprocessed& p, const SceneOptions& options, int width, int height,
+                const std::string& path)
+{
+    constexpr int largest = 16384;
+    if (width <= 0 || height <= 0 || width > largest || height > largest)
+        throw std::runtime_error("render_png: the image size must be between 1 and " + std::to_string(largest) +
+                                 " pixels (got " + std::to_string(width) + "x" + std::to_string(height) + ")");
+    if (path.empty()) throw std::runtime_error("render_png: no output file given");
+    std::string problem;
+    const XConnection connection = open_x_display(problem);  // outlives the window below
+    if (!connection) throw std::runtime_error("render_png: " + problem);
+
+    const std::filesystem::path target(path);
+    const std::filesystem::path temporary(path + ".tmp");
+    const std::filesystem::path folder = target.parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder))
+        throw std::runtime_error("render_png: cannot write " + path + ": folder " + folder.string() +
+                                 " does not exist");
+
+    vtkNew<vtkRenderWindow> window;
+    window->SetDisplayId(connection.get());
+    window->SetOffScreenRendering(1);
+    window->SetSize(width, height);
+    window->SetDPI(png_dpi(width, height));
+    window->SetMultiSamples(4);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    build_model_scene(renderer, p, options);
+    window->Render();
+
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->ShouldRerenderOff();
+    grab->Update();
+    int dims[3] = {0, 0, 0};
+    grab->GetOutput()->GetDimensions(dims);
+    if (dims[0] != width || dims[1] != height)
+        throw std::runtime_error("render_png: reading back the rendered image failed (got " +
+                                 std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + " pixels)");
+
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(temporary.string().c_str());
+    writer->SetInputConnection(grab->GetOutputPort());
+    errno = 0;
+    writer->Write();
+    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary)) {
+        const std::string reason = errno != 0 ? std::strerror(errno) : "the PNG writer failed";
+        remove_quietly(temporary);
+        throw std::runtime_error("render_png: cannot write " + temporary.string() + ": " + reason);
+    }
+    window->Finalize();
+
+    std::error_code error;
+    std::filesystem::rename(temporary, target, error);
+    if (error) {
+        remove_quietly(temporary);
+        throw std::runtime_error("render_png: cannot rename " + temporary.string() + " to " + path + ": " +
+                                 error.message());
+    }
+}
+
+}  // namespace mcdda::view

@@ -1,0 +1,37 @@
+#pragma once
+/// \file Symbols.hpp
+/// Engineering symbols for supports, loads and measurement points as plain shapes (no VTK), so
+/// the scene and its legend draw the same figures and tests can check them without rendering.
+/// `size` is the symbol size from symbol_size() (m); in the legend it is in pixels.
+
+#include "view/SceneGeometry.hpp"
+
+namespace mcdda::view {
+
+/// An arrow whose head ends exactly at `tip`: a shaft quad and a head triangle.
+Shapes arrow(Point2 tail, Point2 tip, double head_length, double head_width, double shaft_width);
+
+/// A pin support (both directions fixed): filled triangle with its apex at `at`, opening along
+/// the unit vector `outward`, standing on a hatched ground line.
+Shapes fixed_point_symbol(Point2 at, Point2 outward, double size);
+
+/// A roller bearing: hollow triangle with its apex at `at` whose axis is the fixed direction
+/// `outward` (unit), on two wheels and a ground line.
+Shapes roller_symbol(Point2 at, Point2 outward, double size);
+
+/// A small filled diamond centred on `at`.
+Shapes measurement_symbol(Point2 at, double size);
+
+/// Pin symbols at every fixed point, drawn on the side away from the rock.
+Shapes fixed_point_shapes(const Model& model, double size);
+/// The roller lines and roller markers spread along them, one marker per fixed direction.
+Shapes roller_shapes(const Model& model, double size);
+/// Arrows ending at the loaded points, in the force direction; length grows with |force|.
+Shapes point_load_shapes(const Model& model, double size);
+/// Rows of arrows standing outside the loaded edges; positive pressures point into the rock,
+/// negative ones (suction) away from it.
+Shapes edge_pressure_shapes(const Model& model, double size);
+/// Diamonds at the measurement points.
+Shapes measurement_shapes(const Model& model, double size);
+
+}  // namespace mcdda::view

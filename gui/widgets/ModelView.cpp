@@ -1,0 +1,305 @@
+#include "widgets/ModelView.hpp"
+
+#include "view/Palette.hpp"
+
+#include <QEvent>
+#include <QGuiApplication>
+#include <QMouseEvent>
+#include <QResizeEvent>
+#include <QWheelEvent>
+#include <QtGui/qguiapplication_platform.h>
+
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace mcdda::gui {
+
+struct ModelView::Impl {
+    vtkNew<vtkRenderWindow> window;
+    vtkNew<vtkRenderer> renderer;
+    std::shared_ptr<const Preprocessed> scene;
+    view::SceneOptions options;
+    bool window_ready = false;    ///< VTK was given our native window
+    bool camera_touched = false;  ///< the user navigated since the last fit: resizing keeps the view
+    bool panning = false;
+    QPointF last_pos;
+};
+
+ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<Impl>())
+{
+    // Route 2 of DESIGN.md §5: our own X window that VTK draws into; Qt must not paint it.
+    setAttribute(Qt::WA_NativeWindow);
+    setAttribute(Qt::WA_PaintOnScreen);
+    setAttribute(Qt::WA_NoSystemBackground);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setMouseTracking(true);
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(64, 64);
+
+    impl_->window->AddRenderer(impl_->renderer);
+    impl_->window->SetMultiSamples(0);  // an X visual with multisampling is not guaranteed
+    impl_->renderer->SetBackground(view::palette::background.data());
+    impl_->renderer->GetActiveCamera()->ParallelProjectionOn();
+}
+
+ModelView::~ModelView()
+{
+    // Release VTK's GL context while the native window still exists (QWidget's destructor
+    // destroys it after this body).
+    impl_->window->Finalize();
+}
+
+bool ModelView::ensureWindow()
+{
+    if (impl_->window_ready) return true;
+    if (!isVisible()) return false;
+    auto* x11 = qGuiApp->nativeInterface<QNativeInterface::QX11Application>();
+    if (x11 == nullptr || x11->display() == nullptr) {
+        static bool warned = false;
+        if (!warned) qWarning("ModelView: VTK can only draw into X11 windows; run with QT_QPA_PLATFORM=xcb");
+        warned = true;
+        return false;
+    }
+    const WId id = winId();
+    if (id == 0) return false;
+    impl_->window->SetDisplayId(x11->display());
+    impl_->window->SetWindowId(reinterpret_cast<void*>(id));
+    impl_->window->SetDPI(static_cast<int>(std::lround(72.0 * devicePixelRatioF())));
+    syncSize();
+    impl_->window_ready = true;
+    return true;
+}
+
+void ModelView::syncSize()
+{
+    const qreal ratio = devicePixelRatioF();
+    impl_->window->SetSize(std::max(1, qRound(width() * ratio)), std::max(1, qRound(height() * ratio)));
+}
+
+void ModelView::renderNow()
+{
+    if (!ensureWindow()) return;
+    impl_->window->Render();
+}
+
+void ModelView::rebuild(bool keep_camera)
+{
+    vtkNew<vtkCamera> saved;
+    saved->DeepCopy(impl_->renderer->GetActiveCamera());
+
+    syncSize();
+    impl_->renderer->RemoveAllViewProps();
+    if (impl_->scene) view::build_model_scene(impl_->renderer, *impl_->scene, impl_->options);
+    if (keep_camera) {
+        impl_->renderer->GetActiveCamera()->DeepCopy(saved);
+        impl_->renderer->ResetCameraClippingRange();
+    }
+    update();
+}
+
+void ModelView::setScene(const Preprocessed& p, bool keep_camera)
+{
+    setScene(std::make_shared<const Preprocessed>(p), keep_camera);
+}
+
+void ModelView::setScene(std::shared_ptr<const Preprocessed> p, bool keep_camera)
+{
+    impl_->scene = std::move(p);
+    if (!keep_camera) impl_->camera_touched = false;
+    rebuild(keep_camera);
+}
+
+void ModelView::clearScene()
+{
+    impl_->scene.reset();
+    impl_->camera_touched = false;
+    rebuild(false);
+}
+
+std::shared_ptr<const Preprocessed> ModelView::scene() const { return impl_->scene; }
+
+void ModelView::setSceneOptions(const view::SceneOptions& options)
+{
+    impl_->options = options;
+    rebuild(true);
+}
+
+view::SceneOptions ModelView::sceneOptions() const { return impl_->options; }
+
+QImage ModelView::grabFrame()
+{
+    if (!ensureWindow()) return {};
+    syncSize();
+    impl_->window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(impl_->window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    vtkImageData* image = grab->GetOutput();
+    int dims[3] = {0, 0, 0};
+    image->GetDimensions(dims);
+    if (dims[0] <= 0 || dims[1] <= 0) return {};
+    const auto* pixels = static_cast<const unsigned char*>(image->GetScalarPointer());
+    QImage frame(dims[0], dims[1], QImage::Format_RGB888);
+    const auto row_bytes = static_cast<std::size_t>(dims[0]) * 3;
+    for (int y = 0; y < dims[1]; ++y)  // VTK's rows start at the bottom
+        std::memcpy(frame.scanLine(dims[1] - 1 - y), pixels + static_cast<std::size_t>(y) * row_bytes, row_bytes);
+    return frame;
+}
+
+double ModelView::metresPerPixel() const
+{
+    return 2.0 * impl_->renderer->GetActiveCamera()->GetParallelScale() / std::max(1, height());
+}
+
+QPointF ModelView::toModel(const QPointF& widget_pos) const
+{
+    double focal[3];
+    impl_->renderer->GetActiveCamera()->GetFocalPoint(focal);
+    const double m = metresPerPixel();
+    return {focal[0] + (widget_pos.x() - 0.5 * width()) * m, focal[1] - (widget_pos.y() - 0.5 * height()) * m};
+}
+
+QPointF ModelView::toWidget(const QPointF& model_pos) const
+{
+    double focal[3];
+    impl_->renderer->GetActiveCamera()->GetFocalPoint(focal);
+    const double m = metresPerPixel();
+    return {0.5 * width() + (model_pos.x() - focal[0]) / m, 0.5 * height() - (model_pos.y() - focal[1]) / m};
+}
+
+void ModelView::fitView()
+{
+    syncSize();
+    static const Preprocessed empty;
+    view::fit_camera(impl_->renderer, impl_->scene ? *impl_->scene : empty, impl_->options);
+    impl_->camera_touched = false;
+    update();
+}
+
+void ModelView::zoomAt(const QPointF& widget_pos, double factor)
+{
+    if (!(factor > 0.0) || !std::isfinite(factor)) return;
+    vtkCamera* camera = impl_->renderer->GetActiveCamera();
+    const double scale = camera->GetParallelScale() / factor;
+    if (scale < 1e-9 || scale > 1e12) return;  // keep the numbers meaningful
+    const QPointF anchor = toModel(widget_pos);
+    double focal[3], position[3];
+    camera->GetFocalPoint(focal);
+    camera->GetPosition(position);
+    const double fx = anchor.x() + (focal[0] - anchor.x()) / factor;
+    const double fy = anchor.y() + (focal[1] - anchor.y()) / factor;
+    camera->SetFocalPoint(fx, fy, focal[2]);
+    camera->SetPosition(fx, fy, position[2]);
+    camera->SetParallelScale(scale);
+    impl_->renderer->ResetCameraClippingRange();
+    impl_->camera_touched = true;
+    update();
+}
+
+void ModelView::panBy(const QPointF& pixels)
+{
+    vtkCamera* camera = impl_->renderer->GetActiveCamera();
+    const double m = metresPerPixel();
+    double focal[3], position[3];
+    camera->GetFocalPoint(focal);
+    camera->GetPosition(position);
+    const double dx = -pixels.x() * m, dy = pixels.y() * m;
+    camera->SetFocalPoint(focal[0] + dx, focal[1] + dy, focal[2]);
+    camera->SetPosition(position[0] + dx, position[1] + dy, position[2]);
+    impl_->renderer->ResetCameraClippingRange();
+    impl_->camera_touched = true;
+    update();
+}
+
+void ModelView::paintEvent(QPaintEvent*) { renderNow(); }
+
+void ModelView::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    syncSize();
+    if (!impl_->camera_touched) fitView();  // a freshly opened model stays fitted
+    update();
+}
+
+void ModelView::mousePressEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton) {
+        impl_->panning = true;
+        impl_->last_pos = event->position();
+        setCursor(Qt::ClosedHandCursor);
+        event->accept();
+        return;
+    }
+    QWidget::mousePressEvent(event);
+}
+
+void ModelView::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPointF pos = event->position();
+    if (impl_->panning) {
+        panBy(pos - impl_->last_pos);
+        impl_->last_pos = pos;
+    }
+    emit cursorMoved(toModel(pos));
+    event->accept();
+}
+
+void ModelView::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (impl_->panning && !(event->buttons() & (Qt::LeftButton | Qt::MiddleButton))) {
+        impl_->panning = false;
+        unsetCursor();
+    }
+    event->accept();
+}
+
+void ModelView::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::MiddleButton) {
+        fitView();
+        event->accept();
+        return;
+    }
+    QWidget::mouseDoubleClickEvent(event);
+}
+
+void ModelView::wheelEvent(QWheelEvent* event)
+{
+    const QPoint delta = event->angleDelta();
+    const int steps = delta.y() != 0 ? delta.y() : delta.x();
+    if (steps == 0) {
+        event->ignore();
+        return;
+    }
+    zoomAt(event->position(), std::pow(1.2, steps / 120.0));  // one notch: 20 %
+    emit cursorMoved(toModel(event->position()));
+    event->accept();
+}
+
+void ModelView::leaveEvent(QEvent* event)
+{
+    emit cursorLeft();
+    QWidget::leaveEvent(event);
+}
+
+bool ModelView::event(QEvent* event)
+{
+    if (event->type() == QEvent::WinIdChange && impl_->window_ready) {
+        // Reparenting can give us a new native window: let VTK start again on the next paint.
+        impl_->window->Finalize();
+        impl_->window_ready = false;
+    }
+    return QWidget::event(event);
+}
+
+}  // namespace mcdda::gui

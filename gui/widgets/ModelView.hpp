@@ -1,0 +1,88 @@
+#pragma once
+/// \file ModelView.hpp
+/// The model picture inside the Qt 6 window: a native child window that a plain
+/// vtkRenderWindow draws into (DESIGN.md §5, route 2), with 2-D navigation done here in Qt's
+/// event handlers (drag pans, wheel zooms about the cursor). VTK stays in the .cpp.
+
+#include "view/ModelScene.hpp"
+
+#include <QImage>
+#include <QPointF>
+#include <QWidget>
+
+#include <memory>
+
+namespace mcdda::gui {
+
+class ModelView : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit ModelView(QWidget* parent = nullptr);
+    ~ModelView() override;
+
+    /// Shows `p` (copied; the view keeps it to rebuild the picture when options change). The
+    /// camera is fitted to the model unless `keep_camera` is set (e.g. on reload).
+    void setScene(const Preprocessed& p, bool keep_camera = false);
+    /// The same without a copy.
+    void setScene(std::shared_ptr<const Preprocessed> p, bool keep_camera = false);
+    /// Removes the model: an empty background.
+    void clearScene();
+    /// The scene shown, or null.
+    std::shared_ptr<const Preprocessed> scene() const;
+
+    /// What is drawn; changing it rebuilds the picture and keeps the camera.
+    void setSceneOptions(const view::SceneOptions& options);
+    view::SceneOptions sceneOptions() const;
+
+    /// Renders now and reads the frame back from VTK (RGB, top row first, in device pixels).
+    /// Null when the widget has no native window yet (never shown).
+    QImage grabFrame();
+
+    /// Model coordinates (m) under a point of the widget (logical pixels).
+    QPointF toModel(const QPointF& widget_pos) const;
+    /// Widget position (logical pixels) of a model point (m).
+    QPointF toWidget(const QPointF& model_pos) const;
+    /// Size of one logical pixel in the model (m): how precise a cursor position is.
+    double metresPerPixel() const;
+
+    QSize sizeHint() const override { return {800, 600}; }
+    /// Null: VTK paints this widget, not QPainter (required by Qt::WA_PaintOnScreen).
+    QPaintEngine* paintEngine() const override { return nullptr; }
+
+public slots:
+    /// Shows the whole model with a margin.
+    void fitView();
+    /// Zooms by `factor` (> 1 magnifies) keeping the model point under `widget_pos` in place.
+    void zoomAt(const QPointF& widget_pos, double factor);
+    /// Moves the picture by a widget-pixel offset (as if dragged by it).
+    void panBy(const QPointF& pixels);
+
+signals:
+    /// The cursor is over the model point `model_pos` (m).
+    void cursorMoved(const QPointF& model_pos);
+    /// The cursor left the view.
+    void cursorLeft();
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+    bool event(QEvent* event) override;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+
+    bool ensureWindow();
+    void syncSize();
+    void rebuild(bool keep_camera);
+    void renderNow();
+};
+
+}  // namespace mcdda::gui

@@ -1,0 +1,103 @@
+#include "contact/ContactDetection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+namespace mcdda {
+
+double signed_gap(Point2 p, Point2 a, Point2 b) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double l = std::hypot(dx, dy);
+    return l > 0.0 ? ((p.x - a.x) * dy - (p.y - a.y) * dx) / l : 0.0;
+}
+
+namespace {
+
+/// Boundary edges bucketed by the grid cells their (enlarged) bounding boxes cover.
+class EdgeGrid {
+public:
+    EdgeGrid(const std::vector<Point2>& nodes, const MeshTopology& topology, double cell, double margin)
+        : cell_(cell) {
+        for (std::size_t e = 0; e < topology.edges.size(); ++e) {
+            const Point2& a = nodes[topology.edges[e].from];
+            const Point2& b = nodes[topology.edges[e].to];
+            const long x0 = index(std::min(a.x, b.x) - margin), x1 = index(std::max(a.x, b.x) + margin);
+            const long y0 = index(std::min(a.y, b.y) - margin), y1 = index(std::max(a.y, b.y) + margin);
+            for (long i = x0; i <= x1; ++i)
+                for (long k = y0; k <= y1; ++k) cells_[key(i, k)].push_back(static_cast<int>(e));
+        }
+    }
+    const std::vector<int>* edges_near(Point2 p) const {
+        const auto it = cells_.find(key(index(p.x), index(p.y)));
+        return it == cells_.end() ? nullptr : &it->second;
+    }
+
+private:
+    long index(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+    static long long key(long i, long k) { return (static_cast<long long>(i) << 32) ^ (k & 0xffffffffLL); }
+    double cell_;
+    std::unordered_map<long long, std::vector<int>> cells_;
+};
+
+}  // namespace
+
+std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mesh& mesh, const MeshTopology& topology,
+                                     double search_distance, const std::vector<Contact>& previous) {
+    if (topology.edges.empty()) return {};
+    double mean_edge = 0.0;
+    for (const BoundaryEdge& e : topology.edges)
+        mean_edge += std::hypot(nodes[e.to].x - nodes[e.from].x, nodes[e.to].y - nodes[e.from].y);
+    mean_edge /= static_cast<double>(topology.edges.size());
+    const EdgeGrid grid(nodes, topology, std::max(2.0 * mean_edge, 2.0 * search_distance), search_distance);
+
+    std::map<std::pair<int, int>, const Contact*> before;  // (node, edge block) → contact
+    for (const Contact& c : previous) before[{c.node, c.edge_block}] = &c;
+
+    std::vector<Contact> contacts;
+    for (int node : topology.boundary_nodes) {
+        const std::vector<int>* near = grid.edges_near(nodes[node]);
+        if (!near) continue;
+        const int block = mesh.node_block[node];
+        // Best edge per neighbouring block: nearest, then least penetrated.
+        std::map<int, std::pair<std::pair<double, double>, int>> best;
+        for (int e : *near) {
+            const BoundaryEdge& edge = topology.edges[e];
+            if (edge.block == block) continue;
+            const Point2& a = nodes[edge.from];
+            const Point2& b = nodes[edge.to];
+            const double distance = distance_to_segment(nodes[node], a, b);
+            if (distance > search_distance) continue;
+            const double gap = signed_gap(nodes[node], a, b);
+            if (gap < -search_distance) continue;  // deep behind the edge: another edge is meant
+            const auto score = std::make_pair(distance, -gap);
+            auto it = best.find(edge.block);
+            if (it == best.end() || score < it->second.first) best[edge.block] = {score, e};
+        }
+        for (const auto& [edge_block, choice] : best) {
+            Contact c;
+            c.node = node;
+            c.edge = choice.second;
+            c.edge_block = edge_block;
+            const auto it = before.find({node, edge_block});
+            if (it != before.end()) {
+                const Contact& old = *it->second;
+                c.state = old.state;
+                c.slip = old.slip;
+                c.intact = old.intact;
+                c.shear_spring = old.shear_spring;
+                c.normal_force = old.normal_force;
+                c.shear_force = old.shear_force;
+            } else {
+                const BoundaryEdge& edge = topology.edges[c.edge];
+                const double gap = signed_gap(nodes[node], nodes[edge.from], nodes[edge.to]);
+                c.state = gap <= 1e-9 * topology.model_size ? ContactState::Locked : ContactState::Open;
+            }
+            contacts.push_back(c);
+        }
+    }
+    return contacts;
+}
+
+}  // namespace mcdda

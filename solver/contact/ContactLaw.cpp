@@ -1,0 +1,115 @@
+#include "contact/ContactLaw.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcdda {
+
+ContactKinematics contact_kinematics(const Contact& c, const std::vector<Point2>& nodes, const MeshTopology& topology) {
+    ContactKinematics k;
+    const BoundaryEdge& e = topology.edges[c.edge];
+    k.nodes[0] = c.node;
+    k.nodes[1] = e.from;
+    k.nodes[2] = e.to;
+    const Point2 p = nodes[c.node], a = nodes[e.from], b = nodes[e.to];
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double l = std::hypot(dx, dy);
+    const double tx = dx / l, ty = dy / l;
+    k.gap = ((p.x - a.x) * dy - (p.y - a.y) * dx) / l;
+    k.xi = std::clamp(((p.x - a.x) * tx + (p.y - a.y) * ty) / l, 0.0, 1.0);
+    // dn = ((P − A) × (B − A)) / l with l held constant over the step (Shi).
+    k.normal << dy / l, -dx / l, (p.y - b.y) / l, (b.x - p.x) / l, (a.y - p.y) / l, (p.x - a.x) / l;
+    k.shear << tx, ty, -(1.0 - k.xi) * tx, -(1.0 - k.xi) * ty, -k.xi * tx, -k.xi * ty;
+    double length = 0.0;
+    for (int edge : {topology.edge_into[c.node], topology.edge_out_of[c.node]})
+        if (edge >= 0) {
+            const BoundaryEdge& n = topology.edges[edge];
+            length += 0.5 * std::hypot(nodes[n.to].x - nodes[n.from].x, nodes[n.to].y - nodes[n.from].y);
+        }
+    k.length = length;
+    return k;
+}
+
+ContactProperties contact_properties(const Contact& c, const ContactKinematics& k, const Model& model,
+                                     const MeshTopology& topology, double penalty) {
+    const int joint = topology.edges[c.edge].joint;
+    int material = joint >= 0 ? model.joints[joint].joint_material : -1;
+    if (material < 0) material = model.default_joint_material;
+    ContactProperties p;
+    const JointMaterial* jm = material >= 0 ? &model.joint_materials[material] : nullptr;
+    p.normal_stiffness = jm && jm->normal_stiffness > 0.0 ? jm->normal_stiffness : penalty;
+    // Without a given value, ks follows kn as an elastic interface with ν ≈ 0.25 would: kn/2.5.
+    p.shear_stiffness = jm && jm->shear_stiffness > 0.0 ? jm->shear_stiffness : p.normal_stiffness / 2.5;
+    if (jm) {
+        p.tan_friction = std::tan(jm->friction_angle);
+        if (c.intact) {
+            p.cohesion_force = jm->cohesion * k.length;
+            p.tensile_force = jm->tensile_strength * k.length;
+        }
+    }
+    return p;
+}
+
+void contact_terms(const Contact& c, const ContactKinematics& k, const ContactProperties& p, Matrix6& stiffness,
+                   Vector6& force) {
+    stiffness.setZero();
+    force.setZero();
+    if (c.state == ContactState::Open) return;
+    // Normal spring: energy ½ kn (gap + n·d)².
+    stiffness += p.normal_stiffness * k.normal * k.normal.transpose();
+    force -= p.normal_stiffness * k.gap * k.normal;
+    if (c.state == ContactState::Locked) {
+        // Shear spring from the committed shear displacement.
+        stiffness += p.shear_stiffness * k.shear * k.shear.transpose();
+        force -= p.shear_stiffness * c.shear_spring * k.shear;
+    } else {
+        // Sliding: Coulomb friction as a load opposing the slip, from the last normal force.
+        const double limit = std::max(0.0, c.normal_force) * p.tan_friction + p.cohesion_force;
+        force -= c.slip * limit * k.shear;
+    }
+}
+
+bool update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d) {
+    const ContactState before = c.state;
+    const int slip_before = c.slip;
+    c.gap = k.gap + k.normal.dot(d);
+    const double slip_increment = k.shear.dot(d);
+    if (c.state == ContactState::Open) {
+        c.normal_force = 0.0;
+        c.shear_force = 0.0;
+        if (c.gap < 0.0) {
+            c.state = ContactState::Locked;
+            c.shear_spring = 0.0;
+        }
+        return c.state != before;
+    }
+    c.normal_force = -p.normal_stiffness * c.gap;
+    if (c.normal_force < -p.tensile_force) {  // pulled apart beyond the tensile strength
+        c.state = ContactState::Open;
+        c.normal_force = c.shear_force = 0.0;
+        return true;
+    }
+    const double limit = std::max(0.0, c.normal_force) * p.tan_friction + p.cohesion_force;
+    if (c.state == ContactState::Locked) {
+        c.shear_force = p.shear_stiffness * (c.shear_spring + slip_increment);
+        if (std::fabs(c.shear_force) > limit) {
+            c.state = ContactState::Sliding;
+            c.slip = c.shear_force > 0.0 ? 1 : -1;
+        }
+    } else {
+        c.shear_force = c.slip * limit;
+        if (slip_increment * c.slip < 0.0) {  // the slip reversed: the contact sticks
+            c.state = ContactState::Locked;
+            c.shear_spring = 0.0;
+        }
+    }
+    return c.state != before || c.slip != slip_before;
+}
+
+void commit_contact(Contact& c, const ContactKinematics& k, const Vector6& d) {
+    if (c.state == ContactState::Locked) c.shear_spring += k.shear.dot(d);
+    else c.shear_spring = 0.0;
+    if (c.state != ContactState::Locked) c.intact = false;
+}
+
+}  // namespace mcdda

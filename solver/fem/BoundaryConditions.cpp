@@ -1,0 +1,114 @@
+#include "fem/BoundaryConditions.hpp"
+
+#include <cmath>
+
+namespace mcdda {
+
+namespace {
+
+bool on_segment(Point2 p, Point2 a, Point2 b, double tolerance) { return distance_to_segment(p, a, b) <= tolerance; }
+
+}  // namespace
+
+BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& mesh, const MeshTopology& topology,
+                                              std::vector<Diagnostic>& diagnostics) {
+    BoundaryConditions bc;
+    const std::size_t n = mesh.nodes.size();
+    std::vector<char> fixed(2 * n, 0);
+    const double tolerance = 1e-6 * topology.model_size;
+    auto error = [&](const std::string& path, const std::string& message) {
+        diagnostics.push_back({Diagnostic::Severity::Error, path, message});
+    };
+
+    for (std::size_t i = 0; i < model.fixed_points.size(); ++i) {
+        const Point2 p = model.fixed_points[i].point;
+        const int nearest = nearest_node(mesh, p);
+        if (nearest < 0) continue;
+        const Point2 q = mesh.nodes[nearest];
+        const double distance = std::hypot(q.x - p.x, q.y - p.y);
+        if (distance > 0.02 * topology.model_size)
+            diagnostics.push_back({Diagnostic::Severity::Warning, "/fixed_points/" + std::to_string(i),
+                                   "the nearest node is " + std::to_string(distance) + " m away"});
+        // Nodes of neighbouring blocks at the same place are all fixed: the user fixed a point.
+        for (std::size_t k = 0; k < n; ++k)
+            if (std::hypot(mesh.nodes[k].x - q.x, mesh.nodes[k].y - q.y) <= tolerance) fixed[2 * k] = fixed[2 * k + 1] = 1;
+    }
+    for (std::size_t i = 0; i < model.rollers.size(); ++i) {
+        const Roller& r = model.rollers[i];
+        int caught = 0;
+        for (int node : topology.boundary_nodes) {
+            if (!on_segment(mesh.nodes[node], r.from, r.to, tolerance)) continue;
+            if (r.fix_x) fixed[2 * node] = 1;
+            if (r.fix_y) fixed[2 * node + 1] = 1;
+            ++caught;
+        }
+        if (caught == 0)
+            error("/rollers/" + std::to_string(i), "roller \"" + r.name + "\" lies along no block boundary");
+    }
+    bc.equation.assign(2 * n, -1);
+    for (std::size_t d = 0; d < 2 * n; ++d)
+        if (!fixed[d]) bc.equation[d] = bc.equation_count++;
+
+    for (std::size_t i = 0; i < model.point_loads.size(); ++i)
+        bc.point_loads.push_back({nearest_node(mesh, model.point_loads[i].point), static_cast<int>(i)});
+    for (std::size_t i = 0; i < model.edge_pressures.size(); ++i) {
+        const EdgePressure& e = model.edge_pressures[i];
+        int caught = 0;
+        for (std::size_t k = 0; k < topology.edges.size(); ++k) {
+            const BoundaryEdge& edge = topology.edges[k];
+            if (on_segment(mesh.nodes[edge.from], e.from, e.to, tolerance) &&
+                on_segment(mesh.nodes[edge.to], e.from, e.to, tolerance)) {
+                bc.pressure_edges.push_back({static_cast<int>(k), static_cast<int>(i)});
+                ++caught;
+            }
+        }
+        if (caught == 0)
+            error("/edge_pressures/" + std::to_string(i), "pressure \"" + e.name + "\" lies along no block boundary");
+    }
+    for (const MeasurementPoint& m : model.measurement_points) bc.measurement_nodes.push_back(nearest_node(mesh, m.point));
+    return bc;
+}
+
+double load_factor(const Model& model, int table, int step, double time) {
+    if (table < 0) return 1.0;
+    const LoadTable& t = model.load_tables[table];
+    return t.factor(t.variable == LoadTable::Variable::Step ? static_cast<double>(step) : time);
+}
+
+Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std::vector<Point2>& nodes,
+                                const MeshTopology& topology, const BoundaryConditions& bc, int step, double time) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(nodes.size()));
+    for (const auto& l : bc.point_loads) {
+        const PointLoad& load = model.point_loads[l.load];
+        const double factor = load_factor(model, load.table, step, time);
+        f[2 * l.node] += factor * load.force.x;
+        f[2 * l.node + 1] += factor * load.force.y;
+    }
+    for (const auto& p : bc.pressure_edges) {
+        const EdgePressure& load = model.edge_pressures[p.load];
+        const BoundaryEdge& e = topology.edges[p.edge];
+        const double pressure = load.pressure * load_factor(model, load.table, step, time);
+        // The block lies left of the edge: its outward normal times the length is (dy, −dx);
+        // a pressure pushes against it, half to each node.
+        const double dx = nodes[e.to].x - nodes[e.from].x, dy = nodes[e.to].y - nodes[e.from].y;
+        for (int node : {e.from, e.to}) {
+            f[2 * node] -= 0.5 * pressure * dy;
+            f[2 * node + 1] += 0.5 * pressure * dx;
+        }
+    }
+    if (model.gravity.x != 0.0 || model.gravity.y != 0.0) {
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const auto& tri = mesh.triangles[t];
+            const Point2 &a = nodes[tri[0]], &b = nodes[tri[1]], &c = nodes[tri[2]];
+            const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+            const double mass = model.materials[mesh.triangle_material[t]].density * area / 3.0;
+            for (int node : tri) {
+                f[2 * node] += mass * model.gravity.x;
+                f[2 * node + 1] += mass * model.gravity.y;
+            }
+        }
+    }
+    return f;
+}
+
+}  // namespace mcdda

@@ -1,0 +1,50 @@
+#pragma once
+/// \file BoundaryConditions.hpp
+/// Supports, loads and measurement points of the model located on the mesh: which degrees of
+/// freedom are fixed (eliminated exactly), which nodes and edges carry loads.
+
+#include "fem/MeshTopology.hpp"
+#include "mesh/Mesh.hpp"
+#include "model/Diagnostic.hpp"
+#include "model/Model.hpp"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace mcdda {
+
+struct BoundaryConditions {
+    /// Per degree of freedom (2·node + direction): its equation number, or −1 when fixed.
+    std::vector<int> equation;
+    int equation_count = 0;
+
+    struct NodalLoad {
+        int node = -1;
+        int load = -1;  ///< index into Model::point_loads
+    };
+    struct PressureEdge {
+        int edge = -1;  ///< index into MeshTopology::edges
+        int load = -1;  ///< index into Model::edge_pressures
+    };
+    std::vector<NodalLoad> point_loads;
+    std::vector<PressureEdge> pressure_edges;
+    std::vector<int> measurement_nodes;  ///< one node per Model::measurement_points entry
+
+    bool fixed(int node, int direction) const { return equation[2 * node + direction] < 0; }
+};
+
+/// Locates supports, loads and measurement points. Supports and loads that catch no node are
+/// errors naming the item.
+BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& mesh, const MeshTopology& topology,
+                                              std::vector<Diagnostic>& diagnostics);
+
+/// Factor of load table `table` (−1: constant 1) at the given step and time.
+double load_factor(const Model& model, int table, int step, double time);
+
+/// External nodal forces (N/m) at `step`/`time` on the current coordinates `nodes`: point loads,
+/// edge pressures (normal to the current edge, pushing into the material) and gravity ρ·g·A/3.
+Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std::vector<Point2>& nodes,
+                                const MeshTopology& topology, const BoundaryConditions& bc, int step, double time);
+
+}  // namespace mcdda

@@ -1,0 +1,72 @@
+#pragma once
+/// \file SymmetricSystem.hpp
+/// The global system K d = F: a fixed sparsity pattern assembled by scattering small dense
+/// blocks into precomputed slots (no sorting per step), factorised by CHOLMOD (supernodal
+/// Cholesky). The symbolic analysis is kept while the pattern is unchanged and the numeric
+/// factor is kept for any number of right-hand sides (the plastic iterations).
+
+#include <Eigen/Sparse>
+
+#include <memory>
+#include <vector>
+
+namespace mcdda {
+
+class CholmodFactor;
+
+/// A set of equations coupled densely (an element's or a contact's degrees of freedom);
+/// entries are equation numbers, −1 for a fixed degree of freedom.
+struct CouplingGroup {
+    int size = 0;
+    int equation[6] = {-1, -1, -1, -1, -1, -1};
+};
+
+class SymmetricSystem {
+public:
+    SymmetricSystem();
+    ~SymmetricSystem();
+
+    /// Sets the pattern from coupling groups (the lower triangle of their union). Group g's
+    /// slots are then addressed by `g` in add(). Forces a new symbolic analysis.
+    void set_pattern(int equations, const std::vector<CouplingGroup>& groups);
+
+    int equations() const { return equations_; }
+    int group_count() const { return static_cast<int>(group_slot_offset_.size()) - 1; }
+
+    /// Zeroes the matrix values (the pattern stays).
+    void clear_values();
+
+    /// Adds the dense symmetric block `k` (size×size, column-major, lower part read) of group `g`.
+    void add(int g, const double* k);
+
+    /// Saves and restores the matrix values (e.g. the element part kept across iterations).
+    void save_values(std::vector<double>& out) const;
+    void restore_values(const std::vector<double>& saved);
+
+    /// Adds `value` on the diagonal of equation `e` (e ≥ 0).
+    void add_diagonal(int e, double value);
+
+    /// Factorises the current matrix; throws std::runtime_error when it is not positive definite.
+    void factorize();
+
+    /// Solves with the last factorisation.
+    Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+
+    int factorizations() const { return factorizations_; }
+    int symbolic_analyses() const { return analyses_; }
+    const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
+
+private:
+    int equations_ = 0;
+    Eigen::SparseMatrix<double> matrix_;   ///< lower triangle, CSC
+    std::vector<int> group_size_;
+    std::vector<int> group_slot_offset_{0};
+    std::vector<int> slots_;               ///< per group: lower-triangle pairs (a ≥ b), −1 if fixed
+    std::vector<int> diagonal_slot_;
+    std::unique_ptr<CholmodFactor> factor_;
+    bool analysed_ = false;
+    int factorizations_ = 0;
+    int analyses_ = 0;
+};
+
+}  // namespace mcdda

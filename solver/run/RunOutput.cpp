@@ -1,0 +1,121 @@
+#include "run/RunOutput.hpp"
+
+#include "io/AtomicFile.hpp"
+#include "io/VtuWriter.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace mcdda {
+
+namespace fs = std::filesystem;
+
+const char* status_name(RunStatus s) {
+    switch (s) {
+        case RunStatus::Running: return "running";
+        case RunStatus::Completed: return "completed";
+        case RunStatus::Collapsed: return "collapsed";
+        case RunStatus::Failed: return "failed";
+        case RunStatus::Cancelled: return "cancelled";
+    }
+    return "unknown";
+}
+
+RunOutput::RunOutput(std::string directory, std::string model_stem)
+    : directory_(std::move(directory)), stem_(std::move(model_stem)) {
+    std::error_code ec;
+    fs::create_directories(directory_, ec);
+    if (!fs::is_directory(directory_))
+        throw std::runtime_error("cannot create the output directory " + directory_ + ": " + ec.message());
+    // Results of an earlier run in the same directory would mix with these.
+    for (const auto& entry : fs::directory_iterator(directory_)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind(stem_ + "_", 0) == 0 && entry.path().extension() == ".vtu") fs::remove(entry.path(), ec);
+    }
+    const std::string history = (fs::path(directory_) / "history.csv").string();
+    history_.open(history, std::ios::trunc);
+    if (!history_) throw std::runtime_error("cannot write " + history);
+    history_ << std::setprecision(10);
+}
+
+void RunOutput::save_step(const Simulation& sim) {
+    const SimulationState& s = sim.state();
+    const Mesh& mesh = sim.mesh();
+    VtuFields fields;
+    VtuField displacement{"displacement", 3, {}}, velocity{"velocity", 3, {}};
+    displacement.values.reserve(3 * mesh.nodes.size());
+    velocity.values.reserve(3 * mesh.nodes.size());
+    for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+        displacement.values.insert(displacement.values.end(), {s.displacement[2 * i], s.displacement[2 * i + 1], 0.0});
+        velocity.values.insert(velocity.values.end(), {s.velocity[2 * i], s.velocity[2 * i + 1], 0.0});
+    }
+    // VTK's symmetric tensor order: xx, yy, zz, xy, yz, xz.
+    VtuField stress{"stress", 6, {}};
+    stress.values.reserve(6 * s.stress.size());
+    for (std::size_t e = 0; e < s.stress.size(); ++e)
+        stress.values.insert(stress.values.end(), {s.stress[e][0], s.stress[e][1], s.stress_zz[e], s.stress[e][2], 0.0, 0.0});
+    fields.point_data = {std::move(displacement), std::move(velocity)};
+    fields.cell_data = {std::move(stress)};
+
+    std::ostringstream name;
+    name << stem_ << "_" << std::setw(6) << std::setfill('0') << s.step << ".vtu";
+    write_vtu((fs::path(directory_) / name.str()).string(), mesh, fields);
+    saved_.emplace_back(s.time, name.str());
+
+    write_file_atomically((fs::path(directory_) / (stem_ + ".pvd")).string(), [&](std::ostream& out) {
+        out << std::setprecision(12) << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
+        for (const auto& [time, file] : saved_)
+            out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
+        out << "  </Collection>\n</VTKFile>\n";
+    });
+}
+
+void RunOutput::record_history(const Simulation& sim) {
+    const SimulationState& s = sim.state();
+    const auto loads = sim.load_magnitudes();
+    const Model& model = sim.model();
+    std::ostringstream row;
+    row << std::setprecision(10);
+    if (!header_written_) {
+        row << "step,time";
+        for (const auto& [name, value] : loads) row << ",load:" << name;
+        for (const MeasurementPoint& m : model.measurement_points) row << "," << m.name << ":ux," << m.name << ":uy";
+        row << "\n";
+        header_written_ = true;
+    }
+    row << s.step << "," << s.time;
+    for (const auto& [name, value] : loads) row << "," << value;
+    for (int node : sim.boundary_conditions().measurement_nodes)
+        row << "," << s.displacement[2 * node] << "," << s.displacement[2 * node + 1];
+    row << "\n";
+    // One write and a flush per row: a run that stops leaves whole rows only.
+    history_ << row.str() << std::flush;
+}
+
+void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std::string& message) {
+    nlohmann::json j;
+    j["status"] = status_name(status);
+    j["message"] = message;
+    j["steps"] = sim ? sim->state().step : 0;
+    j["time"] = sim ? sim->state().time : 0.0;
+    j["saved_steps"] = saved_steps();
+    if (sim) {
+        const RunTimings& t = sim->timings();
+        j["timing"] = {{"assembly", t.assembly}, {"factorization", t.factorization}, {"solve", t.solve},
+                       {"contact", t.contact},   {"plasticity", t.plasticity},       {"total", t.total}};
+        j["factorizations"] = t.factorizations;
+        j["symbolic_analyses"] = t.symbolic_analyses;
+        j["model"] = {{"name", sim->model().name}, {"nodes", sim->mesh().nodes.size()},
+                      {"elements", sim->mesh().triangles.size()}, {"blocks", sim->mesh().block_count()}};
+    }
+    write_file_atomically((fs::path(directory_) / "summary.json").string(),
+                          [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+}
+
+}  // namespace mcdda

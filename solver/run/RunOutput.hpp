@@ -1,0 +1,48 @@
+#pragma once
+/// \file RunOutput.hpp
+/// The files of a run, kept valid at every moment so that a run that stops (finished, collapsed,
+/// failed or cancelled) leaves readable results up to its last good step:
+///   DIR/<model>.pvd            ParaView collection of the saved steps (rewritten atomically)
+///   DIR/<model>_NNNNNN.vtu     point data displacement, velocity; cell data stress, block, material
+///   DIR/history.csv            one row per step: step, time, load:<name>, <point>:ux, <point>:uy
+///   DIR/summary.json           status, message, steps, time, timing breakdown
+
+#include "run/Simulation.hpp"
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mcdda {
+
+enum class RunStatus { Running, Completed, Collapsed, Failed, Cancelled };
+
+const char* status_name(RunStatus s);
+
+class RunOutput {
+public:
+    /// Creates DIR (and parents); throws std::runtime_error when it cannot.
+    RunOutput(std::string directory, std::string model_stem);
+
+    /// Writes the state as a saved step and adds it to the .pvd collection.
+    void save_step(const Simulation& simulation);
+
+    /// Appends the history row of the current step (writes the header first).
+    void record_history(const Simulation& simulation);
+
+    /// Writes summary.json.
+    void write_summary(const Simulation* simulation, RunStatus status, const std::string& message);
+
+    const std::string& directory() const { return directory_; }
+    int saved_steps() const { return static_cast<int>(saved_.size()); }
+
+private:
+    std::string directory_;
+    std::string stem_;
+    std::vector<std::pair<double, std::string>> saved_;  ///< (time, file name)
+    std::ofstream history_;
+    bool header_written_ = false;
+};
+
+}  // namespace mcdda

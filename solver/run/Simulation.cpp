@@ -1,0 +1,302 @@
+#include "run/Simulation.hpp"
+
+#include "contact/ContactDetection.hpp"
+#include "contact/ContactLaw.hpp"
+#include "fem/PlaneStrain.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace mcdda {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+constexpr int max_time_step_cuts = 30;
+
+/// Key of a contact's coupling group, to notice when the pattern must change.
+long long group_key(const ContactKinematics& k) {
+    return (static_cast<long long>(k.nodes[0]) << 40) ^ (static_cast<long long>(k.nodes[1]) << 20) ^ k.nodes[2];
+}
+
+}  // namespace
+
+void initial_stresses(const Model& model, const Mesh& mesh, std::vector<Eigen::Vector3d>& stress,
+                      std::vector<double>& stress_zz) {
+    const std::size_t n = mesh.triangles.size();
+    stress.assign(n, Eigen::Vector3d::Zero());
+    stress_zz.assign(n, 0.0);
+    const InitialStress& s = model.initial_stress;
+    const double g = std::hypot(model.gravity.x, model.gravity.y);
+    for (std::size_t e = 0; e < n; ++e) {
+        const Material& m = model.materials[mesh.triangle_material[e]];
+        Eigen::Vector3d sigma = Eigen::Vector3d::Zero();
+        if (s.kind == InitialStress::Kind::Uniform) {
+            sigma = Eigen::Vector3d(s.stress[0], s.stress[1], s.stress[2]);
+        } else if (s.kind == InitialStress::Kind::Gravity) {
+            const auto& t = mesh.triangles[e];
+            const double y = (mesh.nodes[t[0]].y + mesh.nodes[t[1]].y + mesh.nodes[t[2]].y) / 3.0;
+            const double vertical = m.density * g * std::max(0.0, s.surface_y - y);  // compressive magnitude
+            sigma = Eigen::Vector3d(-s.k0 * vertical, -vertical, 0.0);
+        }
+        stress[e] = sigma;
+        // Plane strain: the out-of-plane stress that keeps εzz = 0 for this in-plane state.
+        stress_zz[e] = m.poisson_ratio * (sigma[0] + sigma[1]);
+    }
+}
+
+Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
+    if (mesh_.triangles.empty()) throw std::runtime_error("the model has no mesh");
+    topology_ = build_topology(mesh_, p.blocks);
+    std::vector<Diagnostic> diagnostics;
+    bc_ = locate_boundary_conditions(model_, mesh_, topology_, diagnostics);
+    if (has_errors(diagnostics)) {
+        std::string text;
+        for (const Diagnostic& d : diagnostics)
+            if (d.severity == Diagnostic::Severity::Error) text += (text.empty() ? "" : "; ") + format_diagnostic(d);
+        throw std::runtime_error(text);
+    }
+    double stiffest = 0.0;
+    for (const Material& m : model_.materials) {
+        elasticity_.push_back(plane_strain_elasticity(m.young_modulus, m.poisson_ratio));
+        stiffest = std::max(stiffest, m.young_modulus);
+    }
+    // DDA's usual penalty: a few tens of times the stiffest Young's modulus (unit thickness).
+    penalty_ = model_.analysis.penalty > 0.0 ? model_.analysis.penalty : 20.0 * stiffest;
+    displacement_limit_ = model_.analysis.max_displacement_ratio * topology_.model_size;
+
+    const std::size_t n = mesh_.nodes.size();
+    state_.nodes = mesh_.nodes;
+    state_.displacement = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
+    state_.velocity = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
+    state_.time_step = model_.analysis.time_step;
+    initial_stresses(model_, mesh_, state_.stress, state_.stress_zz);
+}
+
+std::vector<std::pair<std::string, double>> Simulation::load_magnitudes() const {
+    std::vector<std::pair<std::string, double>> out;
+    for (const PointLoad& l : model_.point_loads)
+        out.emplace_back(l.name, std::hypot(l.force.x, l.force.y) * load_factor(model_, l.table, state_.step, state_.time));
+    for (const EdgePressure& l : model_.edge_pressures)
+        out.emplace_back(l.name, l.pressure * load_factor(model_, l.table, state_.step, state_.time));
+    return out;
+}
+
+void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts) {
+    std::vector<long long> keys;
+    std::vector<ContactKinematics> kin;
+    keys.reserve(contacts.size());
+    for (const Contact& c : contacts) {
+        const BoundaryEdge& e = topology_.edges[c.edge];
+        ContactKinematics k;
+        k.nodes[0] = c.node;
+        k.nodes[1] = e.from;
+        k.nodes[2] = e.to;
+        keys.push_back(group_key(k));
+    }
+    if (system_.group_count() == static_cast<int>(mesh_.triangles.size() + contacts.size()) && keys == pattern_contacts_)
+        return;
+    std::vector<CouplingGroup> groups;
+    groups.reserve(mesh_.triangles.size() + contacts.size());
+    auto group_of = [&](const int* nodes) {
+        CouplingGroup g;
+        g.size = 6;
+        for (int i = 0; i < 3; ++i)
+            for (int dir = 0; dir < 2; ++dir) g.equation[2 * i + dir] = bc_.equation[2 * nodes[i] + dir];
+        return g;
+    };
+    for (const auto& t : mesh_.triangles) groups.push_back(group_of(t.data()));
+    for (const Contact& c : contacts) {
+        const BoundaryEdge& e = topology_.edges[c.edge];
+        const int nodes[3] = {c.node, e.from, e.to};
+        groups.push_back(group_of(nodes));
+    }
+    system_.set_pattern(bc_.equation_count, groups);
+    pattern_contacts_ = std::move(keys);
+}
+
+Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, double dt, std::vector<Contact>& contacts,
+                                             int& iterations) {
+    const auto start_assembly = Clock::now();
+    rebuild_pattern_if_needed(contacts);
+    const int elements = static_cast<int>(mesh_.triangles.size());
+    const Eigen::Index dofs = state_.displacement.size();
+
+    // Element part: stiffness, inertia and the out-of-balance force of the accumulated stress.
+    // It does not change during the open–close iterations, so it is assembled once per step.
+    system_.clear_values();
+    Eigen::VectorXd base_force = external;
+    const double inertia = 2.0 / (dt * dt);
+    const bool carry_velocity = model_.analysis.kind == AnalysisSettings::Kind::Dynamic;
+    for (int e = 0; e < elements; ++e) {
+        const auto& t = mesh_.triangles[e];
+        const TriangleShape s = triangle_shape(state_.nodes[t[0]], state_.nodes[t[1]], state_.nodes[t[2]]);
+        const Material& m = model_.materials[mesh_.triangle_material[e]];
+        Matrix6 k = s.area * s.B.transpose() * elasticity_[mesh_.triangle_material[e]] * s.B;
+        const Vector6 internal = s.area * s.B.transpose() * state_.stress[e];
+        const double mass = m.density * s.area;
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                for (int dir = 0; dir < 2; ++dir) k(2 * a + dir, 2 * b + dir) += inertia * mass * consistent_mass_factor(a, b);
+        system_.add(e, k.data());
+        for (int a = 0; a < 3; ++a)
+            for (int dir = 0; dir < 2; ++dir) {
+                double f = -internal[2 * a + dir];
+                if (carry_velocity)
+                    for (int b = 0; b < 3; ++b)
+                        f += 2.0 / dt * mass * consistent_mass_factor(a, b) * state_.velocity[2 * t[b] + dir];
+                base_force[2 * t[a] + dir] += f;
+            }
+    }
+    system_.save_values(element_values_);
+    timings_.assembly += seconds_since(start_assembly);
+
+    const auto start_contact = Clock::now();
+    std::vector<ContactKinematics> kinematics;
+    std::vector<ContactProperties> properties;
+    kinematics.reserve(contacts.size());
+    properties.reserve(contacts.size());
+    for (const Contact& c : contacts) {
+        kinematics.push_back(contact_kinematics(c, state_.nodes, topology_));
+        properties.push_back(contact_properties(c, kinematics.back(), model_, topology_, penalty_));
+    }
+    timings_.contact += seconds_since(start_contact);
+
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(dofs);
+    Eigen::VectorXd rhs(bc_.equation_count);
+    const int max_iterations = model_.analysis.max_open_close_iterations;
+    for (iterations = 1; iterations <= max_iterations; ++iterations) {
+        const auto t0 = Clock::now();
+        system_.restore_values(element_values_);
+        Eigen::VectorXd force = base_force;
+        Matrix6 kc;
+        Vector6 fc;
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            if (contacts[i].state == ContactState::Open) continue;
+            contact_terms(contacts[i], kinematics[i], properties[i], kc, fc);
+            system_.add(elements + static_cast<int>(i), kc.data());
+            for (int a = 0; a < 3; ++a)
+                for (int dir = 0; dir < 2; ++dir) force[2 * kinematics[i].nodes[a] + dir] += fc[2 * a + dir];
+        }
+        for (Eigen::Index dof = 0; dof < dofs; ++dof)
+            if (bc_.equation[dof] >= 0) rhs[bc_.equation[dof]] = force[dof];
+        timings_.assembly += seconds_since(t0);
+
+        const auto t1 = Clock::now();
+        system_.factorize();
+        timings_.factorization += seconds_since(t1);
+        const auto t2 = Clock::now();
+        const Eigen::VectorXd solution = system_.solve(rhs);
+        timings_.solve += seconds_since(t2);
+        for (Eigen::Index dof = 0; dof < dofs; ++dof)
+            d[dof] = bc_.equation[dof] >= 0 ? solution[bc_.equation[dof]] : 0.0;
+
+        // (Issue 4: the plastic loop runs here, re-solving with the same factor.)
+
+        const auto t3 = Clock::now();
+        int changes = 0;
+        for (std::size_t i = 0; i < contacts.size(); ++i) {
+            Vector6 local;
+            for (int a = 0; a < 3; ++a)
+                for (int dir = 0; dir < 2; ++dir) local[2 * a + dir] = d[2 * kinematics[i].nodes[a] + dir];
+            changes += update_contact_state(contacts[i], kinematics[i], properties[i], local);
+        }
+        timings_.contact += seconds_since(t3);
+        if (changes == 0) return d;
+    }
+    iterations = max_iterations + 1;  // not settled
+    return d;
+}
+
+void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts) {
+    // Stresses from the strain increment on the start-of-step geometry (updated Lagrangian).
+    for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
+        const auto& t = mesh_.triangles[e];
+        const TriangleShape s = triangle_shape(state_.nodes[t[0]], state_.nodes[t[1]], state_.nodes[t[2]]);
+        Vector6 de;
+        for (int a = 0; a < 3; ++a)
+            for (int dir = 0; dir < 2; ++dir) de[2 * a + dir] = d[2 * t[a] + dir];
+        const Eigen::Vector3d increment = elasticity_[mesh_.triangle_material[e]] * (s.B * de);
+        state_.stress[e] += increment;
+        state_.stress_zz[e] += model_.materials[mesh_.triangle_material[e]].poisson_ratio * (increment[0] + increment[1]);
+    }
+    state_.contacts = contacts;
+    for (Contact& c : state_.contacts) {
+        const ContactKinematics k = contact_kinematics(c, state_.nodes, topology_);
+        Vector6 local;
+        for (int a = 0; a < 3; ++a)
+            for (int dir = 0; dir < 2; ++dir) local[2 * a + dir] = d[2 * k.nodes[a] + dir];
+        commit_contact(c, k, local);
+    }
+    for (std::size_t i = 0; i < state_.nodes.size(); ++i) {
+        state_.nodes[i].x += d[2 * i];
+        state_.nodes[i].y += d[2 * i + 1];
+    }
+    state_.displacement += d;
+    if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic)
+        state_.velocity = model_.analysis.dynamic_ratio * (2.0 / dt * d - state_.velocity);
+    else
+        state_.velocity.setZero();  // static: kinetic damping, velocities reset every step
+    state_.step += 1;
+    state_.time += dt;
+}
+
+StepReport Simulation::advance() {
+    const auto start = Clock::now();
+    StepReport report;
+    const double largest_step = model_.analysis.time_step;
+    for (int cut = 0; cut <= max_time_step_cuts; ++cut) {
+        const double dt = state_.time_step;
+        const auto t0 = Clock::now();
+        std::vector<Contact> contacts =
+            detect_contacts(state_.nodes, mesh_, topology_, 2.5 * displacement_limit_, state_.contacts);
+        timings_.contact += seconds_since(t0);
+        const Eigen::VectorXd external =
+            external_forces(model_, mesh_, state_.nodes, topology_, bc_, state_.step + 1, state_.time + dt);
+        int iterations = 0;
+        const Eigen::VectorXd d = solve_increments(external, dt, contacts, iterations);
+        timings_.factorizations = system_.factorizations();
+        timings_.symbolic_analyses = system_.symbolic_analyses();
+        if (!d.allFinite()) throw std::runtime_error("the solution diverged (non-finite displacements)");
+        double largest = 0.0;
+        for (Eigen::Index i = 0; i + 1 < d.size(); i += 2) largest = std::max(largest, std::hypot(d[i], d[i + 1]));
+        const bool settled = iterations <= model_.analysis.max_open_close_iterations;
+        if (largest > displacement_limit_ || !settled) {
+            // Too large a step, or contacts that do not settle: a smaller Δt (Shi).
+            const double factor = settled ? std::clamp(0.9 * std::sqrt(displacement_limit_ / largest), 0.1, 0.9) : 0.5;
+            state_.time_step = dt * factor;
+            report.time_step_cuts++;
+            if (state_.time_step < 1e-9 * largest_step)
+                throw std::runtime_error("the time step fell below 1e-9 of its set value at step " +
+                                         std::to_string(state_.step + 1) + " (contacts do not settle)");
+            continue;
+        }
+        commit(d, dt, contacts);
+        report.step = state_.step;
+        report.time = state_.time;
+        report.time_step = dt;
+        report.open_close_iterations = iterations;
+        report.max_increment = largest;
+        for (const Contact& c : state_.contacts) {
+            report.open += c.state == ContactState::Open;
+            report.sliding += c.state == ContactState::Sliding;
+            report.locked += c.state == ContactState::Locked;
+        }
+        // Grow Δt back towards its set value while steps are comfortably small.
+        if (largest < 0.5 * displacement_limit_ && iterations <= 2)
+            state_.time_step = std::min(largest_step, dt * 1.25);
+        timings_.total += seconds_since(start);
+        return report;
+    }
+    throw std::runtime_error("step " + std::to_string(state_.step + 1) + " could not be completed after " +
+                             std::to_string(max_time_step_cuts) + " cuts of the time step");
+}
+
+}  // namespace mcdda

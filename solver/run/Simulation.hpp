@@ -1,0 +1,103 @@
+#pragma once
+/// \file Simulation.hpp
+/// The MC-DDA time-stepping driver. One call of advance() is one accepted time step, following
+/// the paper's Table 1:
+///   1. contact detection (candidates carried over with their states)
+///   2. open–close loop:
+///        assemble K = Σ elastic + 2M/Δt² + contact springs; F = loads − ∫Bᵀσ0 + 2Mv0/Δt + contacts
+///        factorise K (CHOLMOD)
+///        solve; [the plastic loop of the next issue nests here: return mapping, body load, re-solve]
+///        check the displacement limit (cut Δt and repeat the step if exceeded)
+///        check every contact; stop when no state changed
+///   3. commit: coordinates += d, stresses += D·B·d, velocities, contact springs.
+
+#include "Preprocess.hpp"
+#include "contact/Contact.hpp"
+#include "fem/BoundaryConditions.hpp"
+#include "fem/MeshTopology.hpp"
+#include "linalg/SymmetricSystem.hpp"
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace mcdda {
+
+/// Seconds spent in each part of the computation, summed over all steps.
+struct RunTimings {
+    double assembly = 0.0, factorization = 0.0, solve = 0.0, contact = 0.0, plasticity = 0.0, total = 0.0;
+    int factorizations = 0;
+    int symbolic_analyses = 0;
+};
+
+/// The evolving state of a run: coordinates, displacements, velocities, stresses, contacts.
+struct SimulationState {
+    int step = 0;            ///< accepted steps so far
+    double time = 0.0;       ///< s
+    double time_step = 0.0;  ///< Δt to try next (s)
+    std::vector<Point2> nodes;          ///< current coordinates (m)
+    Eigen::VectorXd displacement;       ///< total since the start (m), 2 per node
+    Eigen::VectorXd velocity;           ///< (m/s), 2 per node
+    std::vector<Eigen::Vector3d> stress;  ///< per element (σxx, σyy, τxy), Pa, tension positive
+    std::vector<double> stress_zz;        ///< per element σzz (plane strain), Pa
+    std::vector<Contact> contacts;
+};
+
+/// What one accepted step did.
+struct StepReport {
+    int step = 0;
+    double time = 0.0, time_step = 0.0;
+    int open_close_iterations = 0;
+    int time_step_cuts = 0;
+    int open = 0, sliding = 0, locked = 0;
+    double max_increment = 0.0;  ///< largest nodal displacement increment (m)
+};
+
+class Simulation {
+public:
+    /// Sets up a run of a preprocessed (meshed) model. Throws std::runtime_error naming the
+    /// problem when the model cannot be solved (supports that catch no node, …).
+    explicit Simulation(const Preprocessed& model);
+
+    /// Advances one accepted step. Throws std::runtime_error when the step cannot be completed
+    /// (Δt cut below its floor, a singular matrix, a diverging solution); the state then stays
+    /// that of the last accepted step.
+    StepReport advance();
+
+    const SimulationState& state() const { return state_; }
+    const RunTimings& timings() const { return timings_; }
+    const Model& model() const { return model_; }
+    const Mesh& mesh() const { return mesh_; }
+    const MeshTopology& topology() const { return topology_; }
+    const BoundaryConditions& boundary_conditions() const { return bc_; }
+    double penalty() const { return penalty_; }
+
+    /// Current magnitude of each point load and edge pressure, in model order.
+    std::vector<std::pair<std::string, double>> load_magnitudes() const;
+
+private:
+    Eigen::VectorXd solve_increments(const Eigen::VectorXd& external, double dt, std::vector<Contact>& contacts,
+                                     int& iterations);
+    void rebuild_pattern_if_needed(const std::vector<Contact>& contacts);
+    void commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts);
+
+    Model model_;
+    Mesh mesh_;
+    MeshTopology topology_;
+    BoundaryConditions bc_;
+    std::vector<Eigen::Matrix3d> elasticity_;  ///< per material
+    double penalty_ = 0.0;                     ///< contact spring (N/m)
+    double displacement_limit_ = 0.0;          ///< largest increment per step (m)
+    SimulationState state_;
+    SymmetricSystem system_;
+    std::vector<long long> pattern_contacts_;
+    std::vector<double> element_values_;       ///< matrix values of elements and inertia, per step  ///< the contact groups the pattern was built for
+    RunTimings timings_;
+};
+
+/// Initial stress of every element from the model's in-situ stress (tension positive).
+void initial_stresses(const Model& model, const Mesh& mesh, std::vector<Eigen::Vector3d>& stress,
+                      std::vector<double>& stress_zz);
+
+}  // namespace mcdda

@@ -1,0 +1,323 @@
+// Off-screen pictures of a model: rendered to PNG, read back, and checked pixel by pixel.
+// Needs an X server (run under xvfb-run; ctest does).
+
+#include "TunnelModel.hpp"
+#include "view/ModelScene.hpp"
+#include "view/OffscreenRender.hpp"
+#include "view/Palette.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace fs = std::filesystem;
+using namespace mcdda;
+using namespace mcdda::guitest;
+
+namespace {
+
+constexpr int width = 800;
+constexpr int height = 600;
+
+using Rgb8 = std::array<int, 3>;
+
+Rgb8 to_bytes(const view::Rgb& c)
+{
+    return {static_cast<int>(std::lround(c[0] * 255)), static_cast<int>(std::lround(c[1] * 255)),
+            static_cast<int>(std::lround(c[2] * 255))};
+}
+
+bool near(const Rgb8& a, const Rgb8& b, int tolerance = 6)
+{
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)]) > tolerance) return false;
+    return true;
+}
+
+/// A PNG read back, addressed like VTK's display: x right, y up, (0, 0) bottom left.
+class Picture {
+public:
+    explicit Picture(const std::string& path)
+    {
+        reader_->SetFileName(path.c_str());
+        reader_->Update();
+        image_ = reader_->GetOutput();
+        image_->GetDimensions(dims_);
+    }
+    int width() const { return dims_[0]; }
+    int height() const { return dims_[1]; }
+    int components() const { return image_->GetNumberOfScalarComponents(); }
+    Rgb8 at(int x, int y) const
+    {
+        Rgb8 c{};
+        for (int i = 0; i < 3; ++i)
+            c[static_cast<std::size_t>(i)] = static_cast<int>(image_->GetScalarComponentAsDouble(x, y, 0, i));
+        return c;
+    }
+    /// Pixels in the (2r+1)² window around (x, y) for which `test` holds.
+    int count_around(int x, int y, int r, const std::function<bool(const Rgb8&)>& test) const
+    {
+        int n = 0;
+        for (int j = y - r; j <= y + r; ++j)
+            for (int i = x - r; i <= x + r; ++i)
+                if (i >= 0 && j >= 0 && i < width() && j < height() && test(at(i, j))) ++n;
+        return n;
+    }
+    /// Pixels in [x0, x1) × [y0, y1) for which `test` holds.
+    int count_in(int x0, int y0, int x1, int y1, const std::function<bool(const Rgb8&)>& test) const
+    {
+        int n = 0;
+        for (int j = std::max(0, y0); j < std::min(height(), y1); ++j)
+            for (int i = std::max(0, x0); i < std::min(width(), x1); ++i)
+                if (test(at(i, j))) ++n;
+        return n;
+    }
+
+private:
+    vtkNew<vtkPNGReader> reader_;
+    vtkImageData* image_ = nullptr;
+    int dims_[3] = {0, 0, 0};
+};
+
+/// Where render_png puts model points: the same scene in a window of the same size and DPI
+/// gives the same camera.
+class Projection {
+public:
+    Projection(const Preprocessed& p, const view::SceneOptions& options)
+    {
+        window_->SetOffScreenRendering(1);
+        window_->SetSize(width, height);
+        window_->SetDPI(view::png_dpi(width, height));
+        window_->AddRenderer(renderer_);
+        view::build_model_scene(renderer_, p, options);
+    }
+    std::array<int, 2> pixel(Point2 q)
+    {
+        renderer_->SetWorldPoint(q.x, q.y, 0.0, 1.0);
+        renderer_->WorldToDisplay();
+        double d[3];
+        renderer_->GetDisplayPoint(d);
+        return {static_cast<int>(std::lround(d[0])), static_cast<int>(std::lround(d[1]))};
+    }
+
+private:
+    vtkNew<vtkRenderWindow> window_;
+    vtkNew<vtkRenderer> renderer_;
+};
+
+std::string output_path(const std::string& name) { return (fs::path(MCDDA_TEST_OUTPUT_DIR) / name).string(); }
+
+class RenderPng : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        if (std::getenv("DISPLAY") == nullptr) GTEST_SKIP() << "no X display; run under xvfb-run";
+    }
+};
+
+const Rgb8 background = to_bytes(view::palette::background);
+const Rgb8 rock = to_bytes(view::material_color(0));
+
+bool is_dark(const Rgb8& c) { return c[0] < 110 && c[1] < 110 && c[2] < 110; }
+/// Joint red, not the orange of pressures (g ≈ 84) or the purple of point loads.
+bool is_red(const Rgb8& c) { return c[0] > 170 && c[1] < 60 && c[2] < 60; }
+
+/// Checks shared by the meshed, cut-only and model-only pictures.
+void expect_model_picture(const Preprocessed& p, const std::string& path, bool meshed)
+{
+    const view::SceneOptions options;
+    ASSERT_TRUE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+    Picture picture(path);
+    ASSERT_EQ(picture.width(), width);
+    ASSERT_EQ(picture.height(), height);
+    ASSERT_GE(picture.components(), 3);
+
+    for (auto [x, y] : {std::array<int, 2>{2, 2}, {width - 3, 2}, {2, height - 3}, {width - 3, height - 3}})
+        EXPECT_TRUE(near(picture.at(x, y), background)) << "corner " << x << "," << y;
+
+    Projection projection(p, options);
+    for (const Point2& q : rock_samples()) {
+        const auto [x, y] = projection.pixel(q);
+        const int matches = picture.count_around(x, y, 3, [](const Rgb8& c) { return near(c, rock); });
+        EXPECT_GE(matches, 20) << "rock colour expected around model point (" << q.x << ", " << q.y << ")";
+    }
+    for (const Point2& q : opening_samples()) {
+        const auto [x, y] = projection.pixel(q);
+        const int matches = picture.count_around(x, y, 3, [](const Rgb8& c) { return near(c, background); });
+        EXPECT_GE(matches, 45) << "background expected in the opening at (" << q.x << ", " << q.y << ")";
+    }
+
+    // Within the square: outlines (and mesh edges) are dark, the joint is red.
+    const auto lo = projection.pixel({0, 0});
+    const auto hi = projection.pixel({10, 10});
+    const int dark = picture.count_in(lo[0], lo[1], hi[0], hi[1], is_dark);
+    const int red = picture.count_in(lo[0], lo[1], hi[0], hi[1], is_red);
+    const int square = (hi[0] - lo[0]) * (hi[1] - lo[1]);
+    EXPECT_GT(square, 100 * 100) << "the model should cover a good part of the picture";
+    EXPECT_GT(dark, meshed ? square / 40 : square / 200) << "outline/mesh pixels";
+    EXPECT_GT(red, square / 400) << "joint pixels";
+
+    // The legend, right of the model: white box with the material's swatch.
+    const int swatch = picture.count_in(hi[0] + 5, 0, width, height, [](const Rgb8& c) { return near(c, rock); });
+    EXPECT_GT(swatch, 100) << "material swatch in the legend";
+}
+
+}  // namespace
+
+TEST_F(RenderPng, MeshedModel)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    ASSERT_TRUE(p.ok);
+    ASSERT_FALSE(p.mesh.triangles.empty());
+    const std::string path = output_path("render_meshed.png");
+    fs::remove(path);
+    view::render_png(p, {}, width, height, path);
+    expect_model_picture(p, path, true);
+}
+
+TEST_F(RenderPng, BlocksWithoutMesh)
+{
+    const Preprocessed p = preprocess_model(tunnel_model(), PreprocessStage::Cut);
+    ASSERT_TRUE(p.ok);
+    ASSERT_TRUE(p.mesh.triangles.empty());
+    ASSERT_FALSE(p.blocks.empty());
+    const std::string path = output_path("render_blocks.png");
+    view::render_png(p, {}, width, height, path);
+    expect_model_picture(p, path, false);
+}
+
+TEST_F(RenderPng, ModelGeometryOnly)
+{
+    Preprocessed p;
+    p.model = tunnel_model();
+    const std::string path = output_path("render_geometry.png");
+    view::render_png(p, {}, width, height, path);
+    expect_model_picture(p, path, false);
+}
+
+TEST_F(RenderPng, MeshHiddenLeavesFewerDarkPixels)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    ASSERT_TRUE(p.ok);
+    view::SceneOptions plain;
+    plain.show_mesh = false;
+    const std::string with = output_path("render_mesh_on.png");
+    const std::string without = output_path("render_mesh_off.png");
+    view::render_png(p, {}, width, height, with);
+    view::render_png(p, plain, width, height, without);
+    Picture a(with), b(without);
+    Projection projection(p, {});
+    const auto lo = projection.pixel({0, 0});
+    const auto hi = projection.pixel({10, 10});
+    EXPECT_GT(a.count_in(lo[0], lo[1], hi[0], hi[1], is_dark), 2 * b.count_in(lo[0], lo[1], hi[0], hi[1], is_dark));
+}
+
+TEST_F(RenderPng, EmptyModelGivesBackground)
+{
+    const std::string path = output_path("render_empty.png");
+    view::render_png(Preprocessed{}, {}, 320, 240, path);
+    Picture picture(path);
+    ASSERT_EQ(picture.width(), 320);
+    ASSERT_EQ(picture.height(), 240);
+    EXPECT_EQ(picture.count_in(0, 0, 320, 240, [](const Rgb8& c) { return near(c, background); }), 320 * 240);
+}
+
+TEST_F(RenderPng, LargePictureKeepsProportions)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    const std::string path = output_path("render_large.png");
+    view::render_png(p, {}, 1800, 1200, path);
+    Picture picture(path);
+    EXPECT_EQ(picture.width(), 1800);
+    EXPECT_EQ(picture.height(), 1200);
+    EXPECT_GT(picture.count_in(0, 0, 1800, 1200, [](const Rgb8& c) { return near(c, rock); }), 1800 * 1200 / 5);
+}
+
+TEST_F(RenderPng, BadRequestsThrowAndLeaveNoFile)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    EXPECT_THROW(view::render_png(p, {}, 0, 100, output_path("bad.png")), std::runtime_error);
+    EXPECT_THROW(view::render_png(p, {}, 100, -5, output_path("bad.png")), std::runtime_error);
+    EXPECT_THROW(view::render_png(p, {}, 100, 100, ""), std::runtime_error);
+    const std::string missing = output_path("no/such/folder/picture.png");
+    try {
+        view::render_png(p, {}, 100, 100, missing);
+        ADD_FAILURE() << "expected an exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(missing));
+    EXPECT_FALSE(fs::exists(output_path("bad.png")));
+}
+
+TEST_F(RenderPng, NoDisplayIsAClearError)
+{
+    const std::string display = std::getenv("DISPLAY");
+    unsetenv("DISPLAY");
+    try {
+        view::render_png(Preprocessed{}, {}, 100, 100, output_path("nodisplay.png"));
+        ADD_FAILURE() << "expected an exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("DISPLAY"), std::string::npos) << e.what();
+    }
+    setenv("DISPLAY", ":987", 1);  // nobody listens there
+    try {
+        view::render_png(Preprocessed{}, {}, 100, 100, output_path("nodisplay.png"));
+        ADD_FAILURE() << "expected an exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot connect"), std::string::npos) << e.what();
+    }
+    setenv("DISPLAY", display.c_str(), 1);
+    EXPECT_FALSE(fs::exists(output_path("nodisplay.png")));
+}
+
+TEST_F(RenderPng, HiddenJointsLeaveNoRed)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    view::SceneOptions options;
+    options.show_joints = false;
+    const std::string path = output_path("render_no_joints.png");
+    view::render_png(p, options, width, height, path);
+    Picture picture(path);
+    EXPECT_EQ(picture.count_in(0, 0, width, height, is_red), 0);
+}
+
+// Every example model renders to a picture that shows rock, outlines and a legend. The PNGs
+// stay in the build folder as example_<name>.png.
+TEST_F(RenderPng, ExampleModels)
+{
+    const fs::path folder(MCDDA_EXAMPLES_DIR);
+    if (!fs::is_directory(folder)) GTEST_SKIP() << "no examples folder";
+    int rendered = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        if (entry.path().extension() != ".json") continue;
+        SCOPED_TRACE(entry.path().string());
+        const Preprocessed p = preprocess_file(entry.path().string(), {});
+        std::string messages;
+        for (const Diagnostic& d : p.diagnostics) messages += format_diagnostic(d) + "\n";
+        EXPECT_TRUE(p.ok) << messages;
+        const std::string path = output_path("example_" + entry.path().stem().string() + ".png");
+        view::render_png(p, {}, 1200, 800, path);
+        Picture picture(path);
+        ASSERT_EQ(picture.width(), 1200);
+        const int total = 1200 * 800;
+        const int plain = picture.count_in(0, 0, 1200, 800, [](const Rgb8& c) { return near(c, background); });
+        const int dark = picture.count_in(0, 0, 1200, 800, is_dark);
+        EXPECT_LT(plain, total * 9 / 10) << "the model should cover a good part of the picture";
+        EXPECT_GT(dark, total / 200) << "outlines, mesh and legend text";
+        ++rendered;
+    }
+    EXPECT_GT(rendered, 0);
+}
