@@ -12,6 +12,7 @@ Usage:
   mcdda check  MODEL [--set POINTER=VALUE]...
   mcdda mesh   MODEL --out DIR [--profile] [--set POINTER=VALUE]...
   mcdda render MODEL --out FILE.png [--size WxH] [--no-mesh] [--set POINTER=VALUE]...
+  mcdda run    MODEL --out DIR [--profile] [--quiet] [--set POINTER=VALUE]...
   mcdda --help | --version
 
 Commands:
@@ -21,25 +22,29 @@ Commands:
            (cell data: block, material) with the mesh statistics
   render   draw blocks, joints, mesh, supports and loads with a legend into a PNG
            (starts a virtual X server through xvfb-run when DISPLAY is not set)
+  run      run the analysis: DIR/<model>.pvd with one .vtu per saved step
+           (displacement, velocity, stress, block, material), DIR/history.csv and
+           DIR/summary.json (status, timing); Ctrl-C stops after the current step
 
 Options:
   --set POINTER=VALUE  override any field of the model by JSON pointer before it is
                        read, e.g. --set /materials/0/cohesion=3.45e6 (repeatable;
                        VALUE is JSON, or a string when it is not valid JSON)
-  --out PATH           output directory (mesh) or PNG file (render)
+  --out PATH           output directory (mesh, run) or PNG file (render)
   --profile            print a timing breakdown of the stages
   --size WxH           picture size in pixels for render (default 1600x1000)
   --no-mesh            do not draw element edges in render
   --quiet              print errors only
   --help, --version
 
-Exit status: 0 success, 1 the model has errors, 2 bad command line, 3 could not write output.
+Exit status: 0 success, 1 the model has errors, 2 bad command line, 3 could not write
+output, 4 the run failed, 5 the model collapsed, 130 cancelled.
 )";
 }
 
 std::optional<Request> parse_command_line(const std::vector<std::string>& args, std::string& error) {
     Request r;
-    static const std::set<std::string> commands{"check", "mesh", "render"};
+    static const std::set<std::string> commands{"check", "mesh", "render", "run"};
     std::vector<std::string> positional;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -96,7 +101,7 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
     }
     r.command = positional[0];
     if (!commands.count(r.command)) {
-        error = "unknown command \"" + r.command + "\" (expected check, mesh or render)";
+        error = "unknown command \"" + r.command + "\" (expected check, mesh, render or run)";
         return std::nullopt;
     }
     if (positional.size() < 2) {
@@ -108,7 +113,7 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
         return std::nullopt;
     }
     r.model = positional[1];
-    if ((r.command == "mesh" || r.command == "render") && r.out.empty()) {
+    if ((r.command == "mesh" || r.command == "render" || r.command == "run") && r.out.empty()) {
         error = r.command + ": --out is required";
         return std::nullopt;
     }

@@ -6,10 +6,14 @@
 
 namespace mcdda::cli {
 
-enum ExitStatus { exit_ok = 0, exit_model_error = 1, exit_usage = 2, exit_output_error = 3 };
+enum ExitStatus {
+    exit_ok = 0, exit_model_error = 1, exit_usage = 2, exit_output_error = 3,
+    exit_run_failed = 4, exit_collapsed = 5, exit_cancelled = 130
+};
 
 int run_check(const Request& r);
 int run_mesh(const Request& r);
 int run_render(const Request& r);
+int run_run(const Request& r);
 
 }  // namespace mcdda::cli

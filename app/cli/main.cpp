@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     try {
         if (request->command == "check") return run_check(*request);
         if (request->command == "mesh") return run_mesh(*request);
+        if (request->command == "run") return run_run(*request);
         if (request->command == "render") {
             if (!ensure_display(args, error)) {
                 std::cerr << "mcdda render: " << error << "\n";

@@ -44,13 +44,27 @@ private:
 }  // namespace
 
 std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mesh& mesh, const MeshTopology& topology,
-                                     double search_distance, const std::vector<Contact>& previous) {
+                                     double search_distance, const std::vector<Contact>& previous,
+                                     const Eigen::VectorXd& expected_increment, double tolerance) {
     if (topology.edges.empty()) return {};
     double mean_edge = 0.0;
     for (const BoundaryEdge& e : topology.edges)
         mean_edge += std::hypot(nodes[e.to].x - nodes[e.from].x, nodes[e.to].y - nodes[e.from].y);
     mean_edge /= static_cast<double>(topology.edges.size());
     const EdgeGrid grid(nodes, topology, std::max(2.0 * mean_edge, 2.0 * search_distance), search_distance);
+
+    // Outward normal of every boundary node: the mean of its two edges' normals (the block lies
+    // left of its edges, so (dy, −dx) points out).
+    std::vector<Point2> node_normal(nodes.size(), Point2{0.0, 0.0});
+    for (const BoundaryEdge& e : topology.edges) {
+        const double dx = nodes[e.to].x - nodes[e.from].x, dy = nodes[e.to].y - nodes[e.from].y;
+        const double l = std::hypot(dx, dy);
+        if (l == 0.0) continue;
+        for (int n : {e.from, e.to}) {
+            node_normal[n].x += dy / l;
+            node_normal[n].y -= dx / l;
+        }
+    }
 
     std::map<std::pair<int, int>, const Contact*> before;  // (node, edge block) → contact
     for (const Contact& c : previous) before[{c.node, c.edge_block}] = &c;
@@ -71,6 +85,19 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
             if (distance > search_distance) continue;
             const double gap = signed_gap(nodes[node], a, b);
             if (gap < -search_distance) continue;  // deep behind the edge: another edge is meant
+            // Only a vertex that projects onto the edge can touch it: beyond its ends the edge's
+            // line is no surface (a node of the same plane just past a block's corner would
+            // otherwise lock against the block's extended face).
+            const double len2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+            const double xi = len2 > 0.0 ? ((nodes[node].x - a.x) * (b.x - a.x) + (nodes[node].y - a.y) * (b.y - a.y)) / len2 : 0.0;
+            if (xi < -1e-6 || xi > 1.0 + 1e-6) continue;
+            // Shi's entrance rule, simplified: a vertex can only enter an edge it faces. A vertex
+            // on a flat or convex stretch of boundary next to another block's corner must not
+            // take that block's side face (it would resist sliding along the joint).
+            const double l = std::hypot(b.x - a.x, b.y - a.y);
+            const Point2 vn = node_normal[node];
+            const double vl = std::hypot(vn.x, vn.y);
+            if (l > 0.0 && vl > 0.0 && ((b.y - a.y) * vn.x - (b.x - a.x) * vn.y) / (l * vl) > -0.25) continue;
             const auto score = std::make_pair(distance, -gap);
             auto it = best.find(edge.block);
             if (it == best.end() || score < it->second.first) best[edge.block] = {score, e};
@@ -91,8 +118,22 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
                 c.shear_force = old.shear_force;
             } else {
                 const BoundaryEdge& edge = topology.edges[c.edge];
-                const double gap = signed_gap(nodes[node], nodes[edge.from], nodes[edge.to]);
+                const Point2 a = nodes[edge.from], b = nodes[edge.to], p = nodes[node];
+                const double gap = signed_gap(p, a, b);
                 c.state = gap <= 1e-9 * topology.model_size ? ContactState::Locked : ContactState::Open;
+                if (c.state == ContactState::Locked && expected_increment.size() > 0) {
+                    const double l = std::hypot(b.x - a.x, b.y - a.y);
+                    const double tx = (b.x - a.x) / l, ty = (b.y - a.y) / l;
+                    const double xi = std::clamp(((p.x - a.x) * tx + (p.y - a.y) * ty) / l, 0.0, 1.0);
+                    const auto& u = expected_increment;
+                    const double slip = (u[2 * node] - (1 - xi) * u[2 * edge.from] - xi * u[2 * edge.to]) * tx +
+                                        (u[2 * node + 1] - (1 - xi) * u[2 * edge.from + 1] - xi * u[2 * edge.to + 1]) * ty;
+                    if (std::fabs(slip) > tolerance) {
+                        c.state = ContactState::Sliding;
+                        c.slip = slip > 0 ? 1 : -1;
+                        c.intact = false;
+                    }
+                }
             }
             contacts.push_back(c);
         }

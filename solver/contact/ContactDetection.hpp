@@ -7,17 +7,23 @@
 #include "fem/MeshTopology.hpp"
 #include "mesh/Mesh.hpp"
 
+#include <Eigen/Dense>
+
 #include <vector>
 
 namespace mcdda {
 
 /// Candidates for the current coordinates `nodes`: for every boundary node and every other block
 /// with an edge within `search_distance`, the nearest such edge (ties: the one the node is least
-/// inside of; Shi's entrance rule for vertex–vertex cases reduces to this choice). A candidate
-/// starts locked when touching or penetrating, open otherwise, unless `previous` holds a contact
-/// of the same node and block, whose state it keeps.
+/// inside of) that the vertex faces (the edge's outward normal and the vertex's point against each
+/// other: a simplified form of Shi's entrance rule for vertex–vertex cases) and projects onto.
+/// A contact of the same node and block in `previous` keeps its state. A new one starts open
+/// when apart; when touching it starts sliding if the expected slip over the step
+/// (`expected_increment`, velocity × Δt; empty in static analysis) exceeds `tolerance`, locked
+/// otherwise: a node that a sliding block passes over must not first lock it in place.
 std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mesh& mesh, const MeshTopology& topology,
-                                     double search_distance, const std::vector<Contact>& previous);
+                                     double search_distance, const std::vector<Contact>& previous,
+                                     const Eigen::VectorXd& expected_increment, double tolerance);
 
 /// Signed distance of `p` from the line of edge (a, b), positive on the right (outside the block
 /// lying left of the edge).

@@ -69,41 +69,53 @@ void contact_terms(const Contact& c, const ContactKinematics& k, const ContactPr
     }
 }
 
-bool update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d) {
-    const ContactState before = c.state;
-    const int slip_before = c.slip;
+StateChange update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d,
+                                 double tolerance) {
     c.gap = k.gap + k.normal.dot(d);
     const double slip_increment = k.shear.dot(d);
+    auto change = [&](bool marginal) { return marginal ? StateChange::Marginal : StateChange::Significant; };
     if (c.state == ContactState::Open) {
         c.normal_force = 0.0;
         c.shear_force = 0.0;
-        if (c.gap < 0.0) {
+        if (c.gap >= 0.0) return StateChange::None;
+        // Closing: locked unless the slip over the step already beats friction (a node that a
+        // sliding block runs onto closes sliding).
+        c.shear_spring = 0.0;
+        c.normal_force = -p.normal_stiffness * c.gap;
+        const double limit = c.normal_force * p.tan_friction + p.cohesion_force;
+        c.shear_force = p.shear_stiffness * slip_increment;
+        if (std::fabs(c.shear_force) > limit) {
+            c.state = ContactState::Sliding;
+            c.slip = slip_increment > 0.0 ? 1 : -1;
+            c.shear_force = c.slip * limit;
+        } else {
             c.state = ContactState::Locked;
-            c.shear_spring = 0.0;
         }
-        return c.state != before;
+        return change(-c.gap < tolerance);
     }
     c.normal_force = -p.normal_stiffness * c.gap;
     if (c.normal_force < -p.tensile_force) {  // pulled apart beyond the tensile strength
         c.state = ContactState::Open;
         c.normal_force = c.shear_force = 0.0;
-        return true;
+        return change(c.gap < tolerance);
     }
     const double limit = std::max(0.0, c.normal_force) * p.tan_friction + p.cohesion_force;
     if (c.state == ContactState::Locked) {
         c.shear_force = p.shear_stiffness * (c.shear_spring + slip_increment);
-        if (std::fabs(c.shear_force) > limit) {
-            c.state = ContactState::Sliding;
-            c.slip = c.shear_force > 0.0 ? 1 : -1;
-        }
-    } else {
-        c.shear_force = c.slip * limit;
-        if (slip_increment * c.slip < 0.0) {  // the slip reversed: the contact sticks
-            c.state = ContactState::Locked;
-            c.shear_spring = 0.0;
-        }
+        if (std::fabs(c.shear_force) <= limit) return StateChange::None;
+        c.state = ContactState::Sliding;
+        c.slip = c.shear_force > 0.0 ? 1 : -1;
+        // Judged by force, not displacement: the stiff shear spring turns any excess into a tiny
+        // displacement, yet the solution with it locked is wrong by the whole excess force.
+        return StateChange::Significant;
     }
-    return c.state != before || c.slip != slip_before;
+    c.shear_force = c.slip * limit;
+    if (slip_increment * c.slip >= 0.0) return StateChange::None;
+    // The slip reversed: the contact sticks. Only a reversal at round-off level is marginal:
+    // friction left acting against a reversed slip would drive the block backwards.
+    c.state = ContactState::Locked;
+    c.shear_spring = 0.0;
+    return change(std::fabs(slip_increment) < 1e-3 * tolerance);
 }
 
 void commit_contact(Contact& c, const ContactKinematics& k, const Vector6& d) {

@@ -46,10 +46,21 @@ ContactProperties contact_properties(const Contact& c, const ContactKinematics& 
 void contact_terms(const Contact& c, const ContactKinematics& k, const ContactProperties& p, Matrix6& stiffness,
                    Vector6& force);
 
+/// How much a contact's state changed after a solve.
+enum class StateChange {
+    None,
+    Marginal,     ///< changed, but within the penetration tolerance: no new iteration needed
+    Significant,  ///< the open–close iteration must go on
+};
+
 /// After a solve with increments `d` (the contact's six values): records forces and changes the
 /// state where the springs disagree with it (penetration → close, tension → open, shear beyond
-/// Coulomb → slide, slip reversal → lock). Returns true when the state changed.
-bool update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d);
+/// Coulomb → slide, slip reversal → lock). Opening, closing or sticking decided by a gap,
+/// penetration or slip below `tolerance` (m) is marginal: without this the iteration chatters on
+/// contacts that carry almost nothing, whose gaps flip sign at round-off level (Shi's allowed
+/// penetration plays this role). Starting to slide is always significant.
+StateChange update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d,
+                                 double tolerance);
 
 /// Commits an accepted step: the locked spring's shear displacement is kept, strength lost once
 /// the contact opened or slid.

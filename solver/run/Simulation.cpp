@@ -21,6 +21,14 @@ double seconds_since(Clock::time_point start) {
 
 constexpr int max_time_step_cuts = 30;
 
+// Time integration: Newmark with γ = 0.7, β = (γ + ½)²/4. Shi's DDA scheme (β = ½, γ = 1) does
+// not damp the highest frequencies at all: the velocity of a stiff contact spring flips sign every
+// step for ever, and in a sliding block that chatter reverses the slip and locks contacts. This
+// member damps those frequencies (spectral radius about 0.67 at ωΔt → ∞) and, like every Newmark
+// member, integrates a constant acceleration exactly (the sliding-block solution).
+constexpr double newmark_gamma = 0.7;
+constexpr double newmark_beta = (newmark_gamma + 0.5) * (newmark_gamma + 0.5) / 4.0;
+
 /// Key of a contact's coupling group, to notice when the pattern must change.
 long long group_key(const ContactKinematics& k) {
     return (static_cast<long long>(k.nodes[0]) << 40) ^ (static_cast<long long>(k.nodes[1]) << 20) ^ k.nodes[2];
@@ -68,14 +76,18 @@ Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
         elasticity_.push_back(plane_strain_elasticity(m.young_modulus, m.poisson_ratio));
         stiffest = std::max(stiffest, m.young_modulus);
     }
-    // DDA's usual penalty: a few tens of times the stiffest Young's modulus (unit thickness).
-    penalty_ = model_.analysis.penalty > 0.0 ? model_.analysis.penalty : 20.0 * stiffest;
+    // Automatic penalty: ten times the stiffest Young's modulus (N/m per m thickness), at the low
+    // end of DDA's usual range: stiffer springs only add chatter (docs/penalty-and-time-step.md).
+    penalty_ = model_.analysis.penalty > 0.0 ? model_.analysis.penalty : 10.0 * stiffest;
     displacement_limit_ = model_.analysis.max_displacement_ratio * topology_.model_size;
+    // Shi's allowed penetration: contact changes smaller than this do not prolong the iteration.
+    contact_tolerance_ = 1e-4 * displacement_limit_;
 
     const std::size_t n = mesh_.nodes.size();
     state_.nodes = mesh_.nodes;
     state_.displacement = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
     state_.velocity = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
+    state_.acceleration = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
     state_.time_step = model_.analysis.time_step;
     initial_stresses(model_, mesh_, state_.stress, state_.stress_zz);
 }
@@ -133,7 +145,7 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
     // It does not change during the open–close iterations, so it is assembled once per step.
     system_.clear_values();
     Eigen::VectorXd base_force = external;
-    const double inertia = 2.0 / (dt * dt);
+    const double inertia = 1.0 / (newmark_beta * dt * dt);
     const bool carry_velocity = model_.analysis.kind == AnalysisSettings::Kind::Dynamic;
     for (int e = 0; e < elements; ++e) {
         const auto& t = mesh_.triangles[e];
@@ -150,8 +162,12 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
             for (int dir = 0; dir < 2; ++dir) {
                 double f = -internal[2 * a + dir];
                 if (carry_velocity)
-                    for (int b = 0; b < 3; ++b)
-                        f += 2.0 / dt * mass * consistent_mass_factor(a, b) * state_.velocity[2 * t[b] + dir];
+                    for (int b = 0; b < 3; ++b) {
+                        const int dof = 2 * t[b] + dir;
+                        f += mass * consistent_mass_factor(a, b) *
+                             (state_.velocity[dof] / (newmark_beta * dt) +
+                              (0.5 - newmark_beta) / newmark_beta * state_.acceleration[dof]);
+                    }
                 base_force[2 * t[a] + dir] += f;
             }
     }
@@ -172,16 +188,35 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
     Eigen::VectorXd d = Eigen::VectorXd::Zero(dofs);
     Eigen::VectorXd rhs(bc_.equation_count);
     const int max_iterations = model_.analysis.max_open_close_iterations;
-    for (iterations = 1; iterations <= max_iterations; ++iterations) {
+    constexpr int max_friction_rounds = 30;
+    bool factor_valid = false;
+    int friction_rounds = 0;
+    iterations = 1;
+    while (iterations <= max_iterations) {
+        // K changes only when a contact changes state: then assemble and factorise again.
+        if (!factor_valid) {
+            const auto t0 = Clock::now();
+            system_.restore_values(element_values_);
+            Matrix6 kc;
+            Vector6 fc;
+            for (std::size_t i = 0; i < contacts.size(); ++i) {
+                if (contacts[i].state == ContactState::Open) continue;
+                contact_terms(contacts[i], kinematics[i], properties[i], kc, fc);
+                system_.add(elements + static_cast<int>(i), kc.data());
+            }
+            timings_.assembly += seconds_since(t0);
+            const auto t1 = Clock::now();
+            system_.factorize();
+            timings_.factorization += seconds_since(t1);
+            factor_valid = true;
+        }
         const auto t0 = Clock::now();
-        system_.restore_values(element_values_);
         Eigen::VectorXd force = base_force;
         Matrix6 kc;
         Vector6 fc;
         for (std::size_t i = 0; i < contacts.size(); ++i) {
             if (contacts[i].state == ContactState::Open) continue;
             contact_terms(contacts[i], kinematics[i], properties[i], kc, fc);
-            system_.add(elements + static_cast<int>(i), kc.data());
             for (int a = 0; a < 3; ++a)
                 for (int dir = 0; dir < 2; ++dir) force[2 * kinematics[i].nodes[a] + dir] += fc[2 * a + dir];
         }
@@ -189,9 +224,6 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
             if (bc_.equation[dof] >= 0) rhs[bc_.equation[dof]] = force[dof];
         timings_.assembly += seconds_since(t0);
 
-        const auto t1 = Clock::now();
-        system_.factorize();
-        timings_.factorization += seconds_since(t1);
         const auto t2 = Clock::now();
         const Eigen::VectorXd solution = system_.solve(rhs);
         timings_.solve += seconds_since(t2);
@@ -202,14 +234,46 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
 
         const auto t3 = Clock::now();
         int changes = 0;
+        double friction_used = 0.0, friction_change = 0.0;
+        std::vector<std::pair<std::size_t, Contact>> marginal;  // changes within the tolerance, before/after
         for (std::size_t i = 0; i < contacts.size(); ++i) {
             Vector6 local;
             for (int a = 0; a < 3; ++a)
                 for (int dir = 0; dir < 2; ++dir) local[2 * a + dir] = d[2 * kinematics[i].nodes[a] + dir];
-            changes += update_contact_state(contacts[i], kinematics[i], properties[i], local);
+            const Contact before = contacts[i];
+            const double normal_used = std::max(0.0, before.normal_force);
+            const StateChange change =
+                update_contact_state(contacts[i], kinematics[i], properties[i], local, contact_tolerance_);
+            if (change == StateChange::Significant) ++changes;
+            if (change == StateChange::Marginal) marginal.emplace_back(i, before);
+            if (before.state == ContactState::Sliding && contacts[i].state == ContactState::Sliding) {
+                friction_used += normal_used * properties[i].tan_friction;
+                friction_change +=
+                    std::fabs(std::max(0.0, contacts[i].normal_force) - normal_used) * properties[i].tan_friction;
+            }
         }
+        // Marginal changes are undone while the iteration goes on: a solution that made
+        // significant changes is not trusted for them (acting on them lets one wrong guess
+        // cascade through a block), and the friction rounds below must use the states K was
+        // factorised with. They are kept when the step ends here.
+        auto undo_marginal = [&] {
+            for (const auto& [i, before] : marginal) {
+                contacts[i].state = before.state;
+                contacts[i].slip = before.slip;
+                contacts[i].shear_spring = before.shear_spring;
+            }
+        };
+        if (changes > 0) undo_marginal();
         timings_.contact += seconds_since(t3);
-        if (changes == 0) return d;
+        if (changes > 0) {
+            factor_valid = false;
+            ++iterations;
+            continue;
+        }
+        // Friction of sliding contacts was taken from the normal forces of the previous solve;
+        // repeat with the same factor until they agree (a back-substitution each).
+        if (friction_change <= 1e-4 * friction_used || ++friction_rounds > max_friction_rounds) return d;
+        undo_marginal();
     }
     iterations = max_iterations + 1;  // not settled
     return d;
@@ -241,9 +305,19 @@ void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<C
     }
     state_.displacement += d;
     if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic)
-        state_.velocity = model_.analysis.dynamic_ratio * (2.0 / dt * d - state_.velocity);
+    {
+        // Newmark: a1 from the increment, then v1; Shi's scheme is the case β = ½, γ = 1.
+        const Eigen::VectorXd a1 = (d - dt * state_.velocity - dt * dt * (0.5 - newmark_beta) * state_.acceleration) /
+                                   (newmark_beta * dt * dt);
+        state_.velocity = model_.analysis.dynamic_ratio *
+                          (state_.velocity + dt * ((1.0 - newmark_gamma) * state_.acceleration + newmark_gamma * a1));
+        state_.acceleration = model_.analysis.dynamic_ratio * a1;
+    }
     else
+    {
         state_.velocity.setZero();  // static: kinetic damping, velocities reset every step
+        state_.acceleration.setZero();
+    }
     state_.step += 1;
     state_.time += dt;
 }
@@ -256,7 +330,10 @@ StepReport Simulation::advance() {
         const double dt = state_.time_step;
         const auto t0 = Clock::now();
         std::vector<Contact> contacts =
-            detect_contacts(state_.nodes, mesh_, topology_, 2.5 * displacement_limit_, state_.contacts);
+            detect_contacts(state_.nodes, mesh_, topology_, 2.5 * displacement_limit_, state_.contacts,
+                            model_.analysis.kind == AnalysisSettings::Kind::Dynamic ? state_.velocity * dt
+                                                                                     : Eigen::VectorXd(),
+                            contact_tolerance_);
         timings_.contact += seconds_since(t0);
         const Eigen::VectorXd external =
             external_forces(model_, mesh_, state_.nodes, topology_, bc_, state_.step + 1, state_.time + dt);

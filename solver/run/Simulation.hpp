@@ -4,7 +4,7 @@
 /// the paper's Table 1:
 ///   1. contact detection (candidates carried over with their states)
 ///   2. open–close loop:
-///        assemble K = Σ elastic + 2M/Δt² + contact springs; F = loads − ∫Bᵀσ0 + 2Mv0/Δt + contacts
+///        assemble K = Σ elastic + M/(βΔt²) + contact springs; F = loads − ∫Bᵀσ0 + inertia + contacts
 ///        factorise K (CHOLMOD)
 ///        solve; [the plastic loop of the next issue nests here: return mapping, body load, re-solve]
 ///        check the displacement limit (cut Δt and repeat the step if exceeded)
@@ -39,6 +39,7 @@ struct SimulationState {
     std::vector<Point2> nodes;          ///< current coordinates (m)
     Eigen::VectorXd displacement;       ///< total since the start (m), 2 per node
     Eigen::VectorXd velocity;           ///< (m/s), 2 per node
+    Eigen::VectorXd acceleration;       ///< (m/s²), 2 per node (dynamic analysis)
     std::vector<Eigen::Vector3d> stress;  ///< per element (σxx, σyy, τxy), Pa, tension positive
     std::vector<double> stress_zz;        ///< per element σzz (plane strain), Pa
     std::vector<Contact> contacts;
@@ -89,6 +90,7 @@ private:
     std::vector<Eigen::Matrix3d> elasticity_;  ///< per material
     double penalty_ = 0.0;                     ///< contact spring (N/m)
     double displacement_limit_ = 0.0;          ///< largest increment per step (m)
+    double contact_tolerance_ = 0.0;           ///< penetration below which contact changes are marginal (m)
     SimulationState state_;
     SymmetricSystem system_;
     std::vector<long long> pattern_contacts_;

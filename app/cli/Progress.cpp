@@ -1,0 +1,42 @@
+#include "Progress.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <unistd.h>
+
+namespace mcdda::cli {
+
+Progress::Progress(int total_steps, bool enabled)
+    : total_(total_steps), enabled_(enabled), terminal_(::isatty(STDERR_FILENO) != 0),
+      last_draw_(std::chrono::steady_clock::now() - std::chrono::seconds(1)) {}
+
+void Progress::update(const StepReport& r) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    char line[256];
+    const int width = 24;
+    const int filled = total_ > 0 ? width * r.step / total_ : width;
+    char bar[width + 1];
+    for (int i = 0; i < width; ++i) bar[i] = i < filled ? '#' : '.';
+    bar[width] = '\0';
+    std::snprintf(line, sizeof line,
+                  "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  iterations %d",
+                  bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations);
+    if (terminal_) {
+        if (now - last_draw_ < std::chrono::milliseconds(100) && r.step != total_) return;
+        std::fprintf(stderr, "\r%s\033[K", line);
+        drawn_ = true;
+    } else {
+        if (r.step < next_line_step_ && r.step != total_) return;
+        std::fprintf(stderr, "%s\n", line);
+        next_line_step_ = r.step + std::max(1, total_ / 10);
+    }
+    std::fflush(stderr);
+    last_draw_ = now;
+}
+
+void Progress::finish() {
+    if (enabled_ && terminal_ && drawn_) std::fprintf(stderr, "\n");
+}
+
+}  // namespace mcdda::cli

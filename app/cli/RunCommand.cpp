@@ -1,0 +1,120 @@
+// `mcdda run`: the headless analysis. Results stay valid at every moment (see RunOutput); Ctrl-C
+// stops after the current step.
+
+#include "Commands.hpp"
+#include "Progress.hpp"
+
+#include "Preprocess.hpp"
+#include "run/RunOutput.hpp"
+#include "run/Simulation.hpp"
+
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+
+namespace mcdda::cli {
+
+namespace {
+
+std::atomic<bool> stop_requested{false};
+
+extern "C" void request_stop(int) { stop_requested = true; }
+
+void print_timings(const RunTimings& t, int steps) {
+    std::cout << "timing (s): assembly " << t.assembly << ", factorization " << t.factorization << ", solve "
+              << t.solve << ", contact " << t.contact << ", plasticity " << t.plasticity << ", total " << t.total
+              << "\n"
+              << "factorizations " << t.factorizations << " (" << t.symbolic_analyses << " symbolic analyses) in "
+              << steps << " steps\n";
+    if (steps > 0 && t.factorizations > 0)
+        std::cout << "per step " << t.total / steps << " s; one factorization " << t.factorization / t.factorizations
+                  << " s; step / factorization = " << (t.total / steps) / (t.factorization / t.factorizations) << "\n";
+}
+
+}  // namespace
+
+int run_run(const Request& r) {
+    const Preprocessed p = preprocess_file(r.model, r.overrides, PreprocessStage::Mesh);
+    for (const Diagnostic& d : p.diagnostics)
+        if (d.severity == Diagnostic::Severity::Error || !r.quiet) std::cerr << r.model << ": " << format_diagnostic(d) << "\n";
+    if (!p.ok) return exit_model_error;
+
+    std::string stem = std::filesystem::path(r.model).stem().string();
+    if (stem.empty()) stem = "model";
+    std::unique_ptr<RunOutput> output;
+    try {
+        output = std::make_unique<RunOutput>(r.out, stem);
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return exit_output_error;
+    }
+    std::unique_ptr<Simulation> simulation;
+    try {
+        simulation = std::make_unique<Simulation>(p);
+    } catch (const std::exception& e) {
+        std::cerr << r.model << ": error: " << e.what() << "\n";
+        output->write_summary(nullptr, RunStatus::Failed, e.what());
+        return exit_model_error;
+    }
+    if (!r.quiet)
+        std::cout << "running " << r.model << ": " << p.statistics.elements << " elements, " << p.statistics.blocks
+                  << " blocks, " << p.model.analysis.steps << " steps -> " << r.out << "\n";
+
+    stop_requested = false;
+    auto previous_handler = std::signal(SIGINT, request_stop);
+    RunStatus status = RunStatus::Completed;
+    std::string message = "completed";
+    const int steps = p.model.analysis.steps;
+    const int every = p.model.analysis.output_every;
+    int last_saved = -1;
+    Progress progress(steps, !r.quiet);
+    try {
+        output->record_history(*simulation);
+        output->save_step(*simulation);
+        last_saved = 0;
+        while (simulation->state().step < steps) {
+            if (stop_requested) {
+                status = RunStatus::Cancelled;
+                message = "cancelled by the user after step " + std::to_string(simulation->state().step);
+                break;
+            }
+            StepReport report;
+            try {
+                report = simulation->advance();
+            } catch (const std::exception& e) {
+                status = RunStatus::Failed;
+                message = std::string("step ") + std::to_string(simulation->state().step + 1) + " failed: " + e.what();
+                break;
+            }
+            output->record_history(*simulation);
+            if (report.step % every == 0 || report.step == steps) {
+                output->save_step(*simulation);
+                last_saved = report.step;
+            }
+            progress.update(report);
+        }
+        if (last_saved != simulation->state().step) output->save_step(*simulation);  // the last step, always
+    } catch (const std::exception& e) {  // writing results failed
+        progress.finish();
+        std::signal(SIGINT, previous_handler);
+        std::cerr << "error: " << e.what() << "\n";
+        return exit_output_error;
+    }
+    progress.finish();
+    std::signal(SIGINT, previous_handler);
+    output->write_summary(simulation.get(), status, message);
+    if (status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(status) << ": " << message << "\n";
+    if (!r.quiet)
+        std::cout << status_name(status) << ": " << simulation->state().step << " steps, t = " << simulation->state().time
+                  << " s; results in " << r.out << "\n";
+    if (r.profile) print_timings(simulation->timings(), simulation->state().step);
+    switch (status) {
+        case RunStatus::Completed: return exit_ok;
+        case RunStatus::Cancelled: return exit_cancelled;
+        case RunStatus::Collapsed: return exit_collapsed;
+        default: return exit_run_failed;
+    }
+}
+
+}  // namespace mcdda::cli

@@ -1,0 +1,38 @@
+#pragma once
+// Running example models through the solver for validation tests.
+
+#include "Preprocess.hpp"
+#include "run/Simulation.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mcdda::test {
+
+/// Time and the displacement of every measurement point after each accepted step.
+struct History {
+    std::vector<double> time;
+    std::vector<std::vector<Point2>> points;  ///< [step][measurement point] (ux, uy)
+
+    /// Linear interpolation of point `k`'s displacement at time `t`.
+    Point2 at(double t, int k) const;
+};
+
+struct Run {
+    Preprocessed model;
+    std::unique_ptr<Simulation> simulation;
+    History history;
+};
+
+/// Preprocesses examples/<file> with overrides and runs all its steps (or `steps` when > 0).
+/// Fails the calling test (ADD_FAILURE) on any error.
+Run run_example(const std::string& file, const std::vector<std::string>& overrides = {}, int steps = 0);
+
+/// The same for model text.
+Run run_text(const std::string& json, const std::vector<std::string>& overrides = {}, int steps = 0);
+
+/// Centroid of element `e` in the current configuration.
+Point2 centroid(const Simulation& s, int e);
+
+}  // namespace mcdda::test
