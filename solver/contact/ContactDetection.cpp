@@ -92,12 +92,14 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
             const double xi = len2 > 0.0 ? ((nodes[node].x - a.x) * (b.x - a.x) + (nodes[node].y - a.y) * (b.y - a.y)) / len2 : 0.0;
             if (xi < -1e-6 || xi > 1.0 + 1e-6) continue;
             // Shi's entrance rule, simplified: a vertex can only enter an edge it faces. A vertex
-            // on a flat or convex stretch of boundary next to another block's corner must not
-            // take that block's side face (it would resist sliding along the joint).
+            // on a flat stretch of boundary next to another block's corner must not take that
+            // block's side face (it would resist sliding along the joint): their normals are
+            // perpendicular. The threshold −0.05 still lets the tip of a wedge as sharp as 6°
+            // (normal · edge normal = −sin(θ/2)) touch the faces beside it.
             const double l = std::hypot(b.x - a.x, b.y - a.y);
             const Point2 vn = node_normal[node];
             const double vl = std::hypot(vn.x, vn.y);
-            if (l > 0.0 && vl > 0.0 && ((b.y - a.y) * vn.x - (b.x - a.x) * vn.y) / (l * vl) > -0.25) continue;
+            if (l > 0.0 && vl > 0.0 && ((b.y - a.y) * vn.x - (b.x - a.x) * vn.y) / (l * vl) > -0.05) continue;
             const auto score = std::make_pair(distance, -gap);
             auto it = best.find(edge.block);
             if (it == best.end() || score < it->second.first) best[edge.block] = {score, e};

@@ -101,7 +101,7 @@ void SymmetricSystem::factorize() {
     factor_->llt.factorize(matrix_);
     ++factorizations_;
     if (factor_->llt.info() != Eigen::Success)
-        throw std::runtime_error("the stiffness matrix is not positive definite (a block is free to move: "
+        throw SingularSystem("the stiffness matrix is not positive definite (a block is free to move: "
                                  "check supports, or use a dynamic analysis)");
 }
 

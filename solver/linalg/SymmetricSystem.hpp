@@ -8,11 +8,17 @@
 #include <Eigen/Sparse>
 
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 namespace mcdda {
 
 class CholmodFactor;
+
+/// The matrix could not be factorised: it is not positive definite (a mechanism).
+struct SingularSystem : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 /// A set of equations coupled densely (an element's or a contact's degrees of freedom);
 /// entries are equation numbers, −1 for a fixed degree of freedom.
@@ -46,7 +52,7 @@ public:
     /// Adds `value` on the diagonal of equation `e` (e ≥ 0).
     void add_diagonal(int e, double value);
 
-    /// Factorises the current matrix; throws std::runtime_error when it is not positive definite.
+    /// Factorises the current matrix; throws SingularSystem when it is not positive definite.
     void factorize();
 
     /// Solves with the last factorisation.

@@ -96,6 +96,7 @@ private:
     std::vector<long long> pattern_contacts_;
     std::vector<double> element_values_;       ///< matrix values of elements and inertia, per step  ///< the contact groups the pattern was built for
     RunTimings timings_;
+    std::string last_singular_;  ///< why the last try's matrix could not be factorised
 };
 
 /// Initial stress of every element from the model's in-situ stress (tension positive).
