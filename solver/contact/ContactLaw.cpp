@@ -70,7 +70,7 @@ void contact_terms(const Contact& c, const ContactKinematics& k, const ContactPr
 }
 
 StateChange update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d,
-                                 double tolerance) {
+                                 double force_tolerance) {
     c.gap = k.gap + k.normal.dot(d);
     const double slip_increment = k.shear.dot(d);
     auto change = [&](bool marginal) { return marginal ? StateChange::Marginal : StateChange::Significant; };
@@ -91,13 +91,13 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
         } else {
             c.state = ContactState::Locked;
         }
-        return change(-c.gap < tolerance);
+        return change(-c.gap * p.normal_stiffness < force_tolerance);
     }
     c.normal_force = -p.normal_stiffness * c.gap;
     if (c.normal_force < -p.tensile_force) {  // pulled apart beyond the tensile strength
         c.state = ContactState::Open;
         c.normal_force = c.shear_force = 0.0;
-        return change(c.gap < tolerance);
+        return change(c.gap * p.normal_stiffness < force_tolerance);
     }
     const double limit = std::max(0.0, c.normal_force) * p.tan_friction + p.cohesion_force;
     if (c.state == ContactState::Locked) {
@@ -111,11 +111,10 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
     }
     c.shear_force = c.slip * limit;
     if (slip_increment * c.slip >= 0.0) return StateChange::None;
-    // The slip reversed: the contact sticks. Only a reversal at round-off level is marginal:
-    // friction left acting against a reversed slip would drive the block backwards.
+    // The slip reversed: the contact sticks.
     c.state = ContactState::Locked;
     c.shear_spring = 0.0;
-    return change(std::fabs(slip_increment) < 1e-3 * tolerance);
+    return change(std::fabs(slip_increment) * p.shear_stiffness < force_tolerance);
 }
 
 void commit_contact(Contact& c, const ContactKinematics& k, const Vector6& d) {

@@ -49,18 +49,18 @@ void contact_terms(const Contact& c, const ContactKinematics& k, const ContactPr
 /// How much a contact's state changed after a solve.
 enum class StateChange {
     None,
-    Marginal,     ///< changed, but within the penetration tolerance: no new iteration needed
+    Marginal,     ///< changed, but by a negligible force: no new iteration needed
     Significant,  ///< the open–close iteration must go on
 };
 
 /// After a solve with increments `d` (the contact's six values): records forces and changes the
 /// state where the springs disagree with it (penetration → close, tension → open, shear beyond
-/// Coulomb → slide, slip reversal → lock). Opening, closing or sticking decided by a gap,
-/// penetration or slip below `tolerance` (m) is marginal: without this the iteration chatters on
-/// contacts that carry almost nothing, whose gaps flip sign at round-off level (Shi's allowed
-/// penetration plays this role). Starting to slide is always significant.
+/// Coulomb → slide, slip reversal → lock). Opening, closing or sticking whose spring force
+/// (stiffness × gap, penetration or slip) is below `force_tolerance` (N/m) is marginal: without
+/// this the iteration chatters on contacts that carry almost nothing, whose gaps flip sign at
+/// round-off level. Starting to slide is always significant.
 StateChange update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d,
-                                 double tolerance);
+                                 double force_tolerance);
 
 /// Commits an accepted step: the locked spring's shear displacement is kept, strength lost once
 /// the contact opened or slid.

@@ -14,21 +14,25 @@ public:
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };
 
-SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()) {}
+SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()) {
+    factor_->llt.cholmod().print = 0;  // failures are reported through SingularSystem, not stderr
+}
 SymmetricSystem::~SymmetricSystem() = default;
 
-void SymmetricSystem::set_pattern(int equations, const std::vector<CouplingGroup>& groups) {
+void SymmetricSystem::set_pattern(int equations, const std::vector<CouplingGroup>& groups,
+                                  const std::vector<CouplingGroup>& pattern_only) {
     equations_ = equations;
     // Column lists of the lower triangle, the diagonal always present (inertia, springs).
     std::vector<std::vector<int>> rows(equations);
     for (int e = 0; e < equations; ++e) rows[e].push_back(e);
-    for (const CouplingGroup& g : groups)
-        for (int a = 0; a < g.size; ++a)
-            for (int b = 0; b <= a; ++b) {
-                const int i = g.equation[a], j = g.equation[b];
-                if (i < 0 || j < 0) continue;
-                rows[std::min(i, j)].push_back(std::max(i, j));
-            }
+    for (const auto* list : {&groups, &pattern_only})
+        for (const CouplingGroup& g : *list)
+            for (int a = 0; a < g.size; ++a)
+                for (int b = 0; b <= a; ++b) {
+                    const int i = g.equation[a], j = g.equation[b];
+                    if (i < 0 || j < 0) continue;
+                    rows[std::min(i, j)].push_back(std::max(i, j));
+                }
     std::vector<StorageIndex> outer(equations + 1, 0);
     std::size_t nonzeros = 0;
     for (int c = 0; c < equations; ++c) {
@@ -45,15 +49,36 @@ void SymmetricSystem::set_pattern(int equations, const std::vector<CouplingGroup
     for (int c = 0; c < equations; ++c) std::copy(rows[c].begin(), rows[c].end(), inner + outer[c]);
     rows.clear();
 
-    auto slot_of = [&](int i, int j) {
-        const int col = std::min(i, j), row = std::max(i, j);
-        const auto* begin = inner + outer[col];
-        const auto* end = inner + outer[col + 1];
-        return static_cast<int>(std::lower_bound(begin, end, row) - inner);
-    };
-    group_size_.clear();
-    group_slot_offset_.assign(1, 0);
-    slots_.clear();
+    set_groups(groups);
+    diagonal_slot_.resize(equations);
+    for (int e = 0; e < equations; ++e) diagonal_slot_[e] = outer[e];  // the diagonal is each column's first row
+    analysed_ = false;
+    clear_values();
+}
+
+int SymmetricSystem::slot_of(int i, int j) const {
+    const int col = std::min(i, j), row = std::max(i, j);
+    const StorageIndex* inner = matrix_.innerIndexPtr();
+    const StorageIndex* begin = inner + matrix_.outerIndexPtr()[col];
+    const StorageIndex* end = inner + matrix_.outerIndexPtr()[col + 1];
+    const StorageIndex* it = std::lower_bound(begin, end, row);
+    return it != end && *it == row ? static_cast<int>(it - inner) : -1;
+}
+
+bool SymmetricSystem::pattern_contains(const std::vector<CouplingGroup>& groups) const {
+    for (const CouplingGroup& g : groups)
+        for (int a = 0; a < g.size; ++a)
+            for (int b = 0; b <= a; ++b) {
+                const int i = g.equation[a], j = g.equation[b];
+                if (i >= 0 && j >= 0 && slot_of(i, j) < 0) return false;
+            }
+    return true;
+}
+
+void SymmetricSystem::set_groups(const std::vector<CouplingGroup>& groups, int keep) {
+    group_size_.resize(keep);
+    group_slot_offset_.resize(keep + 1);
+    slots_.resize(group_slot_offset_.back());
     for (const CouplingGroup& g : groups) {
         group_size_.push_back(g.size);
         for (int a = 0; a < g.size; ++a)
@@ -63,10 +88,6 @@ void SymmetricSystem::set_pattern(int equations, const std::vector<CouplingGroup
             }
         group_slot_offset_.push_back(static_cast<int>(slots_.size()));
     }
-    diagonal_slot_.resize(equations);
-    for (int e = 0; e < equations; ++e) diagonal_slot_[e] = outer[e];  // the diagonal is each column's first row
-    analysed_ = false;
-    clear_values();
 }
 
 void SymmetricSystem::clear_values() {

@@ -32,9 +32,18 @@ public:
     SymmetricSystem();
     ~SymmetricSystem();
 
-    /// Sets the pattern from coupling groups (the lower triangle of their union). Group g's
-    /// slots are then addressed by `g` in add(). Forces a new symbolic analysis.
-    void set_pattern(int equations, const std::vector<CouplingGroup>& groups);
+    /// Sets the pattern from coupling groups (the lower triangle of their union) plus
+    /// `pattern_only` couplings reserved for later groups. Group g's slots are then addressed by
+    /// `g` in add(). Forces a new symbolic analysis.
+    void set_pattern(int equations, const std::vector<CouplingGroup>& groups,
+                     const std::vector<CouplingGroup>& pattern_only = {});
+
+    /// True when every coupling of the groups is already in the pattern.
+    bool pattern_contains(const std::vector<CouplingGroup>& groups) const;
+
+    /// Replaces the groups after the first `keep` (their slots) without touching the pattern,
+    /// which must contain them (pattern_contains): the symbolic analysis stays valid.
+    void set_groups(const std::vector<CouplingGroup>& groups, int keep = 0);
 
     int equations() const { return equations_; }
     int group_count() const { return static_cast<int>(group_slot_offset_.size()) - 1; }
@@ -69,6 +78,8 @@ private:
     std::vector<int> group_slot_offset_{0};
     std::vector<int> slots_;               ///< per group: lower-triangle pairs (a ≥ b), −1 if fixed
     std::vector<int> diagonal_slot_;
+
+    int slot_of(int i, int j) const;  ///< position of entry (i, j) in the values, or −1
     std::unique_ptr<CholmodFactor> factor_;
     bool analysed_ = false;
     int factorizations_ = 0;

@@ -81,6 +81,7 @@ private:
     Eigen::VectorXd solve_increments(const Eigen::VectorXd& external, double dt, std::vector<Contact>& contacts,
                                      int& iterations);
     void rebuild_pattern_if_needed(const std::vector<Contact>& contacts);
+    CouplingGroup coupling(std::initializer_list<int> nodes) const;  ///< equations of up to 3 nodes
     void commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts);
 
     Model model_;
@@ -90,10 +91,9 @@ private:
     std::vector<Eigen::Matrix3d> elasticity_;  ///< per material
     double penalty_ = 0.0;                     ///< contact spring (N/m)
     double displacement_limit_ = 0.0;          ///< largest increment per step (m)
-    double contact_tolerance_ = 0.0;           ///< penetration below which contact changes are marginal (m)
+    double contact_tolerance_ = 0.0;           ///< slip (m) above which a new contact starts sliding
     SimulationState state_;
     SymmetricSystem system_;
-    std::vector<long long> pattern_contacts_;
     std::vector<double> element_values_;       ///< matrix values of elements and inertia, per step  ///< the contact groups the pattern was built for
     RunTimings timings_;
     std::string last_singular_;  ///< why the last try's matrix could not be factorised
