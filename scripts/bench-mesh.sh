@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 size=${1:-0.15}
-[ -x build/app/mcdda ] || bash scripts/build.sh
+mcdda=${MCDDA:-build/app/mcdda}   # MCDDA=path/to/mcdda to use another build
+[ -x "$mcdda" ] || bash scripts/build.sh
 mkdir -p out/bench
-build/app/mcdda mesh examples/jointed-tunnel.json --out out/bench --set /mesh/size="$size" --profile
+"$mcdda" mesh examples/jointed-tunnel.json --out out/bench --set /mesh/size="$size" --profile

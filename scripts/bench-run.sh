@@ -3,15 +3,16 @@
 # blocks, about 1,750 contacts) under gravity, in-situ stress and overburden, meshed at two sizes,
 # 40 static steps each. Prints mcdda run --profile: time per step, factorisations, and the ratio
 # of a step's time to one CHOLMOD factorisation.
-# Usage: bash scripts/bench-run.sh [SIZES...]   (element sizes in m; default "1.3 0.4": ~5k and ~53k elements)
+# Usage: bash scripts/bench-run.sh [SIZES...]   (element sizes in m; default "1.3 0.39": ~5k and ~51k elements)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[ -x build/app/mcdda ] || bash scripts/build.sh
+mcdda=${MCDDA:-build/app/mcdda}   # MCDDA=path/to/mcdda to use another build
+[ -x "$mcdda" ] || bash scripts/build.sh
 sizes=("$@")
-[ ${#sizes[@]} -gt 0 ] || sizes=(1.3 0.4)
+[ ${#sizes[@]} -gt 0 ] || sizes=(1.3 0.39)
 for size in "${sizes[@]}"; do
   echo "== element size $size m"
-  build/app/mcdda run examples/jointed-tunnel.json --out "out/bench-run-$size" --quiet --profile \
+  "$mcdda" run examples/jointed-tunnel.json --out "out/bench-run-$size" --quiet --profile \
     --set /regions/0/holes=[] --set /joints=[] \
     --set /joint_sets/0/angle=0 --set /joint_sets/1/angle=90 \
     --set /joint_sets/0/spacing=4 --set /joint_sets/1/spacing=4 \

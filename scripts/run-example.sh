@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Quick start (a): builds mcdda and runs the main job on the default example.
 #  - with a display: opens the desktop program with examples/jointed-tunnel.json;
-#  - without one: checks, meshes and renders that example headless into out/jointed-tunnel/
-#    (the mesh as .vtu for ParaView and a PNG picture).
+#  - without one: checks, meshes, renders and runs that example headless into
+#    out/jointed-tunnel/ (the mesh as .vtu, a PNG picture, and the analysis in results/).
 # Usage: bash scripts/run-example.sh [MODEL.json]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,4 +22,5 @@ mkdir -p "$out"
 build/app/mcdda check "$model"
 build/app/mcdda mesh "$model" --out "$out"
 build/app/mcdda render "$model" --out "$out/$name.png"
-echo "Results: $(ls "$out" | tr '\n' ' ')"
+build/app/mcdda run "$model" --out "$out/results"
+echo "Results in $out: $(ls "$out" | tr '\n' ' '); analysis: $(ls "$out/results" | wc -l) files in $out/results"

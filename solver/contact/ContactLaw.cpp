@@ -26,7 +26,10 @@ ContactKinematics contact_kinematics(const Contact& c, const std::vector<Point2>
             const BoundaryEdge& n = topology.edges[edge];
             length += 0.5 * std::hypot(nodes[n.to].x - nodes[n.from].x, nodes[n.to].y - nodes[n.from].y);
         }
-    k.length = length;
+    // Two blocks meeting along a joint contact each other twice (the vertices of each against the
+    // edges of the other), so each contact stands for half its vertex's share of the joint:
+    // cohesion and tensile strength are then counted once over the joint's length.
+    k.length = 0.5 * length;
     return k;
 }
 

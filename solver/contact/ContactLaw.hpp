@@ -31,7 +31,7 @@ struct ContactKinematics {
     int nodes[3] = {-1, -1, -1};
     double gap = 0.0;   ///< dn at the start of the step (m)
     double xi = 0.0;    ///< projection of the vertex on the edge, clamped to [0, 1]
-    double length = 0.0;///< contact length: half of the vertex's two boundary edges (m)
+    double length = 0.0;///< joint length the contact stands for: a quarter of the vertex's two boundary edges (m)
     Vector6 normal;     ///< dn(d) = gap + normal·d
     Vector6 shear;      ///< relative tangential displacement = shear·d
 };
