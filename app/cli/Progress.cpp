@@ -13,15 +13,17 @@ Progress::Progress(int total_steps, bool enabled)
 void Progress::update(const StepReport& r) {
     if (!enabled_) return;
     const auto now = std::chrono::steady_clock::now();
-    char line[256];
+    char line[320];
     const int width = 24;
     const int filled = total_ > 0 ? width * r.step / total_ : width;
     char bar[width + 1];
     for (int i = 0; i < width; ++i) bar[i] = i < filled ? '#' : '.';
     bar[width] = '\0';
     std::snprintf(line, sizeof line,
-                  "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  iterations %d",
-                  bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations);
+                  "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  iterations %d  "
+                  "plastic: %d yielding, %d iterations",
+                  bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations,
+                  r.yielding, r.plastic_iterations);
     if (terminal_) {
         if (now - last_draw_ < std::chrono::milliseconds(100) && r.step != total_) return;
         std::fprintf(stderr, "\r%s\033[K", line);

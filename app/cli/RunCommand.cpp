@@ -82,6 +82,14 @@ int run_run(const Request& r) {
             StepReport report;
             try {
                 report = simulation->advance();
+            } catch (const PlasticCollapse& e) {
+                status = RunStatus::Collapsed;
+                const auto loads = simulation->load_magnitudes();
+                std::string reached;
+                for (const auto& [name, value] : loads) reached += (reached.empty() ? "" : ", ") + name + " = " + std::to_string(value);
+                message = "collapse at step " + std::to_string(simulation->state().step + 1) + ": " + e.what() +
+                          (reached.empty() ? std::string() : "; last converged load: " + reached);
+                break;
             } catch (const std::exception& e) {
                 status = RunStatus::Failed;
                 message = std::string("step ") + std::to_string(simulation->state().step + 1) + " failed: " + e.what();

@@ -59,8 +59,10 @@ void RunOutput::save_step(const Simulation& sim) {
     stress.values.reserve(6 * s.stress.size());
     for (std::size_t e = 0; e < s.stress.size(); ++e)
         stress.values.insert(stress.values.end(), {s.stress[e][0], s.stress[e][1], s.stress_zz[e], s.stress[e][2], 0.0, 0.0});
+    VtuField state{"plastic_state", 1, std::vector<double>(s.plastic_state.begin(), s.plastic_state.end())};
+    VtuField strain{"plastic_strain", 1, s.plastic_strain};
     fields.point_data = {std::move(displacement), std::move(velocity)};
-    fields.cell_data = {std::move(stress)};
+    fields.cell_data = {std::move(stress), std::move(state), std::move(strain)};
 
     std::ostringstream name;
     name << stem_ << "_" << std::setw(6) << std::setfill('0') << s.step << ".vtu";

@@ -3,7 +3,8 @@
 /// The files of a run, kept valid at every moment so that a run that stops (finished, collapsed,
 /// failed or cancelled) leaves readable results up to its last good step:
 ///   DIR/<model>.pvd            ParaView collection of the saved steps (rewritten atomically)
-///   DIR/<model>_NNNNNN.vtu     point data displacement, velocity; cell data stress, block, material
+///   DIR/<model>_NNNNNN.vtu     point data displacement, velocity; cell data stress, block, material,
+///                              plastic_state (0 never, 1 earlier, 2 now yielding), plastic_strain
 ///   DIR/history.csv            one row per step: step, time, load:<name>, <point>:ux, <point>:uy
 ///   DIR/summary.json           status, message, steps, time, timing breakdown
 

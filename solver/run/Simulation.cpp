@@ -78,6 +78,8 @@ Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
     double stiffest = 0.0;
     for (const Material& m : model_.materials) {
         elasticity_.push_back(plane_strain_elasticity(m.young_modulus, m.poisson_ratio));
+        yield_criteria_.emplace_back(m);
+        plastic_material_.push_back(model_.analysis.plasticity && m.plastic);
         stiffest = std::max(stiffest, m.young_modulus);
     }
     // Automatic penalty: four times the stiffest Young's modulus (N/m per m thickness). The
@@ -95,6 +97,8 @@ Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
     state_.acceleration = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
     state_.time_step = model_.analysis.time_step;
     initial_stresses(model_, mesh_, state_.stress, state_.stress_zz);
+    state_.plastic_strain.assign(mesh_.triangles.size(), 0.0);
+    state_.plastic_state.assign(mesh_.triangles.size(), 0);
 }
 
 std::vector<std::pair<std::string, double>> Simulation::load_magnitudes() const {
@@ -147,6 +151,7 @@ void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts)
 Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, double dt, std::vector<Contact>& contacts,
                                              int& iterations) {
     const auto start_assembly = Clock::now();
+    plastic_iterations_ = 0;
     rebuild_pattern_if_needed(contacts);
     const int elements = static_cast<int>(mesh_.triangles.size());
     const Eigen::Index dofs = state_.displacement.size();
@@ -159,9 +164,10 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
     (void)gamma;
     const double inertia = 1.0 / (beta * dt * dt);
     const bool carry_velocity = model_.analysis.kind == AnalysisSettings::Kind::Dynamic;
+    shapes_.resize(elements);
     for (int e = 0; e < elements; ++e) {
         const auto& t = mesh_.triangles[e];
-        const TriangleShape s = triangle_shape(state_.nodes[t[0]], state_.nodes[t[1]], state_.nodes[t[2]]);
+        const TriangleShape& s = shapes_[e] = triangle_shape(state_.nodes[t[0]], state_.nodes[t[1]], state_.nodes[t[2]]);
         const Material& m = model_.materials[mesh_.triangle_material[e]];
         Matrix6 k = s.area * s.B.transpose() * elasticity_[mesh_.triangle_material[e]] * s.B;
         const Vector6 internal = s.area * s.B.transpose() * state_.stress[e];
@@ -236,13 +242,30 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
             if (bc_.equation[dof] >= 0) rhs[bc_.equation[dof]] = force[dof];
         timings_.assembly += seconds_since(t0);
 
-        const auto t2 = Clock::now();
-        const Eigen::VectorXd solution = system_.solve(rhs);
-        timings_.solve += seconds_since(t2);
-        for (Eigen::Index dof = 0; dof < dofs; ++dof)
-            d[dof] = bc_.equation[dof] >= 0 ? solution[bc_.equation[dof]] : 0.0;
+        d = solve_reduced(rhs);
 
-        // (Issue 4: the plastic loop runs here, re-solving with the same factor.)
+        // Plastic loop (initial stress method, Table 1 steps 7–16): the stress the yield surface
+        // cannot carry becomes a body load, re-solved with the same factor until the
+        // increments settle; every iteration costs one back-substitution.
+        Eigen::VectorXd plastic_load = Eigen::VectorXd::Zero(dofs);
+        int yielding = update_stresses(d, &plastic_load);
+        for (int k = 1; yielding > 0; ++k) {
+            if (k > model_.analysis.max_plastic_iterations)
+                throw PlasticCollapse("the plastic iterations did not converge within " +
+                                      std::to_string(model_.analysis.max_plastic_iterations) + " (" +
+                                      std::to_string(yielding) + " elements yielding)");
+            Eigen::VectorXd loaded = rhs;
+            for (Eigen::Index dof = 0; dof < dofs; ++dof)
+                if (bc_.equation[dof] >= 0) loaded[bc_.equation[dof]] += plastic_load[dof];
+            const Eigen::VectorXd next = solve_reduced(loaded);
+            const double change = (next - d).cwiseAbs().maxCoeff();
+            const double size = next.cwiseAbs().maxCoeff();
+            d = next;
+            ++plastic_iterations_;
+            plastic_load.setZero();
+            yielding = update_stresses(d, &plastic_load);
+            if (change <= model_.analysis.plastic_tolerance * size) break;
+        }
 
         const auto t3 = Clock::now();
         int changes = 0;
@@ -288,7 +311,7 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
         if (changes > 0) {
             // At the iteration limit a handful of changes among many contacts is accepted (they
             // take effect next step); more means the step is too large: Δt is cut (Shi).
-            if (iterations == max_iterations && changes <= std::max<std::size_t>(2, contacts.size() / 500)) return d;
+            if (iterations == max_iterations && changes <= std::max(2, static_cast<int>(contacts.size() / 500))) return d;
             factor_valid = false;
             ++iterations;
             continue;
@@ -302,17 +325,62 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
     return d;
 }
 
-void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts) {
-    // Stresses from the strain increment on the start-of-step geometry (updated Lagrangian).
-    for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
+Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs) {
+    const auto start = Clock::now();
+    const Eigen::VectorXd solution = system_.solve(rhs);
+    Eigen::VectorXd d(state_.displacement.size());
+    for (Eigen::Index dof = 0; dof < d.size(); ++dof)
+        d[dof] = bc_.equation[dof] >= 0 ? solution[bc_.equation[dof]] : 0.0;
+    timings_.solve += seconds_since(start);
+    return d;
+}
+
+int Simulation::update_stresses(const Eigen::VectorXd& d, Eigen::VectorXd* plastic_load) {
+    const auto start = Clock::now();
+    const int elements = static_cast<int>(mesh_.triangles.size());
+    returned_.resize(elements);
+    int yielding = 0;
+    for (int e = 0; e < elements; ++e) {
         const auto& t = mesh_.triangles[e];
-        const TriangleShape s = triangle_shape(state_.nodes[t[0]], state_.nodes[t[1]], state_.nodes[t[2]]);
+        const int material = mesh_.triangle_material[e];
+        const TriangleShape& shape = shapes_[e];
         Vector6 de;
         for (int a = 0; a < 3; ++a)
             for (int dir = 0; dir < 2; ++dir) de[2 * a + dir] = d[2 * t[a] + dir];
-        const Eigen::Vector3d increment = elasticity_[mesh_.triangle_material[e]] * (s.B * de);
-        state_.stress[e] += increment;
-        state_.stress_zz[e] += model_.materials[mesh_.triangle_material[e]].poisson_ratio * (increment[0] + increment[1]);
+        // Elastic trial on the start-of-step geometry (updated Lagrangian, small increments).
+        const Eigen::Vector3d increment = elasticity_[material] * (shape.B * de);
+        const Eigen::Vector3d& old = state_.stress[e];
+        const PlaneStress trial{old[0] + increment[0], old[1] + increment[1], old[2] + increment[2],
+                                state_.stress_zz[e] + model_.materials[material].poisson_ratio * (increment[0] + increment[1])};
+        ReturnResult& r = returned_[e];
+        if (plastic_material_[material]) {
+            r = yield_criteria_[material].return_map(trial);
+        } else {
+            r = ReturnResult{};
+            r.stress = trial;
+        }
+        if (!r.plastic) continue;
+        ++yielding;
+        if (plastic_load) {
+            const Eigen::Vector3d excess(trial.xx - r.stress.xx, trial.yy - r.stress.yy, trial.xy - r.stress.xy);
+            const Vector6 f = shape.area * shape.B.transpose() * excess;
+            for (int a = 0; a < 3; ++a)
+                for (int dir = 0; dir < 2; ++dir) (*plastic_load)[2 * t[a] + dir] += f[2 * a + dir];
+        }
+    }
+    timings_.plasticity += seconds_since(start);
+    return yielding;
+}
+
+void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts) {
+    // Stresses as returned for the accepted increments.
+    for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
+        const ReturnResult& r = returned_[e];
+        state_.stress[e] = Eigen::Vector3d(r.stress.xx, r.stress.yy, r.stress.xy);
+        state_.stress_zz[e] = r.stress.zz;
+        state_.plastic_strain[e] += r.equivalent_plastic_strain;
+        if (r.plastic) state_.plastic_state[e] = 2;
+        else if (state_.plastic_state[e] == 2) state_.plastic_state[e] = 1;
     }
     state_.contacts = contacts;
     for (Contact& c : state_.contacts) {
@@ -399,6 +467,8 @@ StepReport Simulation::advance() {
         report.time_step = dt;
         report.open_close_iterations = iterations;
         report.max_increment = largest;
+        report.plastic_iterations = plastic_iterations_;
+        for (unsigned char p : state_.plastic_state) report.yielding += p == 2;
         for (const Contact& c : state_.contacts) {
             report.open += c.state == ContactState::Open;
             report.sliding += c.state == ContactState::Sliding;
