@@ -507,11 +507,12 @@ void parse_supports_and_loads(Parser& p, const json& root, Model& m, const std::
             const std::string type = p.string(o, path, "type", std::nullopt);
             InitialStress& s = m.initial_stress;
             if (type == "uniform") {
-                p.check_keys(o, path, {"type", "sxx", "syy", "sxy"});
+                p.check_keys(o, path, {"type", "sxx", "syy", "sxy", "szz"});
                 // Entered compression positive (geotechnical); stored tension positive.
                 s.kind = InitialStress::Kind::Uniform;
                 s.stress = {-p.number(o, path, "sxx", 0.0), -p.number(o, path, "syy", 0.0),
                             -p.number(o, path, "sxy", 0.0)};
+                if (o.contains("szz")) s.stress_zz = -p.number(o, path, "szz", 0.0);
             } else if (type == "gravity") {
                 p.check_keys(o, path, {"type", "surface_y", "k0"});
                 s.kind = InitialStress::Kind::Gravity;

@@ -123,6 +123,7 @@ struct InitialStress {
     enum class Kind { None, Uniform, Gravity };
     Kind kind = Kind::None;
     std::array<double, 3> stress{0.0, 0.0, 0.0};  ///< Uniform: (σxx, σyy, τxy), tension positive
+    std::optional<double> stress_zz;  ///< Uniform: σzz, tension positive; default ν(σxx + σyy)
     double surface_y = 0.0;  ///< Gravity: ground surface elevation (m)
     double k0 = 1.0;         ///< Gravity: σh/σv
 };

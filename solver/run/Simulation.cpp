@@ -59,8 +59,10 @@ void initial_stresses(const Model& model, const Mesh& mesh, std::vector<Eigen::V
             sigma = Eigen::Vector3d(-s.k0 * vertical, -vertical, 0.0);
         }
         stress[e] = sigma;
-        // Plane strain: the out-of-plane stress that keeps εzz = 0 for this in-plane state.
-        stress_zz[e] = m.poisson_ratio * (sigma[0] + sigma[1]);
+        // Plane strain: unless given, the out-of-plane stress that an elastic loading from zero
+        // in plane strain would give (εzz = 0).
+        stress_zz[e] = s.kind == InitialStress::Kind::Uniform && s.stress_zz ? *s.stress_zz
+                                                                              : m.poisson_ratio * (sigma[0] + sigma[1]);
     }
 }
 
