@@ -129,14 +129,16 @@ ReturnResult MohrCoulomb::return_map(const PlaneStress& trial) const {
             best_violation = v;
             break;
         }
-        // Keep the least violating candidate in case none is fully consistent (non-associated
-        // flow at the apex can need a negative multiplier).
-        if (ordered && v < best_violation) {
-            best = x;
-            best_flow = flow;
-            best_size = m;
-            best_violation = v;
-        }
+    }
+    if (best_violation > 1e299) {
+        // No active set is consistent: with non-associated flow (ψ < φ) the return to the apex
+        // needs negative multipliers on the plane and edges. The stress then goes to the apex
+        // itself (de Souza Neto et al., Box 8.5): hydrostatic at c·cot φ, or at the cut-off.
+        double apex = sin_phi_ > 1e-12 ? cohesion_ * cos_phi_ / sin_phi_ : s.mean();
+        if (tensile_strength_ > 0.0) apex = std::min(apex, tensile_strength_);
+        best = Eigen::Vector3d::Constant(apex);
+        best_flow = D.inverse() * (s - best);
+        best_size = 3;
     }
 
     // Back to x, y, z: the principal directions do not change (isotropic elasticity).

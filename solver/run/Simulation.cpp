@@ -261,7 +261,10 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
                 if (bc_.equation[dof] >= 0) loaded[bc_.equation[dof]] += plastic_load[dof];
             const Eigen::VectorXd next = solve_reduced(loaded);
             const double change = (next - d).cwiseAbs().maxCoeff();
-            const double size = next.cwiseAbs().maxCoeff();
+            // Relative to the increment, but not below a hundredth of the displacement so far: in
+            // a step that only re-equilibrates, the increment is round-off and would never settle.
+            const double size = std::max({next.cwiseAbs().maxCoeff(), 0.01 * state_.displacement.cwiseAbs().maxCoeff(),
+                                          1e-12 * topology_.model_size});
             d = next;
             ++plastic_iterations_;
             plastic_load.setZero();
