@@ -1,5 +1,6 @@
 #include "CommandLine.hpp"
 
+#include <cmath>
 #include <set>
 #include <stdexcept>
 
@@ -12,6 +13,8 @@ Usage:
   mcdda check  MODEL [--set POINTER=VALUE]...
   mcdda mesh   MODEL --out DIR [--profile] [--set POINTER=VALUE]...
   mcdda render MODEL --out FILE.png [--size WxH] [--no-mesh] [--set POINTER=VALUE]...
+  mcdda render MODEL --out FILE.png --results STEP.vtu [--field NAME] [--deform FACTOR]
+               [--size WxH] [--set POINTER=VALUE]...
   mcdda run    MODEL --out DIR [--profile] [--quiet] [--set POINTER=VALUE]...
   mcdda --help | --version
 
@@ -21,7 +24,8 @@ Commands:
   mesh     cut the regions into blocks, mesh every block and write DIR/<model>.vtu
            (cell data: block, material) with the mesh statistics
   render   draw blocks, joints, mesh, supports and loads with a legend into a PNG
-           (starts a virtual X server through xvfb-run when DISPLAY is not set)
+           (starts a virtual X server through xvfb-run when DISPLAY is not set); with
+           --results it draws a result .vtu of `mcdda run` of the same model instead
   run      run the analysis: DIR/<model>.pvd with one .vtu per saved step
            (displacement, velocity, stress, block, material), DIR/history.csv and
            DIR/summary.json (status, timing); Ctrl-C stops after the current step
@@ -34,6 +38,11 @@ Options:
   --profile            print a timing breakdown of the stages
   --size WxH           picture size in pixels for render (default 1600x1000)
   --no-mesh            do not draw element edges in render
+  --results STEP.vtu   render a result step: mesh cells coloured by --field, block
+                       boundaries, joints and a colour legend
+  --field NAME         plastic_state (default), plastic_strain, displacement
+                       (magnitude), stress_xx, stress_yy or stress_xy (Pa, tension +)
+  --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0)
   --quiet              print errors only
   --help, --version
 
@@ -46,6 +55,7 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
     Request r;
     static const std::set<std::string> commands{"check", "mesh", "render", "run"};
     std::vector<std::string> positional;
+    bool field_given = false, deform_given = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&](const char* option) -> std::optional<std::string> {
@@ -87,6 +97,27 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
                 error = "--size must lie between 64x64 and 8192x8192";
                 return std::nullopt;
             }
+        } else if (is("--results")) {
+            const auto v = value("--results");
+            if (!v) return std::nullopt;
+            r.results = *v;
+        } else if (is("--field")) {
+            const auto v = value("--field");
+            if (!v) return std::nullopt;
+            r.field = *v;
+            field_given = true;
+        } else if (is("--deform")) {
+            const auto v = value("--deform");
+            if (!v) return std::nullopt;
+            try {
+                std::size_t used = 0;
+                r.deform = std::stod(*v, &used);
+                if (used != v->size() || !std::isfinite(r.deform)) throw std::invalid_argument("trailing");
+            } catch (const std::exception&) {
+                error = "--deform expects a number, got \"" + *v + "\"";
+                return std::nullopt;
+            }
+            deform_given = true;
         } else if (!a.empty() && a[0] == '-' && a != "-") {
             error = "unknown option " + a;
             return std::nullopt;
@@ -115,6 +146,14 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
     r.model = positional[1];
     if ((r.command == "mesh" || r.command == "render" || r.command == "run") && r.out.empty()) {
         error = r.command + ": --out is required";
+        return std::nullopt;
+    }
+    if ((field_given || deform_given) && r.results.empty()) {
+        error = std::string(field_given ? "--field" : "--deform") + " needs --results STEP.vtu";
+        return std::nullopt;
+    }
+    if (!r.results.empty() && r.command != "render") {
+        error = r.command + ": --results is for render only";
         return std::nullopt;
     }
     return r;

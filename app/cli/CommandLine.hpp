@@ -19,6 +19,9 @@ struct Request {
     bool quiet = false;                  ///< --quiet: errors only
     int width = 1600, height = 1000;     ///< --size WxH for render
     bool show_mesh = true;               ///< --no-mesh hides element edges in render
+    std::string results;                 ///< --results STEP.vtu: render draws this result
+    std::string field = "plastic_state"; ///< --field NAME: what the result picture colours
+    double deform = 0.0;                 ///< --deform FACTOR: displacement scale of the result picture
 };
 
 /// Parses argv; returns the request or sets `error` to a message for the user.

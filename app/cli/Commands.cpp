@@ -5,6 +5,7 @@
 #include "model/ModelValidator.hpp"
 #ifdef MCDDA_HAVE_VIEW
 #include "view/OffscreenRender.hpp"
+#include "view/ResultScene.hpp"
 #endif
 
 #include <chrono>
@@ -99,9 +100,19 @@ int run_render(const Request& r) {
     if (out.has_parent_path() && !ensure_directory(out.parent_path().string())) return exit_output_error;
     const auto start = std::chrono::steady_clock::now();
     try {
-        view::SceneOptions options;
-        options.show_mesh = r.show_mesh;
-        view::render_png(p, options, r.width, r.height, r.out);
+        if (r.results.empty()) {
+            view::SceneOptions options;
+            options.show_mesh = r.show_mesh;
+            view::render_png(p, options, r.width, r.height, r.out);
+        } else {
+            view::ResultOptions options;
+            options.field = r.field;
+            options.deform = r.deform;
+            view::render_result_png(p, r.results, options, r.width, r.height, r.out);
+        }
+    } catch (const view::ResultFieldError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return exit_model_error;
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return exit_output_error;

@@ -337,6 +337,16 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
 void fit_camera(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions& options)
 {
     if (renderer == nullptr) return;
+    const double dpi = dpi_of(renderer);
+    const auto entries = legend_entries(p, options);
+    const double reserved =
+        entries.empty() ? 0.0 : legend_width(legend_title(p), entries, dpi) + 2.0 * legend_margin(dpi);
+    fit_camera(renderer, p, reserved);
+}
+
+void fit_camera(vtkRenderer* renderer, const Preprocessed& p, double reserved)
+{
+    if (renderer == nullptr) return;
     double b[6];
     renderer->ComputeVisiblePropBounds(b);
     if (!vtkMath::AreBoundsInitialized(b)) {
@@ -354,10 +364,7 @@ void fit_camera(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions
 
     const int* size = renderer->GetSize();
     const double width = std::max(1, size[0]), height = std::max(1, size[1]);
-    const double dpi = dpi_of(renderer);
-    const auto entries = legend_entries(p, options);
-    double reserved = entries.empty() ? 0.0 : legend_width(legend_title(p), entries, dpi) + 2.0 * legend_margin(dpi);
-    if (reserved > 0.45 * width) reserved = 0.0;  // narrow window: let the legend overlap instead
+    if (!(reserved > 0.0) || reserved > 0.45 * width) reserved = 0.0;  // narrow window: let the legend overlap instead
     const double usable = width - reserved;
 
     const double margin = 1.08;  // 4 % free on each side

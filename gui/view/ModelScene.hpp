@@ -31,4 +31,8 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
 /// call it again after the window was resized.
 void fit_camera(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions& options);
 
+/// fit_camera with an explicit column of `reserved_pixels` on the right kept free (for a legend
+/// other than the model's); ignored when it would take more than 45 % of the width.
+void fit_camera(vtkRenderer* renderer, const Preprocessed& p, double reserved_pixels);
+
 }  // namespace mcdda::view

@@ -38,20 +38,26 @@ int png_dpi(int width, int height)
 void render_png(const Preprocessed& p, const SceneOptions& options, int width, int height,
                 const std::string& path)
 {
+    render_scene_png([&](vtkRenderer* renderer) { build_model_scene(renderer, p, options); }, width, height, path);
+}
+
+void render_scene_png(const std::function<void(vtkRenderer*)>& build, int width, int height,
+                      const std::string& path, const std::string& who)
+{
     constexpr int largest = 16384;
     if (width <= 0 || height <= 0 || width > largest || height > largest)
-        throw std::runtime_error("render_png: the image size must be between 1 and " + std::to_string(largest) +
+        throw std::runtime_error(who + ": the image size must be between 1 and " + std::to_string(largest) +
                                  " pixels (got " + std::to_string(width) + "x" + std::to_string(height) + ")");
-    if (path.empty()) throw std::runtime_error("render_png: no output file given");
+    if (path.empty()) throw std::runtime_error(who + ": no output file given");
     std::string problem;
     const XConnection connection = open_x_display(problem);  // outlives the window below
-    if (!connection) throw std::runtime_error("render_png: " + problem);
+    if (!connection) throw std::runtime_error(who + ": " + problem);
 
     const std::filesystem::path target(path);
     const std::filesystem::path temporary(path + ".tmp");
     const std::filesystem::path folder = target.parent_path();
     if (!folder.empty() && !std::filesystem::is_directory(folder))
-        throw std::runtime_error("render_png: cannot write " + path + ": folder " + folder.string() +
+        throw std::runtime_error(who + ": cannot write " + path + ": folder " + folder.string() +
                                  " does not exist");
 
     vtkNew<vtkRenderWindow> window;
@@ -62,7 +68,7 @@ void render_png(const Preprocessed& p, const SceneOptions& options, int width, i
     window->SetMultiSamples(4);
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
-    build_model_scene(renderer, p, options);
+    build(renderer);
     window->Render();
 
     vtkNew<vtkWindowToImageFilter> grab;
@@ -74,7 +80,7 @@ void render_png(const Preprocessed& p, const SceneOptions& options, int width, i
     int dims[3] = {0, 0, 0};
     grab->GetOutput()->GetDimensions(dims);
     if (dims[0] != width || dims[1] != height)
-        throw std::runtime_error("render_png: reading back the rendered image failed (got " +
+        throw std::runtime_error(who + ": reading back the rendered image failed (got " +
                                  std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + " pixels)");
 
     vtkNew<vtkPNGWriter> writer;
@@ -85,7 +91,7 @@ void render_png(const Preprocessed& p, const SceneOptions& options, int width, i
     if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary)) {
         const std::string reason = errno != 0 ? std::strerror(errno) : "the PNG writer failed";
         remove_quietly(temporary);
-        throw std::runtime_error("render_png: cannot write " + temporary.string() + ": " + reason);
+        throw std::runtime_error(who + ": cannot write " + temporary.string() + ": " + reason);
     }
     window->Finalize();
 
@@ -93,7 +99,7 @@ void render_png(const Preprocessed& p, const SceneOptions& options, int width, i
     std::filesystem::rename(temporary, target, error);
     if (error) {
         remove_quietly(temporary);
-        throw std::runtime_error("render_png: cannot rename " + temporary.string() + " to " + path + ": " +
+        throw std::runtime_error(who + ": cannot rename " + temporary.string() + " to " + path + ": " +
                                  error.message());
     }
 }

@@ -5,7 +5,10 @@
 
 #include "view/ModelScene.hpp"
 
+#include <functional>
 #include <string>
+
+class vtkRenderer;
 
 namespace mcdda::view {
 
@@ -19,5 +22,11 @@ int png_dpi(int width, int height);
 /// unwritable path, failed read-back).
 void render_png(const Preprocessed& p, const SceneOptions& options, int width, int height,
                 const std::string& path);
+
+/// What render_png does around the scene: opens the X display, lets `build` fill the renderer
+/// of an off-screen window of width×height pixels (DPI from png_dpi), renders and writes the PNG
+/// atomically. Error messages start with `who` ("render_png: ..."). Throws std::runtime_error.
+void render_scene_png(const std::function<void(vtkRenderer*)>& build, int width, int height,
+                      const std::string& path, const std::string& who = "render_png");
 
 }  // namespace mcdda::view

@@ -36,7 +36,9 @@ struct NewmarkParameters {
     double beta, gamma;
 };
 
-NewmarkParameters newmark_for(int step) { return step == 0 ? NewmarkParameters{0.5, 1.0} : NewmarkParameters{newmark_beta, newmark_gamma}; }
+NewmarkParameters newmark_for(int step) {
+    return step == 0 ? NewmarkParameters{0.5, 1.0} : NewmarkParameters{newmark_beta, newmark_gamma};
+}
 
 }  // namespace
 
@@ -162,8 +164,7 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
     // It does not change during the open–close iterations, so it is assembled once per step.
     system_.clear_values();
     Eigen::VectorXd base_force = external;
-    const auto [beta, gamma] = newmark_for(state_.step);
-    (void)gamma;
+    const double beta = newmark_for(state_.step).beta;
     const double inertia = 1.0 / (beta * dt * dt);
     const bool carry_velocity = model_.analysis.kind == AnalysisSettings::Kind::Dynamic;
     shapes_.resize(elements);

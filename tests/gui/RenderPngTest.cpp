@@ -5,6 +5,8 @@
 #include "view/ModelScene.hpp"
 #include "view/OffscreenRender.hpp"
 #include "view/Palette.hpp"
+#include "view/ResultScene.hpp"
+#include "io/VtuWriter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -95,12 +97,16 @@ private:
 class Projection {
 public:
     Projection(const Preprocessed& p, const view::SceneOptions& options)
+        : Projection([&](vtkRenderer* r) { view::build_model_scene(r, p, options); })
+    {
+    }
+    explicit Projection(const std::function<void(vtkRenderer*)>& build)
     {
         window_->SetOffScreenRendering(1);
         window_->SetSize(width, height);
         window_->SetDPI(view::png_dpi(width, height));
         window_->AddRenderer(renderer_);
-        view::build_model_scene(renderer_, p, options);
+        build(renderer_);
     }
     std::array<int, 2> pixel(Point2 q)
     {
@@ -320,4 +326,130 @@ TEST_F(RenderPng, ExampleModels)
         ++rendered;
     }
     EXPECT_GT(rendered, 0);
+}
+
+// Result pictures: a fake result .vtu of the tunnel model where every cell left of x = 5 is
+// "yielding now" (2) and the rest elastic (0).
+namespace {
+
+std::string write_fake_result(const Preprocessed& p, const std::string& name)
+{
+    VtuFields fields;
+    VtuField state{"plastic_state", 1, {}};
+    VtuField displacement{"displacement", 3, {}};
+    for (const auto& t : p.mesh.triangles) {
+        const double cx = (p.mesh.nodes[t[0]].x + p.mesh.nodes[t[1]].x + p.mesh.nodes[t[2]].x) / 3.0;
+        state.values.push_back(cx < 5.0 ? 2.0 : 0.0);
+    }
+    for (const Point2& q : p.mesh.nodes) displacement.values.insert(displacement.values.end(), {0.01 * q.x, 0.0, 0.0});
+    fields.cell_data.push_back(state);
+    fields.point_data.push_back(displacement);
+    const std::string path = output_path(name);
+    write_vtu(path, p.mesh, fields);
+    return path;
+}
+
+bool is_state_red(const Rgb8& c) { return c[0] > 190 && c[1] < 50 && c[2] < 50; }
+bool is_state_grey(const Rgb8& c) { return near(c, {209, 209, 209}, 10); }
+bool is_state_yellow(const Rgb8& c) { return c[0] > 230 && c[1] > 190 && c[2] < 40; }
+
+}  // namespace
+
+TEST_F(RenderPng, ResultPlasticState)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    ASSERT_TRUE(p.ok);
+    const std::string vtu = write_fake_result(p, "result_fake.vtu");
+    const std::string path = output_path("result_plastic_state.png");
+    fs::remove(path);
+    const view::ResultOptions options;  // plastic_state, undeformed
+    view::render_result_png(p, vtu, options, width, height, path);
+    ASSERT_TRUE(fs::exists(path));
+    EXPECT_FALSE(fs::exists(path + ".tmp"));
+    Picture picture(path);
+    ASSERT_EQ(picture.width(), width);
+    ASSERT_EQ(picture.height(), height);
+
+    const Rgb8 white{255, 255, 255};
+    for (auto [x, y] : {std::array<int, 2>{2, 2}, {width - 3, 2}, {2, height - 3}, {width - 3, height - 3}})
+        EXPECT_TRUE(near(picture.at(x, y), white)) << "corner " << x << "," << y;
+
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, options); });
+    for (const Point2& q : rock_samples()) {
+        const auto [x, y] = projection.pixel(q);
+        if (q.x < 5.0) {
+            EXPECT_GE(picture.count_around(x, y, 3, is_state_red), 40) << "red expected at (" << q.x << ", " << q.y << ")";
+        } else {
+            EXPECT_GE(picture.count_around(x, y, 3, is_state_grey), 40) << "grey expected at (" << q.x << ", " << q.y << ")";
+            EXPECT_EQ(picture.count_around(x, y, 3, is_state_red), 0) << "no red at (" << q.x << ", " << q.y << ")";
+        }
+    }
+    const auto lo = projection.pixel({0, 0});
+    const auto hi = projection.pixel({10, 10});
+    // Right half of the square: no red at all; left half: mostly red.
+    EXPECT_EQ(picture.count_in(projection.pixel({5.3, 0})[0], lo[1], hi[0] - 2, hi[1], is_state_red), 0);
+    const int left = (projection.pixel({5, 0})[0] - lo[0]) * (hi[1] - lo[1]);
+    EXPECT_GT(picture.count_in(lo[0], lo[1], projection.pixel({5, 0})[0], hi[1], is_state_red), left / 2);
+    // Block outlines are dark.
+    EXPECT_GT(picture.count_in(lo[0] - 3, lo[1] - 3, hi[0] + 4, hi[1] + 4, is_dark), 4 * (hi[0] - lo[0]));
+    // The categorical legend right of the model: the three swatches.
+    EXPECT_GT(picture.count_in(hi[0] + 5, 0, width, height, is_state_yellow), 50) << "legend swatch";
+    EXPECT_GT(picture.count_in(hi[0] + 5, 0, width, height, is_state_red), 50) << "legend swatch";
+    EXPECT_GT(picture.count_in(hi[0] + 5, 0, width, height, is_state_grey), 50) << "legend swatch";
+}
+
+TEST_F(RenderPng, ResultDisplacementWithScalarBar)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    const std::string vtu = write_fake_result(p, "result_fake_disp.vtu");
+    const std::string path = output_path("result_displacement.png");
+    view::ResultOptions options;
+    options.field = "displacement";
+    options.deform = 20.0;
+    view::render_result_png(p, vtu, options, width, height, path);
+    Picture picture(path);
+    // Displacement grows with x: blue on the left, red on the right; with deform the square is
+    // stretched by 20 % to 12 m wide, so the red side lies beyond where x = 10 was.
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, options); });
+    const auto left = projection.pixel({0.3, 8.5});
+    const auto right = projection.pixel({11.7, 8.5});
+    auto blue = [](const Rgb8& c) { return c[2] > 180 && c[0] < 60; };
+    EXPECT_GE(picture.count_around(left[0], left[1], 2, blue), 15);
+    EXPECT_GE(picture.count_around(right[0], right[1], 2, is_state_red), 15);
+    // The scalar bar on the right: the full rainbow, red at the top, blue at the bottom.
+    const int bar_x0 = right[0] + 10;
+    EXPECT_GT(picture.count_in(bar_x0, 0, width, height, blue), 100) << "scalar bar";
+    EXPECT_GT(picture.count_in(bar_x0, 0, width, height, is_state_red), 100) << "scalar bar";
+}
+
+TEST_F(RenderPng, ResultErrors)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    const std::string vtu = write_fake_result(p, "result_fake_err.vtu");
+    const std::string path = output_path("result_bad.png");
+    view::ResultOptions options;
+    options.field = "pressure";
+    try {
+        view::render_result_png(p, vtu, options, 200, 200, path);
+        ADD_FAILURE() << "expected an exception";
+    } catch (const view::ResultFieldError& e) {
+        EXPECT_NE(std::string(e.what()).find("plastic_state, plastic_strain"), std::string::npos) << e.what();
+    }
+    options.field = "stress_xx";  // a known field the fake file lacks
+    try {
+        view::render_result_png(p, vtu, options, 200, 200, path);
+        ADD_FAILURE() << "expected an exception";
+    } catch (const view::ResultFieldError& e) {
+        EXPECT_NE(std::string(e.what()).find("available: plastic_state, displacement"), std::string::npos) << e.what();
+    }
+    options.field = "plastic_state";
+    EXPECT_THROW(view::render_result_png(p, output_path("no_such.vtu"), options, 200, 200, path), std::runtime_error);
+    const Preprocessed coarse = preprocess_model(tunnel_model(), PreprocessStage::Cut);  // no mesh
+    try {
+        view::render_result_png(coarse, vtu, options, 200, 200, path);
+        ADD_FAILURE() << "expected an exception";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("cells but the model's mesh has"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(path));
 }

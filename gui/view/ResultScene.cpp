@@ -1,0 +1,359 @@
+#include "view/ResultScene.hpp"
+
+#include "view/ModelScene.hpp"
+#include "view/OffscreenRender.hpp"
+#include "view/Palette.hpp"
+#include "view/SceneGeometry.hpp"
+#include "view/SceneLegend.hpp"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdList.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkWindow.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace mcdda::view {
+
+namespace {
+
+const Rgb white{1.0, 1.0, 1.0};
+const Rgb state_colors[3] = {{0.82, 0.82, 0.82}, {1.0, 0.84, 0.0}, {0.86, 0.06, 0.06}};
+const char* const state_labels[3] = {"elastic", "yielded before", "yielding now"};
+const Rgb joint_color{0.55, 0.0, 0.60};  // purple: not in the rainbow nor the state colours
+
+struct FieldInfo {
+    const char* name;
+    const char* array;   ///< array in the .vtu
+    bool point_data;
+    int component;       ///< -1: magnitude, otherwise the component
+    const char* units;
+};
+
+const FieldInfo field_table[] = {
+    {"plastic_state", "plastic_state", false, 0, "-"},
+    {"plastic_strain", "plastic_strain", false, 0, "-"},
+    {"displacement", "displacement", true, -1, "m"},
+    {"stress_xx", "stress", false, 0, "Pa"},
+    {"stress_yy", "stress", false, 1, "Pa"},
+    {"stress_xy", "stress", false, 3, "Pa"},
+};
+
+vtkDataArray* find_array(vtkUnstructuredGrid* grid, const FieldInfo& f)
+{
+    vtkDataArray* a = f.point_data ? grid->GetPointData()->GetArray(f.array) : grid->GetCellData()->GetArray(f.array);
+    if (a == nullptr) return nullptr;
+    if (f.component >= a->GetNumberOfComponents()) return nullptr;
+    return a;
+}
+
+/// A result file read and checked against the model.
+struct Result {
+    vtkSmartPointer<vtkUnstructuredGrid> grid;
+    const FieldInfo* field = nullptr;
+};
+
+Result load_result(const Preprocessed& model, const std::string& path, const ResultOptions& options)
+{
+    const FieldInfo* field = nullptr;
+    for (const FieldInfo& f : field_table)
+        if (options.field == f.name) field = &f;
+    auto list = [](const std::vector<std::string>& names) {
+        std::string s;
+        for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+        return s.empty() ? std::string("none") : s;
+    };
+    if (field == nullptr)
+        throw ResultFieldError("unknown field \"" + options.field + "\" (available: " + list(result_field_names()) + ")");
+    if (!std::isfinite(options.deform)) throw ResultFieldError("the deformation factor must be a finite number");
+
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw std::runtime_error("cannot read results " + path + ": no such file");
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    if (reader->CanReadFile(path.c_str()) == 0)
+        throw std::runtime_error("cannot read results " + path + ": not a VTK XML unstructured grid (.vtu)");
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    Result r;
+    r.grid = reader->GetOutput();
+    if (r.grid == nullptr || r.grid->GetNumberOfCells() == 0 || r.grid->GetNumberOfPoints() == 0)
+        throw std::runtime_error("cannot read results " + path + ": the file is damaged or holds no cells");
+    const auto cells = static_cast<std::size_t>(r.grid->GetNumberOfCells());
+    if (cells != model.mesh.triangles.size())
+        throw std::runtime_error("results " + path + " have " + std::to_string(cells) +
+                                 " cells but the model's mesh has " + std::to_string(model.mesh.triangles.size()) +
+                                 " triangles: were they written by a run of this model (with the same --set options)?");
+    r.field = field;
+    if (find_array(r.grid, *field) == nullptr) {
+        std::vector<std::string> present;
+        for (const FieldInfo& f : field_table)
+            if (find_array(r.grid, f) != nullptr) present.emplace_back(f.name);
+        throw ResultFieldError("results " + path + " hold no field \"" + options.field + "\" (available: " +
+                               list(present) + ")");
+    }
+    if (options.deform != 0.0) {
+        vtkDataArray* d = r.grid->GetPointData()->GetArray("displacement");
+        if (d == nullptr || d->GetNumberOfComponents() < 2)
+            throw ResultFieldError("results " + path + " hold no displacement to deform the mesh with");
+    }
+    return r;
+}
+
+double dpi_of(vtkRenderer* renderer)
+{
+    vtkWindow* window = renderer->GetVTKWindow();
+    const int dpi = window != nullptr ? window->GetDPI() : 72;
+    return dpi > 0 ? dpi : 72;
+}
+
+vtkSmartPointer<vtkActor> line_actor(vtkPolyData* data, const Rgb& color, double width)
+{
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(data);
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+    actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+    return actor;
+}
+
+/// Value of the field at entry i (cell or point).
+double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i)
+{
+    if (f.component >= 0) return a->GetComponent(i, f.component);
+    double s = 0.0;
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c) s += a->GetComponent(i, c) * a->GetComponent(i, c);
+    return std::sqrt(s);
+}
+
+void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options)
+{
+    vtkUnstructuredGrid* grid = r.grid;
+    const FieldInfo& field = *r.field;
+    const double pixel = dpi_of(renderer) / 72.0;
+    const Box box = model_box(model);
+    const double z_step = (box.size() > 0.0 ? box.size() : 1.0) * 1e-3;
+
+    renderer->SetBackground(white.data());
+    renderer->GradientBackgroundOff();
+
+    // Points, displaced when asked.
+    vtkDataArray* displacement = grid->GetPointData()->GetArray("displacement");
+    vtkNew<vtkPoints> points;
+    const vtkIdType point_count = grid->GetNumberOfPoints();
+    for (vtkIdType i = 0; i < point_count; ++i) {
+        double q[3];
+        grid->GetPoint(i, q);
+        if (options.deform != 0.0 && displacement != nullptr) {
+            q[0] += options.deform * displacement->GetComponent(i, 0);
+            q[1] += options.deform * displacement->GetComponent(i, 1);
+        }
+        points->InsertNextPoint(q[0], q[1], 0.0);
+    }
+    vtkNew<vtkCellArray> polys;
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        grid->GetCellPoints(c, ids);
+        polys->InsertNextCell(ids);
+    }
+    vtkNew<vtkPolyData> fill;
+    fill->SetPoints(points);
+    fill->SetPolys(polys);
+
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(fill);
+    vtkDataArray* source = find_array(grid, field);
+    const bool categorical = std::string(field.name) == "plastic_state";
+    double range[2] = {0.0, 1.0};
+    vtkNew<vtkLookupTable> table;
+    if (categorical) {
+        vtkNew<vtkUnsignedCharArray> colors;
+        colors->SetNumberOfComponents(3);
+        for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+            const int s = std::clamp(static_cast<int>(std::lround(source->GetComponent(c, 0))), 0, 2);
+            unsigned char b[3];
+            for (int k = 0; k < 3; ++k) b[k] = static_cast<unsigned char>(std::lround(state_colors[s][k] * 255.0));
+            colors->InsertNextTypedTuple(b);
+        }
+        fill->GetCellData()->SetScalars(colors);
+        mapper->SetScalarModeToUseCellData();
+        mapper->SetColorModeToDirectScalars();
+    } else {
+        vtkNew<vtkDoubleArray> values;
+        const vtkIdType n = source->GetNumberOfTuples();
+        range[0] = std::numeric_limits<double>::infinity();
+        range[1] = -range[0];
+        for (vtkIdType i = 0; i < n; ++i) {
+            const double v = value_of(source, field, i);
+            values->InsertNextValue(v);
+            if (std::isfinite(v)) range[0] = std::min(range[0], v), range[1] = std::max(range[1], v);
+        }
+        if (!(range[0] <= range[1])) range[0] = 0.0, range[1] = 1.0;
+        if (range[1] - range[0] <= 1e-12 * std::max(1.0, std::abs(range[0]))) {
+            const double pad = range[0] != 0.0 ? 0.01 * std::abs(range[0]) : 1.0;
+            range[0] -= pad, range[1] += pad;
+        }
+        if (field.point_data) {
+            fill->GetPointData()->SetScalars(values);
+            mapper->SetScalarModeToUsePointData();
+        } else {
+            fill->GetCellData()->SetScalars(values);
+            mapper->SetScalarModeToUseCellData();
+        }
+        table->SetHueRange(0.667, 0.0);
+        table->SetNumberOfTableValues(256);
+        table->SetTableRange(range);
+        table->Build();
+        mapper->SetLookupTable(table);
+        mapper->SetScalarRange(range);
+        mapper->InterpolateScalarsBeforeMappingOn();
+    }
+    vtkNew<vtkActor> fill_actor;
+    fill_actor->SetMapper(mapper);
+    fill_actor->GetProperty()->LightingOff();
+    renderer->AddActor(fill_actor);
+
+    // Block boundaries: edges of one cell only, or between cells of different blocks.
+    vtkDataArray* block = grid->GetCellData()->GetArray("block");
+    std::map<std::pair<vtkIdType, vtkIdType>, std::pair<int, double>> edges;  // edge -> (uses, block)
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        grid->GetCellPoints(c, ids);
+        const vtkIdType n = ids->GetNumberOfIds();
+        const double b = block != nullptr ? block->GetComponent(c, 0) : 0.0;
+        for (vtkIdType k = 0; k < n; ++k) {
+            vtkIdType a = ids->GetId(k), e = ids->GetId((k + 1) % n);
+            auto [it, fresh] = edges.try_emplace({std::min(a, e), std::max(a, e)}, 1, b);
+            if (!fresh) it->second.first += (it->second.second == b) ? 1 : 2;  // other block: keep it
+        }
+    }
+    vtkNew<vtkPoints> line_points;
+    for (vtkIdType i = 0; i < point_count; ++i) {
+        double q[3];
+        points->GetPoint(i, q);
+        line_points->InsertNextPoint(q[0], q[1], 2.0 * z_step);
+    }
+    vtkNew<vtkCellArray> lines;
+    for (const auto& [edge, use] : edges)
+        if (use.first != 2) {
+            const vtkIdType l[2] = {edge.first, edge.second};
+            lines->InsertNextCell(2, l);
+        }
+    vtkNew<vtkPolyData> outline;
+    outline->SetPoints(line_points);
+    outline->SetLines(lines);
+    renderer->AddActor(line_actor(outline, palette::block_outline, 1.5 * pixel));
+
+    // Joints of the model where they are in rock; only undeformed (they are not part of the .vtu).
+    const bool joints = options.show_joints && options.deform == 0.0 && !model.model.joints.empty();
+    if (joints) {
+        vtkNew<vtkPoints> joint_points;
+        vtkNew<vtkCellArray> joint_lines;
+        for (const Joint& j : model.model.joints)
+            for (std::size_t i = 0; i + 1 < j.points.size(); ++i)
+                for (const SegmentPiece& piece : split_by_material(model.model, j.points[i], j.points[i + 1])) {
+                    if (!piece.in_material) continue;
+                    const vtkIdType l[2] = {joint_points->InsertNextPoint(piece.from.x, piece.from.y, 3.0 * z_step),
+                                            joint_points->InsertNextPoint(piece.to.x, piece.to.y, 3.0 * z_step)};
+                    joint_lines->InsertNextCell(2, l);
+                }
+        vtkNew<vtkPolyData> data;
+        data->SetPoints(joint_points);
+        data->SetLines(joint_lines);
+        renderer->AddActor(line_actor(data, joint_color, 3.0 * pixel));
+    }
+
+    // Legend.
+    const int* size = renderer->GetSize();
+    const double width = std::max(1, size[0]);
+    double reserved = 0.0;
+    const double dpi = dpi_of(renderer);
+    if (categorical) {
+        std::vector<LegendEntry> entries;
+        for (int s = 0; s < 3; ++s) entries.push_back({LegendEntry::Icon::Swatch, state_colors[s], state_labels[s]});
+        entries.push_back({LegendEntry::Icon::Line, palette::block_outline, "block boundary"});
+        if (joints) entries.push_back({LegendEntry::Icon::Line, joint_color, "joint"});
+        const std::string title = "plastic_state";
+        add_legend(renderer, title, entries, dpi);
+        reserved = legend_width(title, entries, dpi) + 2.0 * legend_margin(dpi);
+    } else {
+        vtkNew<vtkScalarBarActor> bar;
+        bar->SetLookupTable(table);
+        const std::string title = std::string(field.name) + " (" + field.units + ")";
+        bar->SetTitle(title.c_str());
+        bar->SetNumberOfLabels(6);
+        bar->SetLabelFormat("%-#8.3g");
+        bar->UnconstrainedFontSizeOn();
+        bar->SetTextPad(static_cast<int>(std::lround(4 * pixel)));
+        for (vtkTextProperty* t : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
+            t->SetColor(0.0, 0.0, 0.0);
+            t->SetFontFamilyToArial();
+            t->ShadowOff();
+            t->ItalicOff();
+            t->BoldOff();
+            t->SetFontSize(t == bar->GetTitleTextProperty() ? 14 : 12);
+        }
+        bar->GetTitleTextProperty()->BoldOn();
+        const double bar_width = std::clamp(170.0 * pixel / width, 0.1, 0.3);
+        bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+        bar->GetPositionCoordinate()->SetValue(1.0 - bar_width - 0.01, 0.08);
+        bar->GetPosition2Coordinate()->SetValue(bar_width, 0.84);
+        bar->SetBarRatio(0.25);
+        renderer->AddActor2D(bar);
+        reserved = (bar_width + 0.02) * width;
+    }
+    fit_camera(renderer, model, reserved);
+}
+
+}  // namespace
+
+const std::vector<std::string>& result_field_names()
+{
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n;
+        for (const FieldInfo& f : field_table) n.emplace_back(f.name);
+        return n;
+    }();
+    return names;
+}
+
+void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const std::string& vtu_path,
+                        const ResultOptions& options)
+{
+    if (renderer == nullptr) return;
+    add_result(renderer, model, load_result(model, vtu_path, options), options);
+}
+
+void render_result_png(const Preprocessed& model, const std::string& vtu_path, const ResultOptions& options,
+                       int width, int height, const std::string& png_path)
+{
+    const Result result = load_result(model, vtu_path, options);  // file problems before X
+    render_scene_png([&](vtkRenderer* renderer) { add_result(renderer, model, result, options); }, width, height,
+                     png_path, "render_result_png");
+}
+
+}  // namespace mcdda::view

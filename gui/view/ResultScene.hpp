@@ -1,0 +1,47 @@
+#pragma once
+/// \file ResultScene.hpp
+/// Pictures of a run's result: the mesh of one result .vtu (as written by `mcdda run`) coloured
+/// by one field, with block boundaries, joints and a colour legend. VTK stays out of this header.
+
+#include "Preprocess.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+class vtkRenderer;
+
+namespace mcdda::view {
+
+/// What the result picture shows.
+struct ResultOptions {
+    /// One of result_field_names(): plastic_state (three categories), plastic_strain,
+    /// displacement (magnitude of the point data), stress_xx, stress_yy, stress_xy (Pa, raw).
+    std::string field = "plastic_state";
+    double deform = 0.0;      ///< points drawn at x + deform · displacement; 0 = undeformed
+    bool show_joints = true;  ///< joint traces of the model (only drawn undeformed)
+};
+
+/// The field was not understood or is missing from the file; the message lists the available ones.
+class ResultFieldError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// The fields a result picture can show, in the order the help text names them.
+const std::vector<std::string>& result_field_names();
+
+/// Reads `vtu_path` and adds the result scene to `renderer`: coloured cells, block boundaries,
+/// joints (undeformed only), the legend (categories for plastic_state, a scalar bar otherwise);
+/// sets a white background and fits a parallel camera. Throws ResultFieldError for an unknown
+/// or missing field and std::runtime_error for a missing or unreadable file or a cell count
+/// that differs from the model's mesh.
+void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const std::string& vtu_path,
+                        const ResultOptions& options);
+
+/// Renders the result scene off-screen to a PNG at `png_path` like render_png (X display,
+/// atomic write). The .vtu is read and checked before any X connection is opened.
+void render_result_png(const Preprocessed& model, const std::string& vtu_path, const ResultOptions& options,
+                       int width, int height, const std::string& png_path);
+
+}  // namespace mcdda::view
