@@ -5,6 +5,9 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -17,8 +20,11 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPlainTextEdit>
+#include <QProgressBar>
 #include <QStatusBar>
 #include <QStringList>
+#include <QThread>
+#include <QToolBar>
 #include <QUrl>
 
 #include <algorithm>
@@ -44,6 +50,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     setCentralWidget(view_);
     createDock();
     createActions();
+    createRunActions();
     createStatusBar();
     setAcceptDrops(true);
     setWindowTitle(tr("mcdda"));
@@ -52,7 +59,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(view_, &ModelView::cursorLeft, cursor_label_, &QLabel::clear);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() { joinRun(); }
 
 void MainWindow::createActions()
 {
@@ -119,6 +126,11 @@ void MainWindow::createStatusBar()
     cursor_label_ = new QLabel(this);
     cursor_label_->setMinimumWidth(260);
     statistics_label_ = new QLabel(this);
+    progress_bar_ = new QProgressBar(this);
+    progress_bar_->setMaximumWidth(200);
+    progress_bar_->setTextVisible(true);
+    progress_bar_->setVisible(false);
+    statusBar()->addPermanentWidget(progress_bar_);
     statusBar()->addPermanentWidget(statistics_label_);
     statusBar()->addPermanentWidget(cursor_label_);
 }
@@ -194,6 +206,11 @@ bool MainWindow::load(const QString& path, bool keep_camera)
 void MainWindow::showPreprocessed(std::shared_ptr<const Preprocessed> p, const QString& source, bool keep_camera)
 {
     if (!p) return;
+    if (isRunning()) {
+        joinRun();
+        log(tr("The run was stopped: another model was opened."));
+    }
+    last_snapshot_.reset();
     const QString name = p->model.name.empty() ? QFileInfo(source).fileName() : to_qt(p->model.name);
     setWindowTitle(tr("%1 - mcdda").arg(name));
     setWindowFilePath(source);
@@ -222,6 +239,7 @@ void MainWindow::showPreprocessed(std::shared_ptr<const Preprocessed> p, const Q
     }
     messages_->setPlainText(lines.join(QLatin1Char('\n')));
     view_->setScene(std::move(p), keep_camera);
+    updateRunActions();
     if (!view_->scene()->ok) reportFailure(*view_->scene(), source);
 }
 
@@ -244,6 +262,207 @@ void MainWindow::reportFailure(const Preprocessed& p, const QString& source)
     box->setDetailedText(errors.join(QLatin1Char('\n')));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
+}
+
+void MainWindow::createRunActions()
+{
+    QMenu* run = menuBar()->addMenu(tr("&Run"));
+    QToolBar* bar = addToolBar(tr("Run"));
+    bar->setObjectName(QStringLiteral("run"));
+    run_action_ = run->addAction(tr("&Run"), this, &MainWindow::startRun);
+    run_action_->setObjectName(QStringLiteral("runAction"));
+    run_action_->setShortcut(QKeySequence(Qt::Key_F5));
+    run_action_->setStatusTip(tr("Analyse the model; the picture follows the run"));
+    pause_action_ = run->addAction(tr("&Pause"), this, &MainWindow::togglePause);
+    pause_action_->setObjectName(QStringLiteral("pauseAction"));
+    pause_action_->setStatusTip(tr("Pause or resume the run"));
+    stop_action_ = run->addAction(tr("&Stop"), this, &MainWindow::stopRun);
+    stop_action_->setObjectName(QStringLiteral("stopAction"));
+    stop_action_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    stop_action_->setStatusTip(tr("Stop the run after the current step; the results so far are kept"));
+    run->addSeparator();
+    QAction* folder = run->addAction(tr("Results &Folder..."), this, [this] {
+        const QString chosen =
+            QFileDialog::getExistingDirectory(this, tr("Folder for the results"), runOutputFolder());
+        if (!chosen.isEmpty()) output_folder_ = chosen;
+    });
+    folder->setStatusTip(tr("Choose where runs write their files"));
+    bar->addAction(run_action_);
+    bar->addAction(pause_action_);
+    bar->addAction(stop_action_);
+    bar->addSeparator();
+    field_box_ = new QComboBox(this);
+    field_box_->setToolTip(tr("Field shown for results"));
+    field_box_->addItem(tr("Displacement"), QStringLiteral("displacement"));
+    field_box_->addItem(tr("Plastic state"), QStringLiteral("plastic_state"));
+    connect(field_box_, &QComboBox::currentIndexChanged, this, [this] { showResult(); });
+    bar->addWidget(field_box_);
+    updateRunActions();
+}
+
+void MainWindow::updateRunActions()
+{
+    const bool running = isRunning();
+    const auto scene = view_->scene();
+    run_action_->setEnabled(!running && scene && scene->ok);
+    pause_action_->setEnabled(running);
+    pause_action_->setText(running && controller_->isPaused() ? tr("Res&ume") : tr("&Pause"));
+    stop_action_->setEnabled(running);
+}
+
+QString MainWindow::runOutputFolder() const
+{
+    if (running_folder_.size() > 0 && isRunning()) return running_folder_;
+    if (!output_folder_.isEmpty()) return output_folder_;
+    const QString source = windowFilePath();
+    if (source.isEmpty()) return QDir::current().absoluteFilePath(QStringLiteral("model-results"));
+    const QFileInfo info(source);
+    return info.absoluteDir().absoluteFilePath(info.completeBaseName() + QStringLiteral("-results"));
+}
+
+void MainWindow::setRunThrottle(int progress_ms, int snapshot_ms)
+{
+    progress_ms_ = progress_ms;
+    snapshot_ms_ = snapshot_ms;
+}
+
+QString MainWindow::resultField() const { return field_box_->currentData().toString(); }
+
+void MainWindow::setResultField(const QString& field)
+{
+    const int index = field_box_->findData(field);
+    if (index >= 0) field_box_->setCurrentIndex(index);
+}
+
+void MainWindow::log(const QString& line) { messages_->appendPlainText(line); }
+
+bool MainWindow::startRun()
+{
+    const auto scene = view_->scene();
+    if (isRunning() || !scene || !scene->ok) return false;
+    running_folder_ = runOutputFolder();
+    const QString stem = windowFilePath().isEmpty() ? QStringLiteral("model")
+                                                    : QFileInfo(windowFilePath()).completeBaseName();
+    controller_ = new RunController(*scene, running_folder_, stem);
+    controller_->setThrottle(progress_ms_, snapshot_ms_);
+    run_thread_ = new QThread(this);
+    run_thread_->setObjectName(QStringLiteral("mcdda-run"));
+    controller_->moveToThread(run_thread_);
+    connect(run_thread_, &QThread::started, controller_, &RunController::start);
+    connect(controller_, &RunController::progress, this, &MainWindow::onRunProgress, Qt::QueuedConnection);
+    connect(controller_, &RunController::snapshot, this, &MainWindow::onRunSnapshot, Qt::QueuedConnection);
+    connect(controller_, &RunController::finished, this, &MainWindow::onRunFinished, Qt::QueuedConnection);
+
+    last_snapshot_.reset();
+    progress_bar_->setRange(0, std::max(1, scene->model.analysis.steps));
+    progress_bar_->setValue(0);
+    progress_bar_->setVisible(true);
+    log(tr("Run started: %n step(s); results in %1", "", scene->model.analysis.steps).arg(running_folder_));
+    run_thread_->start();
+    updateRunActions();
+    return true;
+}
+
+void MainWindow::togglePause()
+{
+    if (!isRunning()) return;
+    if (controller_->isPaused()) {
+        controller_->resume();
+        log(tr("Run resumed."));
+    } else {
+        controller_->pause();
+        log(tr("Run paused."));
+    }
+    updateRunActions();
+}
+
+void MainWindow::stopRun()
+{
+    if (!isRunning()) return;
+    controller_->stop();  // thread-safe; finished(Cancelled) follows
+    stop_action_->setEnabled(false);
+    pause_action_->setEnabled(false);
+    log(tr("Stopping the run..."));
+}
+
+void MainWindow::onRunProgress(const RunProgress& p)
+{
+    progress_bar_->setValue(std::min(p.step, progress_bar_->maximum()));
+    log(tr("step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  "
+           "plastic iterations %8  yielding %9")
+            .arg(p.step)
+            .arg(p.total_steps)
+            .arg(p.time, 0, 'g', 6)
+            .arg(p.time_step, 0, 'g', 4)
+            .arg(p.open)
+            .arg(p.sliding)
+            .arg(p.locked)
+            .arg(p.plastic_iterations)
+            .arg(p.yielding));
+    emit runProgressed(p);
+}
+
+void MainWindow::onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot)
+{
+    if (!isRunning()) return;  // a late one from a run already joined
+    last_snapshot_ = std::move(snapshot);
+    showResult();
+}
+
+void MainWindow::showResult()
+{
+    if (!last_snapshot_) return;
+    view::ResultOptions options;
+    options.field = resultField().toStdString();
+    view_->setResult(last_snapshot_, options);
+}
+
+void MainWindow::onRunFinished(RunStatus status, const QString& message)
+{
+    const QString folder = running_folder_;
+    joinRun();
+    progress_bar_->setVisible(false);
+    const int step = last_snapshot_ ? last_snapshot_->step : 0;
+    QString text;
+    switch (status) {
+        case RunStatus::Completed: text = tr("Run completed: %n step(s).", "", step); break;
+        case RunStatus::Cancelled: text = tr("Run stopped after step %1.").arg(step); break;
+        case RunStatus::Collapsed: text = tr("The model collapsed: %1").arg(message); break;
+        default: text = tr("The run failed: %1").arg(message); break;
+    }
+    log(text);
+    log(tr("Results in %1").arg(folder));
+    statusBar()->showMessage(text, 10000);
+    if (status == RunStatus::Collapsed || status == RunStatus::Failed) {
+        // Non-blocking, like reportFailure().
+        auto* box = new QMessageBox(status == RunStatus::Collapsed ? QMessageBox::Warning : QMessageBox::Critical,
+                                    status == RunStatus::Collapsed ? tr("Collapse") : tr("Run failed"), text,
+                                    QMessageBox::Ok, this);
+        box->setInformativeText(tr("The results up to the last accepted step are kept in %1.").arg(folder));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    }
+    emit runFinished(status, message);
+}
+
+void MainWindow::joinRun()
+{
+    if (run_thread_ == nullptr) return;
+    controller_->stop();
+    controller_->resume();  // a paused run must wake up to see the stop
+    run_thread_->quit();    // takes effect once start() has returned
+    run_thread_->wait();
+    delete controller_;  // its thread has ended: safe from here
+    controller_ = nullptr;
+    delete run_thread_;
+    run_thread_ = nullptr;
+    updateRunActions();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    joinRun();
+    QMainWindow::closeEvent(event);
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event)

@@ -2,9 +2,13 @@
 /// \file MainWindow.hpp
 /// The desktop program's main window: opens a model file, pre-processes it (read, check, cut,
 /// mesh) and shows the result; messages go to a dock, cursor position and mesh figures to the
-/// status bar.
+/// status bar. Run ▸ Run analyses the model on a worker thread (RunController) and shows the
+/// latest result snapshot live, coloured by the field chosen in the Run toolbar.
 
 #include "Preprocess.hpp"
+#include "run/ResultSnapshot.hpp"
+#include "run/RunController.hpp"
+#include "run/RunOutput.hpp"
 
 #include <QMainWindow>
 #include <QString>
@@ -15,6 +19,9 @@ class QAction;
 class QLabel;
 class QPlainTextEdit;
 class QDockWidget;
+class QComboBox;
+class QProgressBar;
+class QThread;
 
 namespace mcdda::gui {
 
@@ -45,13 +52,39 @@ public:
     /// The mesh figures in the status bar.
     QString statisticsText() const;
 
+    /// Whether an analysis is running (possibly paused).
+    bool isRunning() const { return controller_ != nullptr; }
+    /// Folder the next run writes its files to; empty = the default, <model>-results next to
+    /// the model file.
+    void setRunOutputFolder(const QString& folder) { output_folder_ = folder; }
+    /// The folder the current or next run writes to.
+    QString runOutputFolder() const;
+    /// Minimum intervals between progress and snapshot updates of the next runs (ms).
+    void setRunThrottle(int progress_ms, int snapshot_ms);
+    /// The field shown while and after running: "displacement" or "plastic_state".
+    QString resultField() const;
+    void setResultField(const QString& field);
+
 public slots:
+    /// Run ▸ Run: analyses the shown model on a worker thread. False when there is no usable
+    /// model or a run is going on.
+    bool startRun();
+    /// Run ▸ Pause / Resume.
+    void togglePause();
+    /// Run ▸ Stop: the run ends after the current step (finished with Cancelled).
+    void stopRun();
     /// File ▸ Open: asks for a *.json model.
     void openDialog();
     /// File ▸ Reload: reads the current file again, keeping the view.
     void reload();
 
+signals:
+    /// A run reported progress (throttled) / ended.
+    void runProgressed(const mcdda::gui::RunProgress& progress);
+    void runFinished(mcdda::RunStatus status, const QString& message);
+
 protected:
+    void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
@@ -63,6 +96,15 @@ private:
     void showCursor(const QPointF& model_pos);
     void reportFailure(const Preprocessed& p, const QString& source);
     bool load(const QString& path, bool keep_camera);
+    void createRunActions();
+    void updateRunActions();
+    void onRunProgress(const RunProgress& progress);
+    void onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot);
+    void onRunFinished(RunStatus status, const QString& message);
+    void showResult();
+    void log(const QString& line);
+    /// Stops the run if one is going on and joins its thread.
+    void joinRun();
 
     ModelView* view_ = nullptr;
     QPlainTextEdit* messages_ = nullptr;
@@ -76,6 +118,17 @@ private:
     QAction* show_loads_ = nullptr;
     QAction* show_points_ = nullptr;
     QAction* show_legend_ = nullptr;
+    QAction* run_action_ = nullptr;
+    QAction* pause_action_ = nullptr;
+    QAction* stop_action_ = nullptr;
+    QComboBox* field_box_ = nullptr;
+    QProgressBar* progress_bar_ = nullptr;
+    QThread* run_thread_ = nullptr;
+    RunController* controller_ = nullptr;
+    std::shared_ptr<const ResultSnapshot> last_snapshot_;
+    QString output_folder_;  ///< chosen by the user; empty = default
+    QString running_folder_;  ///< of the current run
+    int progress_ms_ = 100, snapshot_ms_ = 250;
     QString path_;
     QString last_folder_;
 };

@@ -8,6 +8,7 @@
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
+#include <vtkCellType.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -69,24 +70,59 @@ vtkDataArray* find_array(vtkUnstructuredGrid* grid, const FieldInfo& f)
     return a;
 }
 
+std::string list_names(const std::vector<std::string>& names)
+{
+    std::string s;
+    for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+    return s.empty() ? std::string("none") : s;
+}
+
 /// A result file read and checked against the model.
 struct Result {
     vtkSmartPointer<vtkUnstructuredGrid> grid;
     const FieldInfo* field = nullptr;
 };
 
+const FieldInfo& find_field(const ResultOptions& options)
+{
+    for (const FieldInfo& f : field_table)
+        if (options.field == f.name) return f;
+    throw ResultFieldError("unknown field \"" + options.field + "\" (available: " + list_names(result_field_names()) +
+                           ")");
+}
+
+/// Checks a result grid (read from `source`) against the model and the options.
+Result check_result(vtkSmartPointer<vtkUnstructuredGrid> grid, const Preprocessed& model, const std::string& source,
+                    const FieldInfo& field, const ResultOptions& options)
+{
+    Result r;
+    r.grid = std::move(grid);
+    if (r.grid == nullptr || r.grid->GetNumberOfCells() == 0 || r.grid->GetNumberOfPoints() == 0)
+        throw std::runtime_error("cannot read results " + source + ": the file is damaged or holds no cells");
+    const auto cells = static_cast<std::size_t>(r.grid->GetNumberOfCells());
+    if (cells != model.mesh.triangles.size())
+        throw std::runtime_error("results " + source + " have " + std::to_string(cells) +
+                                 " cells but the model's mesh has " + std::to_string(model.mesh.triangles.size()) +
+                                 " triangles: were they written by a run of this model (with the same --set options)?");
+    r.field = &field;
+    if (find_array(r.grid, field) == nullptr) {
+        std::vector<std::string> present;
+        for (const FieldInfo& f : field_table)
+            if (find_array(r.grid, f) != nullptr) present.emplace_back(f.name);
+        throw ResultFieldError("results " + source + " hold no field \"" + options.field + "\" (available: " +
+                               list_names(present) + ")");
+    }
+    if (options.deform != 0.0) {
+        vtkDataArray* d = r.grid->GetPointData()->GetArray("displacement");
+        if (d == nullptr || d->GetNumberOfComponents() < 2)
+            throw ResultFieldError("results " + source + " hold no displacement to deform the mesh with");
+    }
+    return r;
+}
+
 Result load_result(const Preprocessed& model, const std::string& path, const ResultOptions& options)
 {
-    const FieldInfo* field = nullptr;
-    for (const FieldInfo& f : field_table)
-        if (options.field == f.name) field = &f;
-    auto list = [](const std::vector<std::string>& names) {
-        std::string s;
-        for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
-        return s.empty() ? std::string("none") : s;
-    };
-    if (field == nullptr)
-        throw ResultFieldError("unknown field \"" + options.field + "\" (available: " + list(result_field_names()) + ")");
+    const FieldInfo& field = find_field(options);
     if (!std::isfinite(options.deform)) throw ResultFieldError("the deformation factor must be a finite number");
 
     std::error_code ec;
@@ -97,29 +133,63 @@ Result load_result(const Preprocessed& model, const std::string& path, const Res
         throw std::runtime_error("cannot read results " + path + ": not a VTK XML unstructured grid (.vtu)");
     reader->SetFileName(path.c_str());
     reader->Update();
-    Result r;
-    r.grid = reader->GetOutput();
-    if (r.grid == nullptr || r.grid->GetNumberOfCells() == 0 || r.grid->GetNumberOfPoints() == 0)
-        throw std::runtime_error("cannot read results " + path + ": the file is damaged or holds no cells");
-    const auto cells = static_cast<std::size_t>(r.grid->GetNumberOfCells());
-    if (cells != model.mesh.triangles.size())
-        throw std::runtime_error("results " + path + " have " + std::to_string(cells) +
-                                 " cells but the model's mesh has " + std::to_string(model.mesh.triangles.size()) +
-                                 " triangles: were they written by a run of this model (with the same --set options)?");
-    r.field = field;
-    if (find_array(r.grid, *field) == nullptr) {
-        std::vector<std::string> present;
-        for (const FieldInfo& f : field_table)
-            if (find_array(r.grid, f) != nullptr) present.emplace_back(f.name);
-        throw ResultFieldError("results " + path + " hold no field \"" + options.field + "\" (available: " +
-                               list(present) + ")");
+    return check_result(reader->GetOutput(), model, path, field, options);
+}
+
+/// The same grid as a result file holds (points undeformed, the arrays of RunOutput), from a
+/// snapshot in memory. Arrays with the wrong length are left out (then reported as missing).
+Result snapshot_result(const Preprocessed& model, const ResultSnapshot& s, const ResultOptions& options)
+{
+    const FieldInfo& field = find_field(options);
+    if (!std::isfinite(options.deform)) throw ResultFieldError("the deformation factor must be a finite number");
+    const Mesh& mesh = model.mesh;
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    vtkNew<vtkPoints> points;
+    for (const Point2& q : mesh.nodes) points->InsertNextPoint(q.x, q.y, 0.0);
+    grid->SetPoints(points);
+    grid->Allocate(static_cast<vtkIdType>(mesh.triangles.size()));
+    for (const auto& t : mesh.triangles) {
+        const vtkIdType ids[3] = {static_cast<vtkIdType>(t[0]), static_cast<vtkIdType>(t[1]),
+                                  static_cast<vtkIdType>(t[2])};
+        grid->InsertNextCell(VTK_TRIANGLE, 3, ids);
     }
-    if (options.deform != 0.0) {
-        vtkDataArray* d = r.grid->GetPointData()->GetArray("displacement");
-        if (d == nullptr || d->GetNumberOfComponents() < 2)
-            throw ResultFieldError("results " + path + " hold no displacement to deform the mesh with");
+    const std::size_t nodes = mesh.nodes.size(), cells = mesh.triangles.size();
+    if (s.displacement.size() == 2 * nodes) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName("displacement");
+        a->SetNumberOfComponents(3);
+        for (std::size_t i = 0; i < nodes; ++i) a->InsertNextTuple3(s.displacement[2 * i], s.displacement[2 * i + 1], 0.0);
+        grid->GetPointData()->AddArray(a);
     }
-    return r;
+    if (mesh.triangle_block.size() == cells) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName("block");
+        for (int b : mesh.triangle_block) a->InsertNextValue(b);
+        grid->GetCellData()->AddArray(a);
+    }
+    if (s.stress.size() == cells) {
+        vtkNew<vtkDoubleArray> a;  // VTK's symmetric tensor order, as in the files
+        a->SetName("stress");
+        a->SetNumberOfComponents(6);
+        for (const auto& t : s.stress) {
+            const double v[6] = {t[0], t[1], t[2], t[3], 0.0, 0.0};
+            a->InsertNextTuple(v);
+        }
+        grid->GetCellData()->AddArray(a);
+    }
+    if (s.plastic_state.size() == cells) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName("plastic_state");
+        for (unsigned char v : s.plastic_state) a->InsertNextValue(v);
+        grid->GetCellData()->AddArray(a);
+    }
+    if (s.plastic_strain.size() == cells) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName("plastic_strain");
+        for (double v : s.plastic_strain) a->InsertNextValue(v);
+        grid->GetCellData()->AddArray(a);
+    }
+    return check_result(grid, model, "of step " + std::to_string(s.step), field, options);
 }
 
 double dpi_of(vtkRenderer* renderer)
@@ -346,6 +416,13 @@ void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const 
 {
     if (renderer == nullptr) return;
     add_result(renderer, model, load_result(model, vtu_path, options), options);
+}
+
+void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const ResultSnapshot& snapshot,
+                        const ResultOptions& options)
+{
+    if (renderer == nullptr) return;
+    add_result(renderer, model, snapshot_result(model, snapshot, options), options);
 }
 
 void render_result_png(const Preprocessed& model, const std::string& vtu_path, const ResultOptions& options,

@@ -1,9 +1,11 @@
 #pragma once
 /// \file ResultScene.hpp
-/// Pictures of a run's result: the mesh of one result .vtu (as written by `mcdda run`) coloured
-/// by one field, with block boundaries, joints and a colour legend. VTK stays out of this header.
+/// Pictures of a run's result: the mesh of one result .vtu (as written by `mcdda run`) or of a
+/// snapshot in memory, coloured by one field, with block boundaries, joints and a colour legend.
+/// Both go through the same grid and colouring code. VTK stays out of this header.
 
 #include "Preprocess.hpp"
+#include "run/ResultSnapshot.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -37,6 +39,12 @@ const std::vector<std::string>& result_field_names();
 /// or missing field and std::runtime_error for a missing or unreadable file or a cell count
 /// that differs from the model's mesh.
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const std::string& vtu_path,
+                        const ResultOptions& options);
+
+/// The same scene from a snapshot of a run in memory (the mesh is the model's): what the desktop
+/// program shows while it runs. Throws like the above (ResultFieldError for an unknown field,
+/// std::runtime_error when the snapshot does not belong to the model's mesh).
+void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const ResultSnapshot& snapshot,
                         const ResultOptions& options);
 
 /// Renders the result scene off-screen to a PNG at `png_path` like render_png (X display,

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <exception>
 
 namespace mcdda::gui {
 
@@ -27,6 +28,8 @@ struct ModelView::Impl {
     vtkNew<vtkRenderer> renderer;
     std::shared_ptr<const Preprocessed> scene;
     view::SceneOptions options;
+    std::shared_ptr<const ResultSnapshot> result;  ///< shown instead of the model when set
+    view::ResultOptions result_options;
     bool window_ready = false;    ///< VTK was given our native window
     bool camera_touched = false;  ///< the user navigated since the last fit: resizing keeps the view
     bool panning = false;
@@ -97,7 +100,18 @@ void ModelView::rebuild(bool keep_camera)
 
     syncSize();
     impl_->renderer->RemoveAllViewProps();
-    if (impl_->scene) view::build_model_scene(impl_->renderer, *impl_->scene, impl_->options);
+    bool drawn = false;
+    if (impl_->scene && impl_->result) {
+        try {
+            view::build_result_scene(impl_->renderer, *impl_->scene, *impl_->result, impl_->result_options);
+            drawn = true;
+        } catch (const std::exception& e) {
+            qWarning("ModelView: cannot show the result: %s", e.what());
+            impl_->result.reset();
+            impl_->renderer->RemoveAllViewProps();
+        }
+    }
+    if (impl_->scene && !drawn) view::build_model_scene(impl_->renderer, *impl_->scene, impl_->options);
     if (keep_camera) {
         impl_->renderer->GetActiveCamera()->DeepCopy(saved);
         impl_->renderer->ResetCameraClippingRange();
@@ -113,13 +127,32 @@ void ModelView::setScene(const Preprocessed& p, bool keep_camera)
 void ModelView::setScene(std::shared_ptr<const Preprocessed> p, bool keep_camera)
 {
     impl_->scene = std::move(p);
+    impl_->result.reset();
     if (!keep_camera) impl_->camera_touched = false;
     rebuild(keep_camera);
 }
 
+bool ModelView::setResult(std::shared_ptr<const ResultSnapshot> snapshot, const view::ResultOptions& options)
+{
+    impl_->result = std::move(snapshot);
+    impl_->result_options = options;
+    rebuild(impl_->camera_touched);  // a view nobody navigated in stays fitted (legend included)
+    return impl_->result != nullptr;
+}
+
+void ModelView::clearResult()
+{
+    if (!impl_->result) return;
+    impl_->result.reset();
+    rebuild(impl_->camera_touched);
+}
+
+std::shared_ptr<const ResultSnapshot> ModelView::result() const { return impl_->result; }
+
 void ModelView::clearScene()
 {
     impl_->scene.reset();
+    impl_->result.reset();
     impl_->camera_touched = false;
     rebuild(false);
 }

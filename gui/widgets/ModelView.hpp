@@ -4,7 +4,9 @@
 /// vtkRenderWindow draws into (DESIGN.md §5, route 2), with 2-D navigation done here in Qt's
 /// event handlers (drag pans, wheel zooms about the cursor). VTK stays in the .cpp.
 
+#include "run/ResultSnapshot.hpp"
 #include "view/ModelScene.hpp"
+#include "view/ResultScene.hpp"
 
 #include <QImage>
 #include <QPointF>
@@ -30,6 +32,16 @@ public:
     void clearScene();
     /// The scene shown, or null.
     std::shared_ptr<const Preprocessed> scene() const;
+
+    /// Shows a run's result on the current model's mesh instead of the model (e.g. the latest
+    /// snapshot of a running analysis), coloured as `options` say; the camera is kept. Returns
+    /// false (and keeps showing the model) when the snapshot does not fit the model or the
+    /// field is unknown.
+    bool setResult(std::shared_ptr<const ResultSnapshot> snapshot, const view::ResultOptions& options);
+    /// Back to the model picture.
+    void clearResult();
+    /// The snapshot shown, or null.
+    std::shared_ptr<const ResultSnapshot> result() const;
 
     /// What is drawn; changing it rebuilds the picture and keeps the camera.
     void setSceneOptions(const view::SceneOptions& options);

@@ -1,0 +1,75 @@
+#pragma once
+/// \file ModelDocument.hpp
+/// The model being edited in the desktop program: the Model, its file, the undo history and
+/// whether it differs from the file (the undo stack's clean state). Qt Core/Gui only — no
+/// widgets, no VTK — so it is tested without a display.
+///
+/// Every edit goes through a QUndoCommand (Commands.hpp) pushed onto undoStack(); the commands
+/// change the model through DocumentCommand, which emits changed().
+
+#include "model/Diagnostic.hpp"
+#include "model/Model.hpp"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <vector>
+
+namespace mcdda::gui {
+
+class ModelDocument : public QObject {
+    Q_OBJECT
+
+public:
+    explicit ModelDocument(QObject* parent = nullptr);
+    ~ModelDocument() override;
+
+    const Model& model() const { return model_; }
+    /// The model file; empty for a document never saved.
+    QString path() const { return path_; }
+    QUndoStack* undoStack() { return &undo_; }
+    /// True when the model differs from its file (or from the state when it was set).
+    bool isModified() const { return !undo_.isClean(); }
+
+    /// Replaces the model (a new document): the undo history is cleared, the document is clean.
+    void setModel(const Model& model, const QString& path = QString());
+
+    /// Reads the model file at `path` into the document. Returns the reader's messages; when
+    /// they contain errors the document is unchanged.
+    std::vector<Diagnostic> open(const QString& path);
+
+    /// Writes the model to its file (atomically: a failure leaves the old file as it was).
+    /// Returns false with a message in `error` when the document has no file or writing failed.
+    bool save(QString* error = nullptr);
+    /// Writes the model to `path` and makes that the document's file on success.
+    bool saveAs(const QString& path, QString* error = nullptr);
+
+    // Undoable edits (each pushes one command; see Commands.hpp).
+    /// Adds a region of material `material` (an index into Model::materials); an empty name
+    /// becomes "region N".
+    void addRegion(const Ring& boundary, int material, const QString& name = QString());
+    /// Adds an explicit joint along the polyline; an empty name becomes "joint N".
+    void addJoint(const std::vector<Point2>& points, int jointMaterial = -1, const QString& name = QString());
+    /// Replaces material `index`.
+    void setMaterial(int index, const Material& material);
+    void setAnalysisSettings(const AnalysisSettings& settings);
+
+signals:
+    /// The model changed (an edit, undo, redo, open or setModel).
+    void changed();
+    /// The file path changed (open, setModel, saveAs).
+    void pathChanged();
+    /// isModified() changed.
+    void modifiedChanged(bool modified);
+
+private:
+    friend class DocumentCommand;
+    void setPath(const QString& path);
+
+    Model model_;
+    QString path_;
+    QUndoStack undo_;
+};
+
+}  // namespace mcdda::gui

@@ -1,0 +1,27 @@
+#pragma once
+/// \file ResultSnapshot.hpp
+/// One moment of a run, copied out of the solver's state on the worker thread and handed to the
+/// GUI thread as std::shared_ptr<const ResultSnapshot> (DESIGN.md §4): plain data, no Qt, no VTK.
+/// Node and element order are those of the run's mesh (Preprocessed::mesh).
+
+#include <array>
+#include <vector>
+
+namespace mcdda {
+
+class Simulation;
+
+struct ResultSnapshot {
+    int step = 0;         ///< accepted steps so far
+    int total_steps = 0;  ///< steps the analysis asks for
+    double time = 0.0;    ///< s
+    std::vector<double> displacement;         ///< m, 2 per node (ux, uy), since the start
+    std::vector<std::array<double, 4>> stress;  ///< Pa, per element (xx, yy, zz, xy), tension positive
+    std::vector<double> plastic_strain;       ///< per element, accumulated equivalent
+    std::vector<unsigned char> plastic_state;  ///< per element: 0 never, 1 earlier, 2 yielding now
+
+    /// The current state of `simulation`.
+    static ResultSnapshot of(const Simulation& simulation);
+};
+
+}  // namespace mcdda

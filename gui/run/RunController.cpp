@@ -1,0 +1,170 @@
+#include "run/RunController.hpp"
+
+#include "run/Simulation.hpp"
+
+#include <QElapsedTimer>
+
+#include <chrono>
+#include <exception>
+#include <optional>
+#include <string>
+
+namespace mcdda::gui {
+
+void register_run_types()
+{
+    qRegisterMetaType<mcdda::gui::RunProgress>();
+    qRegisterMetaType<std::shared_ptr<const mcdda::ResultSnapshot>>();
+    qRegisterMetaType<mcdda::RunStatus>();
+}
+
+RunController::RunController(const Preprocessed& model, QString output_folder, QString stem, QObject* parent)
+    : QObject(parent),
+      model_(std::make_shared<const Preprocessed>(model)),
+      output_folder_(std::move(output_folder)),
+      stem_(stem.isEmpty() ? QStringLiteral("model") : std::move(stem))
+{
+    register_run_types();
+}
+
+RunController::~RunController() = default;
+
+void RunController::setThrottle(int progress_ms, int snapshot_ms)
+{
+    progress_ms_ = progress_ms;
+    snapshot_ms_ = snapshot_ms;
+}
+
+void RunController::pause()
+{
+    paused_ = true;
+}
+
+void RunController::resume()
+{
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        paused_ = false;
+    }
+    wake_.notify_all();
+}
+
+void RunController::stop()
+{
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+}
+
+bool RunController::waitWhilePaused()
+{
+    std::unique_lock<std::mutex> lock(mutex_);
+    wake_.wait(lock, [this] { return !paused_ || stop_; });
+    return !stop_;
+}
+
+void RunController::start()
+{
+    const Preprocessed& p = *model_;
+    std::unique_ptr<RunOutput> output;
+    std::unique_ptr<Simulation> simulation;
+    try {
+        if (!p.ok) throw std::runtime_error("the model has errors: it cannot be run");
+        if (!output_folder_.isEmpty())
+            output = std::make_unique<RunOutput>(output_folder_.toStdString(), stem_.toStdString());
+        simulation = std::make_unique<Simulation>(p);
+    } catch (const std::exception& e) {
+        if (output) output->write_summary(nullptr, RunStatus::Failed, e.what());
+        emit finished(RunStatus::Failed, QString::fromStdString(e.what()));
+        return;
+    }
+
+    const int steps = p.model.analysis.steps;
+    const int every = std::max(1, p.model.analysis.output_every);
+    RunStatus status = RunStatus::Completed;
+    std::string message;
+    int last_saved = -1;
+    QElapsedTimer progress_clock, snapshot_clock;
+    std::optional<RunProgress> unsent;  // the latest progress not sent yet (throttled)
+    bool snapshot_unsent = false;
+    auto send_snapshot = [&] {
+        emit snapshot(std::make_shared<const ResultSnapshot>(ResultSnapshot::of(*simulation)));
+        snapshot_clock.restart();
+        snapshot_unsent = false;
+    };
+    try {
+        if (output) {
+            output->record_history(*simulation);
+            output->save_step(*simulation);
+            last_saved = 0;
+        }
+        send_snapshot();
+        while (simulation->state().step < steps) {
+            if (stop_ || (paused_ && !waitWhilePaused())) {
+                status = RunStatus::Cancelled;
+                message = "cancelled after step " + std::to_string(simulation->state().step);
+                break;
+            }
+            StepReport report;
+            try {
+                report = simulation->advance();
+            } catch (const PlasticCollapse& e) {
+                status = RunStatus::Collapsed;
+                std::string reached;
+                for (const auto& [name, value] : simulation->load_magnitudes())
+                    reached += (reached.empty() ? "" : ", ") + name + " = " + std::to_string(value);
+                message = "collapse at step " + std::to_string(simulation->state().step + 1) + ": " + e.what() +
+                          (reached.empty() ? std::string() : "; last converged load: " + reached);
+                break;
+            } catch (const std::exception& e) {
+                status = RunStatus::Failed;
+                message = "step " + std::to_string(simulation->state().step + 1) + " failed: " + e.what();
+                break;
+            }
+            if (output) {
+                output->record_history(*simulation);
+                if (report.step % every == 0 || report.step == steps) {
+                    output->save_step(*simulation);
+                    last_saved = report.step;
+                }
+            }
+            RunProgress info;
+            info.step = report.step;
+            info.total_steps = steps;
+            info.time = report.time;
+            info.time_step = report.time_step;
+            info.open = report.open;
+            info.sliding = report.sliding;
+            info.locked = report.locked;
+            info.plastic_iterations = report.plastic_iterations;
+            info.yielding = report.yielding;
+            unsent = info;
+            snapshot_unsent = true;
+            if (!progress_clock.isValid() || progress_clock.elapsed() >= progress_ms_) {
+                emit progress(*unsent);
+                unsent.reset();
+                progress_clock.restart();
+            }
+            if (snapshot_clock.elapsed() >= snapshot_ms_) send_snapshot();
+        }
+        if (output && last_saved != simulation->state().step) output->save_step(*simulation);
+    } catch (const std::exception& e) {  // writing the results failed
+        status = RunStatus::Failed;
+        message = std::string("cannot write the results: ") + e.what();
+    }
+    if (unsent) emit progress(*unsent);
+    if (snapshot_unsent) send_snapshot();
+    if (output) {
+        try {
+            output->write_summary(simulation.get(), status, message.empty() ? "completed" : message);
+        } catch (const std::exception& e) {
+            if (status == RunStatus::Completed) status = RunStatus::Failed;
+            message += (message.empty() ? "" : "; ") + std::string("cannot write the summary: ") + e.what();
+        }
+    }
+    emit finished(status, QString::fromStdString(message));
+}
+
+}  // namespace mcdda::gui

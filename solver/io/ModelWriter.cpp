@@ -1,0 +1,335 @@
+#include "io/ModelWriter.hpp"
+
+#include "io/AtomicFile.hpp"
+#include "Version.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace mcdda {
+
+namespace {
+
+// Keys in the order of docs/model-format.md, not sorted.
+using json = nlohmann::ordered_json;
+constexpr double pi = 3.14159265358979323846;
+constexpr double degree = pi / 180.0;
+
+/// Radians (inside) to degrees (file). The reader multiplies by `degree`; the shortest decimal
+/// that gives back exactly `radians` that way is chosen, so 30° is written as 30, not as
+/// 29.999999999999996. Without such a decimal, the nearest degree value (off by an ulp or so).
+double to_degrees(double radians) {
+    const double nearest = radians / degree;
+    char text[40];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, nearest);
+        const double candidate = std::strtod(text, nullptr);
+        if (candidate * degree == radians) return candidate;
+    }
+    return nearest;
+}
+
+json point(Point2 p) { return json::array({p.x, p.y}); }
+
+json ring(const Ring& r) {
+    json out = json::array();
+    for (const Point2& p : r) out.push_back(point(p));
+    return out;
+}
+
+/// Name of item `index` of `list`, for a reference; an index out of range is a program error.
+template <class List>
+std::string name_of(const List& list, int index, const char* what) {
+    if (index < 0 || static_cast<std::size_t>(index) >= list.size())
+        throw std::invalid_argument(std::string("model refers to a missing ") + what + " (index " +
+                                    std::to_string(index) + ")");
+    return list[static_cast<std::size_t>(index)].name;
+}
+
+json to_json(const Model& m) {
+    json root;
+    root["format"] = model_format_name;
+    root["version"] = model_format_version;
+    if (!m.name.empty()) root["name"] = m.name;
+    if (!m.description.empty()) root["description"] = m.description;
+
+    json materials = json::array();
+    for (const Material& mat : m.materials) {
+        json o;
+        o["name"] = mat.name;
+        o["young_modulus"] = mat.young_modulus;
+        o["poisson_ratio"] = mat.poisson_ratio;
+        o["density"] = mat.density;
+        o["cohesion"] = mat.cohesion;
+        o["friction_angle"] = to_degrees(mat.friction_angle);
+        o["dilation_angle"] = to_degrees(mat.dilation_angle);
+        o["tensile_strength"] = mat.tensile_strength;
+        o["plastic"] = mat.plastic;
+        materials.push_back(std::move(o));
+    }
+    root["materials"] = std::move(materials);
+
+    if (!m.joint_materials.empty()) {
+        json list = json::array();
+        for (const JointMaterial& jm : m.joint_materials) {
+            json o;
+            o["name"] = jm.name;
+            o["friction_angle"] = to_degrees(jm.friction_angle);
+            o["cohesion"] = jm.cohesion;
+            o["tensile_strength"] = jm.tensile_strength;
+            o["normal_stiffness"] = jm.normal_stiffness;
+            o["shear_stiffness"] = jm.shear_stiffness;
+            list.push_back(std::move(o));
+        }
+        root["joint_materials"] = std::move(list);
+    }
+    if (m.default_joint_material >= 0)
+        root["default_joint_material"] = name_of(m.joint_materials, m.default_joint_material, "joint material");
+
+    json regions = json::array();
+    for (const Region& r : m.regions) {
+        json o;
+        o["name"] = r.name;
+        o["material"] = name_of(m.materials, r.material, "material");
+        o["boundary"] = ring(r.boundary);
+        if (!r.holes.empty()) {
+            json holes = json::array();
+            for (const Ring& h : r.holes) holes.push_back(ring(h));
+            o["holes"] = std::move(holes);
+        }
+        regions.push_back(std::move(o));
+    }
+    root["regions"] = std::move(regions);
+
+    json joints = json::array();
+    for (const Joint& j : m.joints) {
+        if (j.joint_set >= 0) continue;  // generated from a joint set: the set is written instead
+        json o;
+        o["name"] = j.name;
+        json pts = json::array();
+        for (const Point2& p : j.points) pts.push_back(point(p));
+        o["points"] = std::move(pts);
+        if (j.joint_material >= 0)
+            o["joint_material"] = name_of(m.joint_materials, j.joint_material, "joint material");
+        joints.push_back(std::move(o));
+    }
+    if (!joints.empty()) root["joints"] = std::move(joints);
+
+    if (!m.joint_sets.empty()) {
+        json list = json::array();
+        for (const JointSet& s : m.joint_sets) {
+            json o;
+            o["name"] = s.name;
+            o["angle"] = to_degrees(s.angle);
+            o["spacing"] = s.spacing;
+            o["origin"] = point(s.origin);
+            if (s.extent) o["extent"] = json::array({(*s.extent)[0], (*s.extent)[1], (*s.extent)[2], (*s.extent)[3]});
+            if (s.joint_material >= 0)
+                o["joint_material"] = name_of(m.joint_materials, s.joint_material, "joint material");
+            list.push_back(std::move(o));
+        }
+        root["joint_sets"] = std::move(list);
+    }
+
+    if (!m.load_tables.empty()) {
+        json list = json::array();
+        for (const LoadTable& t : m.load_tables) {
+            json o;
+            o["name"] = t.name;
+            o["variable"] = t.variable == LoadTable::Variable::Time ? "time" : "step";
+            json pts = json::array();
+            for (const auto& q : t.points) pts.push_back(json::array({q[0], q[1]}));
+            o["points"] = std::move(pts);
+            o["extrapolate"] = t.extrapolate;
+            list.push_back(std::move(o));
+        }
+        root["load_tables"] = std::move(list);
+    }
+
+    if (!m.fixed_points.empty()) {
+        json list = json::array();
+        for (const FixedPoint& f : m.fixed_points) list.push_back(json{{"name", f.name}, {"point", point(f.point)}});
+        root["fixed_points"] = std::move(list);
+    }
+    if (!m.rollers.empty()) {
+        json list = json::array();
+        for (const Roller& r : m.rollers) {
+            json o;
+            o["name"] = r.name;
+            o["from"] = point(r.from);
+            o["to"] = point(r.to);
+            o["fixed"] = r.fix_x && r.fix_y ? "xy" : r.fix_x ? "x" : r.fix_y ? "y" : "";
+            list.push_back(std::move(o));
+        }
+        root["rollers"] = std::move(list);
+    }
+    if (!m.point_loads.empty()) {
+        json list = json::array();
+        for (const PointLoad& l : m.point_loads) {
+            json o;
+            o["name"] = l.name;
+            o["point"] = point(l.point);
+            o["force"] = point(l.force);
+            if (l.table >= 0) o["table"] = name_of(m.load_tables, l.table, "load table");
+            list.push_back(std::move(o));
+        }
+        root["point_loads"] = std::move(list);
+    }
+    if (!m.edge_pressures.empty()) {
+        json list = json::array();
+        for (const EdgePressure& e : m.edge_pressures) {
+            json o;
+            o["name"] = e.name;
+            o["from"] = point(e.from);
+            o["to"] = point(e.to);
+            o["pressure"] = e.pressure;  // positive pushes into the material, in file and model alike
+            if (e.table >= 0) o["table"] = name_of(m.load_tables, e.table, "load table");
+            list.push_back(std::move(o));
+        }
+        root["edge_pressures"] = std::move(list);
+    }
+    root["gravity"] = point(m.gravity);
+
+    const InitialStress& s = m.initial_stress;
+    if (s.kind == InitialStress::Kind::Uniform) {
+        // Stored tension positive; the file holds compressive magnitudes.
+        json o;
+        o["type"] = "uniform";
+        o["sxx"] = -s.stress[0];
+        o["syy"] = -s.stress[1];
+        o["sxy"] = -s.stress[2];
+        if (s.stress_zz) o["szz"] = -*s.stress_zz;
+        root["initial_stress"] = std::move(o);
+    } else if (s.kind == InitialStress::Kind::Gravity) {
+        root["initial_stress"] = json{{"type", "gravity"}, {"surface_y", s.surface_y}, {"k0", s.k0}};
+    }
+
+    if (!m.measurement_points.empty()) {
+        json list = json::array();
+        for (const MeasurementPoint& p : m.measurement_points)
+            list.push_back(json{{"name", p.name}, {"point", point(p.point)}});
+        root["measurement_points"] = std::move(list);
+    }
+
+    {
+        const MeshControls& c = m.mesh;
+        json o;
+        o["size"] = c.size;
+        o["min_angle"] = to_degrees(c.min_angle);
+        o["grading"] = c.grading;
+        if (!c.local.empty()) {
+            json list = json::array();
+            for (const LocalSize& l : c.local) {
+                json e;
+                if (l.from.x == l.to.x && l.from.y == l.to.y) {
+                    e["point"] = point(l.from);
+                } else {
+                    e["from"] = point(l.from);
+                    e["to"] = point(l.to);
+                }
+                e["size"] = l.size;
+                e["radius"] = l.radius;
+                list.push_back(std::move(e));
+            }
+            o["local"] = std::move(list);
+        }
+        o["max_elements"] = c.max_elements;
+        root["mesh"] = std::move(o);
+    }
+
+    {
+        const AnalysisSettings& a = m.analysis;
+        json o;
+        o["type"] = a.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static";
+        o["steps"] = a.steps;
+        o["time_step"] = a.time_step;
+        o["max_displacement_ratio"] = a.max_displacement_ratio;
+        o["penalty"] = a.penalty;
+        o["dynamic_ratio"] = a.dynamic_ratio;
+        o["open_close_iterations"] = a.max_open_close_iterations;
+        o["plastic_iterations"] = a.max_plastic_iterations;
+        o["plastic_tolerance"] = a.plastic_tolerance;
+        o["output_every"] = a.output_every;
+        o["plasticity"] = a.plasticity;
+        root["analysis"] = std::move(o);
+    }
+    return root;
+}
+
+/// An array of numbers only (a point, an extent) is written on one line.
+bool is_flat(const json& j) {
+    if (!j.is_array()) return false;
+    for (const json& e : j)
+        if (e.is_structured()) return false;
+    return true;
+}
+
+/// Arrays of flat arrays (rings, polylines, table points) get several points per line.
+bool is_list_of_flat(const json& j) {
+    if (!j.is_array() || j.empty()) return false;
+    for (const json& e : j)
+        if (!is_flat(e)) return false;
+    return true;
+}
+
+/// Pretty printer: objects one key per line; points inline. Scalars are dumped by nlohmann,
+/// whose number output is the shortest text that reads back to the same double (at most 17
+/// significant digits), so every value round-trips exactly.
+void print(std::ostream& out, const json& j, int indent) {
+    const std::string pad(static_cast<std::size_t>(indent) + 2, ' ');
+    if (j.is_primitive()) {
+        out << j.dump();
+    } else if (j.is_object()) {
+        if (j.empty()) { out << "{}"; return; }
+        out << "{\n";
+        bool first = true;
+        for (auto it = j.begin(); it != j.end(); ++it) {
+            if (!first) out << ",\n";
+            first = false;
+            out << pad << json(it.key()).dump() << ": ";
+            print(out, it.value(), indent + 2);
+        }
+        out << "\n" << std::string(static_cast<std::size_t>(indent), ' ') << "}";
+    } else if (is_flat(j)) {
+        out << "[";
+        for (std::size_t i = 0; i < j.size(); ++i) out << (i ? ", " : "") << j[i].dump();
+        out << "]";
+    } else if (is_list_of_flat(j)) {
+        constexpr std::size_t per_line = 4;
+        out << "[";
+        for (std::size_t i = 0; i < j.size(); ++i) {
+            if (i % per_line == 0) out << (i ? ",\n" : "\n") << pad;
+            else out << ", ";
+            print(out, j[i], indent + 2);
+        }
+        out << "\n" << std::string(static_cast<std::size_t>(indent), ' ') << "]";
+    } else {
+        out << "[";
+        for (std::size_t i = 0; i < j.size(); ++i) {
+            out << (i ? ",\n" : "\n") << pad;
+            print(out, j[i], indent + 2);
+        }
+        out << "\n" << std::string(static_cast<std::size_t>(indent), ' ') << "]";
+    }
+}
+
+}  // namespace
+
+std::string write_model_text(const Model& model) {
+    std::ostringstream out;
+    print(out, to_json(model), 0);
+    out << "\n";
+    return out.str();
+}
+
+void write_model_file(const std::string& path, const Model& model) {
+    // Convert first: a model that cannot be written must not even create the temporary.
+    const std::string text = write_model_text(model);
+    write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace mcdda

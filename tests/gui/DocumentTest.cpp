@@ -1,0 +1,232 @@
+// The model document: undoable edits, the modified flag, save and reopen. No display needed.
+
+#include "ModelCompare.hpp"
+#include "document/Commands.hpp"
+#include "document/ModelDocument.hpp"
+#include "io/ModelReader.hpp"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <unistd.h>
+
+using namespace mcdda;
+using mcdda::gui::ModelDocument;
+using mcdda::test::model_differences;
+
+namespace {
+
+QString example(const char* name) {
+    return QDir(QStringLiteral(MCDDA_EXAMPLES_DIR)).filePath(QString::fromLatin1(name));
+}
+
+QString messages(const std::vector<Diagnostic>& diagnostics) {
+    QString text;
+    for (const Diagnostic& d : diagnostics) text += QString::fromStdString(format_diagnostic(d)) + QLatin1Char('\n');
+    return text;
+}
+
+/// Fails the test with the differences when the models differ.
+#define COMPARE_MODELS(a, b)                                                   \
+    do {                                                                       \
+        const std::string differences = model_differences((a), (b));           \
+        QVERIFY2(differences.empty(), differences.c_str());                    \
+    } while (false)
+
+}  // namespace
+
+class DocumentTest : public QObject {
+    Q_OBJECT
+
+private:
+    /// Opens an example; fails the test when it cannot be read.
+    bool openExample(ModelDocument& document) {
+        const auto diagnostics = document.open(example("kirsch.json"));
+        if (has_errors(diagnostics)) qWarning("%s", qPrintable(messages(diagnostics)));
+        return !has_errors(diagnostics);
+    }
+
+    /// Adds a square region of the first material and a joint across it.
+    static void edit(ModelDocument& document) {
+        document.addRegion({{100, 100}, {110, 100}, {110, 110}, {100, 110}}, 0, QStringLiteral("added block"));
+        document.addJoint({{100, 105}, {105, 106}, {110, 105}});
+    }
+
+private slots:
+    void opensAFileClean() {
+        ModelDocument document;
+        QSignalSpy path_spy(&document, &ModelDocument::pathChanged);
+        QSignalSpy changed_spy(&document, &ModelDocument::changed);
+        QVERIFY(openExample(document));
+        QCOMPARE(document.path(), example("kirsch.json"));
+        QCOMPARE(path_spy.count(), 1);
+        QVERIFY(changed_spy.count() >= 1);
+        QVERIFY(!document.isModified());
+        const ReadResult direct = read_model_file(example("kirsch.json").toStdString());
+        QVERIFY(direct.model);
+        COMPARE_MODELS(document.model(), *direct.model);
+    }
+
+    void aMissingFileLeavesTheDocumentAlone() {
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        const Model before = document.model();
+        const auto diagnostics = document.open(QStringLiteral("/no/such/model.json"));
+        QVERIFY(has_errors(diagnostics));
+        QCOMPARE(document.path(), example("kirsch.json"));
+        COMPARE_MODELS(document.model(), before);
+    }
+
+    void editsUndoAndRedo() {
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        const Model original = document.model();
+        QSignalSpy changed_spy(&document, &ModelDocument::changed);
+        edit(document);
+        QCOMPARE(changed_spy.count(), 2);
+        const Model edited = document.model();
+        QCOMPARE(edited.regions.size(), original.regions.size() + 1);
+        QCOMPARE(edited.regions.back().name, std::string("added block"));
+        QCOMPARE(edited.regions.back().material, 0);
+        QCOMPARE(edited.joints.size(), original.joints.size() + 1);
+        QCOMPARE(edited.joints.back().points.size(), std::size_t(3));
+        QCOMPARE(edited.joints.back().name, "joint " + std::to_string(original.joints.size() + 1));
+        QCOMPARE(document.undoStack()->count(), 2);
+        QVERIFY(!document.undoStack()->text(0).isEmpty());
+        QVERIFY(!document.undoStack()->text(1).isEmpty());
+
+        document.undoStack()->undo();
+        document.undoStack()->undo();
+        COMPARE_MODELS(document.model(), original);
+        document.undoStack()->redo();
+        document.undoStack()->redo();
+        COMPARE_MODELS(document.model(), edited);
+        QCOMPARE(changed_spy.count(), 6);
+    }
+
+    void materialAndAnalysisSettingsAreUndoable() {
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        const Model original = document.model();
+        Material m = original.materials[0];
+        m.name = "changed";
+        m.young_modulus *= 2;
+        m.friction_angle = 0.5;
+        document.setMaterial(0, m);
+        AnalysisSettings a = original.analysis;
+        a.steps = 1234;
+        a.kind = AnalysisSettings::Kind::Dynamic;
+        document.setAnalysisSettings(a);
+        QCOMPARE(document.model().materials[0].name, std::string("changed"));
+        QCOMPARE(document.model().analysis.steps, 1234);
+        const Model edited = document.model();
+        document.undoStack()->undo();
+        QCOMPARE(document.model().analysis.steps, original.analysis.steps);
+        document.undoStack()->undo();
+        COMPARE_MODELS(document.model(), original);
+        document.undoStack()->redo();
+        document.undoStack()->redo();
+        COMPARE_MODELS(document.model(), edited);
+    }
+
+    void modifiedFollowsUndoRedoAndSave() {
+        QTemporaryDir folder;
+        QVERIFY(folder.isValid());
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        QSignalSpy modified_spy(&document, &ModelDocument::modifiedChanged);
+        QVERIFY(!document.isModified());
+        edit(document);
+        QVERIFY(document.isModified());
+        QCOMPARE(modified_spy.count(), 1);
+        QCOMPARE(modified_spy.last().at(0).toBool(), true);
+        document.undoStack()->undo();
+        document.undoStack()->undo();
+        QVERIFY(!document.isModified());  // back at the file's state
+        QCOMPARE(modified_spy.last().at(0).toBool(), false);
+        document.undoStack()->redo();
+        QVERIFY(document.isModified());
+
+        const QString path = folder.filePath(QStringLiteral("saved.json"));
+        QSignalSpy path_spy(&document, &ModelDocument::pathChanged);
+        QString error;
+        QVERIFY2(document.saveAs(path, &error), qPrintable(error));
+        QCOMPARE(document.path(), path);
+        QCOMPARE(path_spy.count(), 1);
+        QVERIFY(!document.isModified());
+        document.undoStack()->redo();
+        QVERIFY(document.isModified());
+        QVERIFY2(document.save(&error), qPrintable(error));
+        QVERIFY(!document.isModified());
+        document.undoStack()->undo();  // now differs from the saved file
+        QVERIFY(document.isModified());
+    }
+
+    void savesAndReopensTheSameModel() {
+        QTemporaryDir folder;
+        QVERIFY(folder.isValid());
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        edit(document);
+        const QString path = folder.filePath(QStringLiteral("edited.json"));
+        QString error;
+        QVERIFY2(document.saveAs(path, &error), qPrintable(error));
+
+        ModelDocument reopened;
+        const auto diagnostics = reopened.open(path);
+        QVERIFY2(!has_errors(diagnostics), qPrintable(messages(diagnostics)));
+        COMPARE_MODELS(reopened.model(), document.model());
+        QVERIFY(!reopened.isModified());
+        // Only the saved file is in the folder (no temporary left behind).
+        QCOMPARE(QDir(folder.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("edited.json")});
+    }
+
+    void savingIntoAMissingFolderFails() {
+        QTemporaryDir folder;
+        QVERIFY(folder.isValid());
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        edit(document);
+        const QString missing = folder.filePath(QStringLiteral("missing"));
+        QString error;
+        QVERIFY(!document.saveAs(missing + QStringLiteral("/model.json"), &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(error.contains(QStringLiteral("model.json")));
+        QCOMPARE(document.path(), example("kirsch.json"));  // unchanged
+        QVERIFY(document.isModified());                     // still unsaved
+        QVERIFY(!QFileInfo::exists(missing));
+        QVERIFY(QDir(folder.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden).isEmpty());
+    }
+
+    void savingIntoAReadOnlyFolderFails() {
+        if (::geteuid() == 0) QSKIP("root may write into read-only folders");
+        QTemporaryDir folder;
+        QVERIFY(folder.isValid());
+        QVERIFY(QFile::setPermissions(folder.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner));
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        QString error;
+        const bool saved = document.saveAs(folder.filePath(QStringLiteral("model.json")), &error);
+        QFile::setPermissions(folder.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        QVERIFY(!saved);
+        QVERIFY(!error.isEmpty());
+        QVERIFY(QDir(folder.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden).isEmpty());
+    }
+
+    void saveWithoutAFileFails() {
+        ModelDocument document;
+        Model m;
+        m.name = "new";
+        document.setModel(m);
+        QString error;
+        QVERIFY(!document.save(&error));
+        QVERIFY(!error.isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(DocumentTest)
+#include "DocumentTest.moc"

@@ -1,0 +1,234 @@
+// The Run feature of the desktop program on a (virtual) X server: the solver runs on a worker
+// thread, the view follows its snapshots (pixels checked), and a stopped run leaves readable
+// results while the GUI stays responsive.
+
+#include "MainWindow.hpp"
+#include "run/RunController.hpp"
+#include "widgets/ModelView.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QGuiApplication>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QtTest>
+
+#include <memory>
+
+using namespace mcdda;
+using mcdda::gui::MainWindow;
+using mcdda::gui::RunController;
+using mcdda::gui::RunProgress;
+
+namespace {
+
+const QString incline = QStringLiteral(MCDDA_EXAMPLES_DIR "/incline-sliding.json");
+
+std::shared_ptr<const Preprocessed> incline_with(const std::vector<std::string>& overrides)
+{
+    return std::make_shared<const Preprocessed>(preprocess_file(incline.toStdString(), overrides));
+}
+
+/// A strongly coloured pixel: neither the white background nor a grey or black line.
+bool saturated(QColor c) { return c.hsvSaturation() > 120 && c.value() > 80; }
+
+void keep(const QImage& image, const QString& name)
+{
+    image.save(QStringLiteral(MCDDA_TEST_OUTPUT_DIR "/run_") + name + QStringLiteral(".png"));
+}
+
+QAction* find_action(QWidget* window, const QString& name)
+{
+    return window->findChild<QAction*>(name);
+}
+
+}  // namespace
+
+class RunTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void controllerRunsWithoutAWindow();
+    void runShowsResultColours();
+    void stopKeepsResultsAndGuiResponsive();
+    void closingStopsTheRun();
+};
+
+void RunTest::initTestCase()
+{
+    gui::register_run_types();
+    if (QGuiApplication::platformName() != QLatin1String("xcb"))
+        QSKIP("the VTK view needs the xcb platform (run under xvfb-run)");
+}
+
+void RunTest::controllerRunsWithoutAWindow()
+{
+    const auto model = incline_with({"/analysis/steps=4"});
+    QVERIFY(model->ok);
+    QThread thread;
+    RunController controller(*model, QString(), QStringLiteral("incline"));
+    controller.setThrottle(0, 0);
+    controller.moveToThread(&thread);
+    // Received on this (the main) thread through queued connections.
+    std::vector<RunProgress> progress;
+    std::shared_ptr<const ResultSnapshot> last;
+    int snapshots = 0;
+    std::vector<RunStatus> finished;
+    connect(&controller, &RunController::progress, this, [&](const RunProgress& p) { progress.push_back(p); });
+    connect(&controller, &RunController::snapshot, this, [&](std::shared_ptr<const ResultSnapshot> s) {
+        last = std::move(s);
+        ++snapshots;
+    });
+    connect(&controller, &RunController::finished, this, [&](RunStatus s, const QString&) { finished.push_back(s); });
+    connect(&thread, &QThread::started, &controller, &RunController::start);
+    thread.start();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), std::size_t(1), 60000);
+    thread.quit();
+    QVERIFY(thread.wait(10000));
+    QCOMPARE(finished.front(), RunStatus::Completed);
+    QCOMPARE(progress.size(), std::size_t(4));  // no throttling: every step
+    QCOMPARE(progress.back().step, 4);
+    QCOMPARE(snapshots, 5);  // the start and every step
+    QVERIFY(last != nullptr);
+    QCOMPARE(last->step, 4);
+    QCOMPARE(last->displacement.size(), 2 * model->mesh.nodes.size());
+    QCOMPARE(last->plastic_state.size(), model->mesh.triangles.size());
+}
+
+void RunTest::runShowsResultColours()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    MainWindow window;
+    window.showPreprocessed(incline_with({"/analysis/steps=6", "/analysis/output_every=2"}), incline);
+    window.setRunOutputFolder(out.path());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QAction* run = find_action(&window, QStringLiteral("runAction"));
+    QAction* stop = find_action(&window, QStringLiteral("stopAction"));
+    QAction* pause = find_action(&window, QStringLiteral("pauseAction"));
+    QVERIFY(run && stop && pause);
+    QVERIFY(run->isEnabled());
+    QVERIFY(!stop->isEnabled() && !pause->isEnabled());
+
+    const QImage before = window.modelView()->grabFrame();
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    QVERIFY(!run->isEnabled());
+    QVERIFY(stop->isEnabled() && pause->isEnabled());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 120000);
+    QCOMPARE(finished.at(0).at(0).value<RunStatus>(), RunStatus::Completed);
+    QVERIFY(!window.isRunning());
+    QVERIFY(run->isEnabled() && !stop->isEnabled() && !pause->isEnabled());
+    QVERIFY(window.messages().contains(QStringLiteral("step 6/6")));
+    QVERIFY(QFile::exists(out.filePath(QStringLiteral("incline-sliding.pvd"))));
+
+    // The last step is shown, coloured by the displacement magnitude (a rainbow map), where
+    // the model picture had only its material colours.
+    QVERIFY(window.modelView()->result() != nullptr);
+    QCOMPARE(window.modelView()->result()->step, 6);
+    QCOMPARE(window.resultField(), QStringLiteral("displacement"));
+    const QImage frame = window.modelView()->grabFrame();
+    keep(frame, QStringLiteral("displacement"));
+    const int width = frame.width();
+    auto count_model_area = [width](const QImage& image, auto test) {
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < width * 6 / 10; ++x)  // left of the scalar bar
+                if (test(image.pixelColor(x, y))) ++n;
+        return n;
+    };
+    const int coloured = count_model_area(frame, saturated);
+    QVERIFY2(coloured > 20000, qPrintable(QString::number(coloured)));
+    QVERIFY2(count_model_area(before, saturated) < coloured / 4, "the model picture has few saturated colours");
+    // A model point inside the slope is coloured, not background.
+    const QPointF inside = window.modelView()->toWidget(QPointF(9.0, 2.0));
+    QVERIFY(saturated(frame.pixelColor(inside.toPoint())));
+    // The sliding block moved most: the red end of the map.
+    const QColor block = frame.pixelColor(window.modelView()->toWidget(QPointF(4.82, 4.37)).toPoint());
+    QVERIFY2(block.red() > 180 && block.blue() < 100, qPrintable(block.name()));
+
+    // Plastic state: elastic everywhere (plasticity is off) → the light grey category.
+    window.setResultField(QStringLiteral("plastic_state"));
+    const QImage states = window.modelView()->grabFrame();
+    keep(states, QStringLiteral("plastic_state"));
+    const QColor grey = states.pixelColor(inside.toPoint());
+    QVERIFY2(std::abs(grey.red() - 209) <= 6 && std::abs(grey.green() - 209) <= 6 && std::abs(grey.blue() - 209) <= 6,
+             qPrintable(grey.name()));
+}
+
+void RunTest::stopKeepsResultsAndGuiResponsive()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    MainWindow window;
+    window.showPreprocessed(incline_with({"/analysis/steps=100000", "/analysis/output_every=1000"}), incline);
+    window.setRunOutputFolder(out.path());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+
+    int ticks = 0;
+    QTimer timer;
+    connect(&timer, &QTimer::timeout, [&ticks] { ++ticks; });
+    timer.start(10);
+    QSignalSpy progress(&window, &MainWindow::runProgressed);
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    QTRY_VERIFY_WITH_TIMEOUT(progress.count() > 0, 60000);
+    const int ticks_at_progress = ticks;
+    QTest::qWait(300);  // the solver keeps running; the event loop must too
+    QVERIFY2(ticks > ticks_at_progress + 5, qPrintable(QStringLiteral("%1 -> %2").arg(ticks_at_progress).arg(ticks)));
+    QVERIFY(window.isRunning());
+
+    // Paused: no more progress; Stop still ends it.
+    QAction* pause = window.findChild<QAction*>(QStringLiteral("pauseAction"));
+    QVERIFY(pause != nullptr);
+    window.togglePause();
+    QCOMPARE(pause->text(), QStringLiteral("Res&ume"));
+    QTest::qWait(300);  // the step under way and its queued signals
+    const auto paused_at = progress.count();
+    QTest::qWait(400);
+    QCOMPARE(progress.count(), paused_at);
+    window.stopRun();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QCOMPARE(finished.at(0).at(0).value<RunStatus>(), RunStatus::Cancelled);
+    QVERIFY(!window.isRunning());
+
+    QFile pvd(out.filePath(QStringLiteral("incline-sliding.pvd")));
+    QVERIFY(pvd.open(QIODevice::ReadOnly));
+    const QByteArray text = pvd.readAll();
+    QVERIFY(text.contains("</VTKFile>"));
+    QVERIFY(text.contains(".vtu"));
+    QFile summary(out.filePath(QStringLiteral("summary.json")));
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    QVERIFY(summary.readAll().contains("cancelled"));
+}
+
+void RunTest::closingStopsTheRun()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    auto window = std::make_unique<MainWindow>();
+    window->showPreprocessed(incline_with({"/analysis/steps=100000", "/analysis/output_every=1000"}), incline);
+    window->setRunOutputFolder(out.path());
+    window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+    QSignalSpy progress(window.get(), &MainWindow::runProgressed);
+    QVERIFY(window->startRun());
+    QTRY_VERIFY_WITH_TIMEOUT(progress.count() > 0, 60000);
+    QVERIFY(window->close());  // stops the worker and joins its thread
+    QVERIFY(!window->isRunning());
+    QVERIFY(window->findChildren<QThread*>().isEmpty());
+    window.reset();  // and nothing is left to crash later
+    QTest::qWait(100);
+    QFile summary(out.filePath(QStringLiteral("summary.json")));
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    QVERIFY(summary.readAll().contains("cancelled"));
+}
+
+QTEST_MAIN(RunTest)
+#include "RunTest.moc"
