@@ -1,6 +1,9 @@
 #include "MainWindow.hpp"
 
 #include "Version.hpp"
+#include "results/HistoryPlot.hpp"
+#include "results/ResultExport.hpp"
+#include "results/StepSlider.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
@@ -9,6 +12,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -49,6 +53,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     view_ = new ModelView(this);
     setCentralWidget(view_);
     createDock();
+    createResultDocks();
     createActions();
     createRunActions();
     createStatusBar();
@@ -71,6 +76,8 @@ void MainWindow::createActions()
     reload_action_->setShortcut(QKeySequence::Refresh);
     reload_action_->setStatusTip(tr("Read the model file again, e.g. after editing it"));
     reload_action_->setEnabled(false);
+    file->addSeparator();
+    createExportActions(file);
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -96,6 +103,8 @@ void MainWindow::createActions()
     show_legend_ = toggle(tr("Le&gend"), tr("Show the legend"));
     view->addSeparator();
     view->addAction(dock_->toggleViewAction());
+    view->addAction(steps_dock_->toggleViewAction());
+    view->addAction(plot_dock_->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About mcdda"), this, [this] {
@@ -119,6 +128,124 @@ void MainWindow::createDock()
     dock_->setWidget(messages_);
     addDockWidget(Qt::BottomDockWidgetArea, dock_);
     resizeDocks({dock_}, {140}, Qt::Vertical);  // the model gets most of the height
+}
+
+void MainWindow::createResultDocks()
+{
+    steps_ = new StepSlider(this);
+    steps_dock_ = new QDockWidget(tr("Steps"), this);
+    steps_dock_->setObjectName(QStringLiteral("steps"));
+    steps_dock_->setWidget(steps_);
+    addDockWidget(Qt::BottomDockWidgetArea, steps_dock_);
+    connect(steps_, &StepSlider::stepChosen, this, [this](const QString& vtu) { showStep(vtu); });
+
+    plot_ = new HistoryPlot(this);
+    plot_dock_ = new QDockWidget(tr("Plots"), this);
+    plot_dock_->setObjectName(QStringLiteral("plots"));
+    plot_dock_->setWidget(plot_);
+    addDockWidget(Qt::RightDockWidgetArea, plot_dock_);
+    resizeDocks({plot_dock_}, {320}, Qt::Horizontal);
+}
+
+void MainWindow::createExportActions(QMenu* file)
+{
+    QMenu* menu = file->addMenu(tr("&Export"));
+    QAction* png = menu->addAction(tr("&Picture (PNG)..."), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export picture"), last_folder_,
+                                                          tr("PNG pictures (*.png)"));
+        if (!path.isEmpty()) exportPng(path.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive)
+                                           ? path : path + QStringLiteral(".png"));
+    });
+    png->setObjectName(QStringLiteral("exportPngAction"));
+    png->setStatusTip(tr("Save the picture of the view as a PNG file"));
+    QAction* steps = menu->addAction(tr("Saved &Steps (PVD/VTU)..."), this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(this, tr("Export saved steps to"), last_folder_);
+        if (!folder.isEmpty()) exportSteps(folder);
+    });
+    steps->setObjectName(QStringLiteral("exportStepsAction"));
+    steps->setStatusTip(tr("Copy the run's .pvd collection and its .vtu steps to a folder"));
+    QAction* history = menu->addAction(tr("&History (CSV)..."), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export history"), last_folder_,
+                                                          tr("CSV files (*.csv)"));
+        if (!path.isEmpty()) exportHistory(path);
+    });
+    history->setObjectName(QStringLiteral("exportHistoryAction"));
+    history->setStatusTip(tr("Copy the run's history of loads and measured displacements"));
+}
+
+void MainWindow::reportExportError(const QString& message)
+{
+    log(message);
+    auto* box = new QMessageBox(QMessageBox::Critical, tr("Export failed"), message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();  // non-blocking, like reportFailure()
+}
+
+bool MainWindow::exportPng(const QString& path)
+{
+    QString error;
+    if (!export_png(view_->grabFrame(), path, error)) {
+        reportExportError(error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::exportSteps(const QString& folder)
+{
+    if (results_folder_.isEmpty() || !QFileInfo::exists(resultsPvdPath())) {
+        reportExportError(tr("There are no saved steps yet: run the model first."));
+        return false;
+    }
+    QString error;
+    int copied = 0;
+    if (!export_steps(resultsPvdPath(), folder, error, &copied)) {
+        reportExportError(error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Copied %n file(s) to %1", "", copied).arg(folder), 5000);
+    return true;
+}
+
+bool MainWindow::exportHistory(const QString& path)
+{
+    if (results_folder_.isEmpty() || !QFileInfo::exists(resultsHistoryPath())) {
+        reportExportError(tr("There is no history yet: run the model first."));
+        return false;
+    }
+    QString error;
+    if (!export_file(resultsHistoryPath(), path, error)) {
+        reportExportError(error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+QString MainWindow::resultsPvdPath() const
+{
+    if (results_folder_.isEmpty()) return {};
+    return QDir(results_folder_).absoluteFilePath(results_stem_ + QStringLiteral(".pvd"));
+}
+
+QString MainWindow::resultsHistoryPath() const
+{
+    if (results_folder_.isEmpty()) return {};
+    return QDir(results_folder_).absoluteFilePath(QStringLiteral("history.csv"));
+}
+
+void MainWindow::refreshResults()
+{
+    steps_->load(resultsPvdPath());
+    plot_->load(resultsHistoryPath());
+}
+
+void MainWindow::showStep(const QString& vtu_path)
+{
+    if (isRunning()) return;  // the live picture has priority
+    shown_step_ = vtu_path;
+    showResult();
 }
 
 void MainWindow::createStatusBar()
@@ -211,6 +338,10 @@ void MainWindow::showPreprocessed(std::shared_ptr<const Preprocessed> p, const Q
         log(tr("The run was stopped: another model was opened."));
     }
     last_snapshot_.reset();
+    shown_step_.clear();
+    results_folder_.clear();
+    steps_->clear();
+    plot_->clear();
     const QString name = p->model.name.empty() ? QFileInfo(source).fileName() : to_qt(p->model.name);
     setWindowTitle(tr("%1 - mcdda").arg(name));
     setWindowFilePath(source);
@@ -293,10 +424,31 @@ void MainWindow::createRunActions()
     bar->addSeparator();
     field_box_ = new QComboBox(this);
     field_box_->setToolTip(tr("Field shown for results"));
-    field_box_->addItem(tr("Displacement"), QStringLiteral("displacement"));
+    field_box_->setObjectName(QStringLiteral("fieldBox"));
+    field_box_->addItem(tr("Displacement |u|"), QStringLiteral("displacement"));
+    field_box_->addItem(tr("Displacement ux"), QStringLiteral("ux"));
+    field_box_->addItem(tr("Displacement uy"), QStringLiteral("uy"));
+    field_box_->addItem(tr("Stress σxx"), QStringLiteral("stress_xx"));
+    field_box_->addItem(tr("Stress σyy"), QStringLiteral("stress_yy"));
+    field_box_->addItem(tr("Stress τxy"), QStringLiteral("stress_xy"));
+    field_box_->addItem(tr("Principal stress σ1"), QStringLiteral("stress_1"));
+    field_box_->addItem(tr("Principal stress σ3"), QStringLiteral("stress_3"));
     field_box_->addItem(tr("Plastic state"), QStringLiteral("plastic_state"));
+    field_box_->addItem(tr("Plastic strain"), QStringLiteral("plastic_strain"));
     connect(field_box_, &QComboBox::currentIndexChanged, this, [this] { showResult(); });
     bar->addWidget(field_box_);
+    auto* deform_label = new QLabel(tr("Deformation ×"), this);
+    deform_label->setContentsMargins(6, 0, 2, 0);
+    bar->addWidget(deform_label);
+    deform_box_ = new QDoubleSpinBox(this);
+    deform_box_->setObjectName(QStringLiteral("deformBox"));
+    deform_box_->setToolTip(tr("Scale factor of the drawn displacements (0 = undeformed)"));
+    deform_box_->setRange(0.0, 1e6);
+    deform_box_->setDecimals(1);
+    deform_box_->setSingleStep(10.0);
+    deform_box_->setValue(0.0);
+    connect(deform_box_, &QDoubleSpinBox::valueChanged, this, [this] { showResult(); });
+    bar->addWidget(deform_box_);
     updateRunActions();
 }
 
@@ -334,6 +486,10 @@ void MainWindow::setResultField(const QString& field)
     if (index >= 0) field_box_->setCurrentIndex(index);
 }
 
+double MainWindow::deformFactor() const { return deform_box_->value(); }
+
+void MainWindow::setDeformFactor(double factor) { deform_box_->setValue(factor); }
+
 void MainWindow::log(const QString& line) { messages_->appendPlainText(line); }
 
 bool MainWindow::startRun()
@@ -354,6 +510,8 @@ bool MainWindow::startRun()
     connect(controller_, &RunController::finished, this, &MainWindow::onRunFinished, Qt::QueuedConnection);
 
     last_snapshot_.reset();
+    shown_step_.clear();
+    results_stem_ = stem;
     progress_bar_->setRange(0, std::max(1, scene->model.analysis.steps));
     progress_bar_->setValue(0);
     progress_bar_->setVisible(true);
@@ -406,15 +564,19 @@ void MainWindow::onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot)
 {
     if (!isRunning()) return;  // a late one from a run already joined
     last_snapshot_ = std::move(snapshot);
+    shown_step_.clear();
     showResult();
 }
 
 void MainWindow::showResult()
 {
-    if (!last_snapshot_) return;
     view::ResultOptions options;
     options.field = resultField().toStdString();
-    view_->setResult(last_snapshot_, options);
+    options.deform = deformFactor();
+    if (!shown_step_.isEmpty() && !isRunning())
+        view_->setResultFile(shown_step_, options);
+    else if (last_snapshot_)
+        view_->setResult(last_snapshot_, options);
 }
 
 void MainWindow::onRunFinished(RunStatus status, const QString& message)
@@ -432,6 +594,8 @@ void MainWindow::onRunFinished(RunStatus status, const QString& message)
     }
     log(text);
     log(tr("Results in %1").arg(folder));
+    results_folder_ = folder;
+    refreshResults();
     statusBar()->showMessage(text, 10000);
     if (status == RunStatus::Collapsed || status == RunStatus::Failed) {
         // Non-blocking, like reportFailure().

@@ -3,7 +3,9 @@
 /// The desktop program's main window: opens a model file, pre-processes it (read, check, cut,
 /// mesh) and shows the result; messages go to a dock, cursor position and mesh figures to the
 /// status bar. Run ▸ Run analyses the model on a worker thread (RunController) and shows the
-/// latest result snapshot live, coloured by the field chosen in the Run toolbar.
+/// latest result snapshot live, coloured by the field chosen in the Run toolbar and drawn
+/// deformed by its scale factor. After a run the Steps dock replays the saved steps, the Plots
+/// dock plots the history, and File ▸ Export writes the picture, the steps or the history.
 
 #include "Preprocess.hpp"
 #include "run/ResultSnapshot.hpp"
@@ -16,16 +18,20 @@
 #include <memory>
 
 class QAction;
+class QMenu;
 class QLabel;
 class QPlainTextEdit;
 class QDockWidget;
 class QComboBox;
+class QDoubleSpinBox;
 class QProgressBar;
 class QThread;
 
 namespace mcdda::gui {
 
 class ModelView;
+class StepSlider;
+class HistoryPlot;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -61,9 +67,23 @@ public:
     QString runOutputFolder() const;
     /// Minimum intervals between progress and snapshot updates of the next runs (ms).
     void setRunThrottle(int progress_ms, int snapshot_ms);
-    /// The field shown while and after running: "displacement" or "plastic_state".
+    /// The field shown while and after running: one of view::result_field_names().
     QString resultField() const;
     void setResultField(const QString& field);
+    /// Scale factor of the drawn displacements (0 = undeformed).
+    double deformFactor() const;
+    void setDeformFactor(double factor);
+    /// The results folder of the last finished run (empty before one), and its files.
+    QString resultsFolder() const { return results_folder_; }
+    QString resultsPvdPath() const;
+    QString resultsHistoryPath() const;
+    StepSlider* stepSlider() const { return steps_; }
+    HistoryPlot* historyPlot() const { return plot_; }
+
+    /// The File ▸ Export actions without their dialogs; errors go to a message box and give false.
+    bool exportPng(const QString& path);
+    bool exportSteps(const QString& folder);
+    bool exportHistory(const QString& path);
 
 public slots:
     /// Run ▸ Run: analyses the shown model on a worker thread. False when there is no usable
@@ -92,6 +112,12 @@ private:
     void createActions();
     void createDock();
     void createStatusBar();
+    void createResultDocks();
+    void createExportActions(QMenu* file);
+    /// Reads the results folder again into the step slider and the plot.
+    void refreshResults();
+    void showStep(const QString& vtu_path);
+    void reportExportError(const QString& message);
     void applySceneOptions();
     void showCursor(const QPointF& model_pos);
     void reportFailure(const Preprocessed& p, const QString& source);
@@ -122,6 +148,14 @@ private:
     QAction* pause_action_ = nullptr;
     QAction* stop_action_ = nullptr;
     QComboBox* field_box_ = nullptr;
+    QDoubleSpinBox* deform_box_ = nullptr;
+    StepSlider* steps_ = nullptr;
+    HistoryPlot* plot_ = nullptr;
+    QDockWidget* steps_dock_ = nullptr;
+    QDockWidget* plot_dock_ = nullptr;
+    QString results_folder_;  ///< of the last finished run
+    QString results_stem_;
+    QString shown_step_;      ///< saved step chosen in the slider; empty = the last snapshot
     QProgressBar* progress_bar_ = nullptr;
     QThread* run_thread_ = nullptr;
     RunController* controller_ = nullptr;

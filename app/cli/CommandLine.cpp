@@ -41,7 +41,8 @@ Options:
   --results STEP.vtu   render a result step: mesh cells coloured by --field, block
                        boundaries, joints and a colour legend
   --field NAME         plastic_state (default), plastic_strain, displacement
-                       (magnitude), stress_xx, stress_yy or stress_xy (Pa, tension +)
+                       (magnitude), ux, uy, stress_xx, stress_yy, stress_xy, stress_1
+                       or stress_3 (in-plane principal; kPa or MPa, tension +)
   --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0)
   --quiet              print errors only
   --help, --version

@@ -45,28 +45,40 @@ const Rgb state_colors[3] = {{0.82, 0.82, 0.82}, {1.0, 0.84, 0.0}, {0.86, 0.06, 
 const char* const state_labels[3] = {"elastic", "yielded before", "yielding now"};
 const Rgb joint_color{0.55, 0.0, 0.60};  // purple: not in the rainbow nor the state colours
 
+/// How a field's value comes out of its array.
+enum Derived : int {
+    magnitude = -1,   ///< length of the vector
+    principal_1 = -2, ///< larger in-plane principal value of a VTK symmetric tensor (xx, yy, zz, xy, ...)
+    principal_3 = -3, ///< smaller one
+};
+
 struct FieldInfo {
     const char* name;
     const char* array;   ///< array in the .vtu
     bool point_data;
-    int component;       ///< -1: magnitude, otherwise the component
-    const char* units;
+    int component;       ///< a Derived value, otherwise the component
+    const char* units;   ///< "Pa": shown in kPa or MPa, whichever suits the range
 };
 
 const FieldInfo field_table[] = {
     {"plastic_state", "plastic_state", false, 0, "-"},
     {"plastic_strain", "plastic_strain", false, 0, "-"},
-    {"displacement", "displacement", true, -1, "m"},
+    {"displacement", "displacement", true, magnitude, "m"},
+    {"ux", "displacement", true, 0, "m"},
+    {"uy", "displacement", true, 1, "m"},
     {"stress_xx", "stress", false, 0, "Pa"},
     {"stress_yy", "stress", false, 1, "Pa"},
     {"stress_xy", "stress", false, 3, "Pa"},
+    {"stress_1", "stress", false, principal_1, "Pa"},
+    {"stress_3", "stress", false, principal_3, "Pa"},
 };
 
 vtkDataArray* find_array(vtkUnstructuredGrid* grid, const FieldInfo& f)
 {
     vtkDataArray* a = f.point_data ? grid->GetPointData()->GetArray(f.array) : grid->GetCellData()->GetArray(f.array);
     if (a == nullptr) return nullptr;
-    if (f.component >= a->GetNumberOfComponents()) return nullptr;
+    const int needed = f.component == principal_1 || f.component == principal_3 ? 3 : f.component;
+    if (needed >= a->GetNumberOfComponents()) return nullptr;
     return a;
 }
 
@@ -216,6 +228,11 @@ vtkSmartPointer<vtkActor> line_actor(vtkPolyData* data, const Rgb& color, double
 double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i)
 {
     if (f.component >= 0) return a->GetComponent(i, f.component);
+    if (f.component == principal_1 || f.component == principal_3) {
+        const double xx = a->GetComponent(i, 0), yy = a->GetComponent(i, 1), xy = a->GetComponent(i, 3);
+        const double centre = 0.5 * (xx + yy), radius = std::hypot(0.5 * (xx - yy), xy);
+        return f.component == principal_1 ? centre + radius : centre - radius;
+    }
     double s = 0.0;
     for (int c = 0; c < a->GetNumberOfComponents(); ++c) s += a->GetComponent(i, c) * a->GetComponent(i, c);
     return std::sqrt(s);
@@ -260,6 +277,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     vtkDataArray* source = find_array(grid, field);
     const bool categorical = std::string(field.name) == "plastic_state";
     double range[2] = {0.0, 1.0};
+    std::string units = field.units;
     vtkNew<vtkLookupTable> table;
     if (categorical) {
         vtkNew<vtkUnsignedCharArray> colors;
@@ -284,6 +302,12 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             if (std::isfinite(v)) range[0] = std::min(range[0], v), range[1] = std::max(range[1], v);
         }
         if (!(range[0] <= range[1])) range[0] = 0.0, range[1] = 1.0;
+        if (units == "Pa") {  // stresses in kPa, or MPa when they reach 1 MPa
+            const double scale = std::max(std::abs(range[0]), std::abs(range[1])) >= 1e6 ? 1e-6 : 1e-3;
+            units = scale == 1e-6 ? "MPa" : "kPa";
+            for (vtkIdType i = 0; i < n; ++i) values->SetValue(i, values->GetValue(i) * scale);
+            range[0] *= scale, range[1] *= scale;
+        }
         if (range[1] - range[0] <= 1e-12 * std::max(1.0, std::abs(range[0]))) {
             const double pad = range[0] != 0.0 ? 0.01 * std::abs(range[0]) : 1.0;
             range[0] -= pad, range[1] += pad;
@@ -373,7 +397,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     } else {
         vtkNew<vtkScalarBarActor> bar;
         bar->SetLookupTable(table);
-        const std::string title = std::string(field.name) + " (" + field.units + ")";
+        const std::string title = std::string(field.name) + " (" + units + ")";
         bar->SetTitle(title.c_str());
         bar->SetNumberOfLabels(6);
         bar->SetLabelFormat("%-#8.3g");

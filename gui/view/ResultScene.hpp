@@ -18,7 +18,9 @@ namespace mcdda::view {
 /// What the result picture shows.
 struct ResultOptions {
     /// One of result_field_names(): plastic_state (three categories), plastic_strain,
-    /// displacement (magnitude of the point data), stress_xx, stress_yy, stress_xy (Pa, raw).
+    /// displacement (magnitude of the point data), ux, uy (m), stress_xx, stress_yy, stress_xy,
+    /// stress_1, stress_3 (in-plane principal stresses, tension positive; stresses are shown
+    /// in kPa, or in MPa when they reach 1 MPa, with the unit in the scalar bar's title).
     std::string field = "plastic_state";
     double deform = 0.0;      ///< points drawn at x + deform · displacement; 0 = undeformed
     bool show_joints = true;  ///< joint traces of the model (only drawn undeformed)

@@ -29,6 +29,7 @@ struct ModelView::Impl {
     std::shared_ptr<const Preprocessed> scene;
     view::SceneOptions options;
     std::shared_ptr<const ResultSnapshot> result;  ///< shown instead of the model when set
+    QString result_file;  ///< a saved step shown instead of the model when set (and no snapshot)
     view::ResultOptions result_options;
     bool window_ready = false;    ///< VTK was given our native window
     bool camera_touched = false;  ///< the user navigated since the last fit: resizing keeps the view
@@ -101,13 +102,18 @@ void ModelView::rebuild(bool keep_camera)
     syncSize();
     impl_->renderer->RemoveAllViewProps();
     bool drawn = false;
-    if (impl_->scene && impl_->result) {
+    if (impl_->scene && (impl_->result || !impl_->result_file.isEmpty())) {
         try {
-            view::build_result_scene(impl_->renderer, *impl_->scene, *impl_->result, impl_->result_options);
+            if (impl_->result)
+                view::build_result_scene(impl_->renderer, *impl_->scene, *impl_->result, impl_->result_options);
+            else
+                view::build_result_scene(impl_->renderer, *impl_->scene, impl_->result_file.toStdString(),
+                                         impl_->result_options);
             drawn = true;
         } catch (const std::exception& e) {
             qWarning("ModelView: cannot show the result: %s", e.what());
             impl_->result.reset();
+            impl_->result_file.clear();
             impl_->renderer->RemoveAllViewProps();
         }
     }
@@ -128,6 +134,7 @@ void ModelView::setScene(std::shared_ptr<const Preprocessed> p, bool keep_camera
 {
     impl_->scene = std::move(p);
     impl_->result.reset();
+    impl_->result_file.clear();
     if (!keep_camera) impl_->camera_touched = false;
     rebuild(keep_camera);
 }
@@ -135,24 +142,38 @@ void ModelView::setScene(std::shared_ptr<const Preprocessed> p, bool keep_camera
 bool ModelView::setResult(std::shared_ptr<const ResultSnapshot> snapshot, const view::ResultOptions& options)
 {
     impl_->result = std::move(snapshot);
+    impl_->result_file.clear();
     impl_->result_options = options;
     rebuild(impl_->camera_touched);  // a view nobody navigated in stays fitted (legend included)
     return impl_->result != nullptr;
 }
 
+bool ModelView::setResultFile(const QString& vtu_path, const view::ResultOptions& options)
+{
+    impl_->result.reset();
+    impl_->result_file = vtu_path;
+    impl_->result_options = options;
+    rebuild(impl_->camera_touched);
+    return !impl_->result_file.isEmpty();
+}
+
 void ModelView::clearResult()
 {
-    if (!impl_->result) return;
+    if (!impl_->result && impl_->result_file.isEmpty()) return;
     impl_->result.reset();
+    impl_->result_file.clear();
     rebuild(impl_->camera_touched);
 }
 
 std::shared_ptr<const ResultSnapshot> ModelView::result() const { return impl_->result; }
 
+QString ModelView::resultFile() const { return impl_->result_file; }
+
 void ModelView::clearScene()
 {
     impl_->scene.reset();
     impl_->result.reset();
+    impl_->result_file.clear();
     impl_->camera_touched = false;
     rebuild(false);
 }

@@ -9,6 +9,7 @@
 #include "view/ResultScene.hpp"
 
 #include <QImage>
+#include <QString>
 #include <QPointF>
 #include <QWidget>
 
@@ -38,10 +39,15 @@ public:
     /// false (and keeps showing the model) when the snapshot does not fit the model or the
     /// field is unknown.
     bool setResult(std::shared_ptr<const ResultSnapshot> snapshot, const view::ResultOptions& options);
+    /// The same from a saved step: the .vtu at `vtu_path` (written by a run of this model).
+    /// Returns false (and keeps showing the model) when it cannot be read or does not fit.
+    bool setResultFile(const QString& vtu_path, const view::ResultOptions& options);
     /// Back to the model picture.
     void clearResult();
     /// The snapshot shown, or null.
     std::shared_ptr<const ResultSnapshot> result() const;
+    /// The saved step shown, or empty.
+    QString resultFile() const;
 
     /// What is drawn; changing it rebuilds the picture and keeps the camera.
     void setSceneOptions(const view::SceneOptions& options);

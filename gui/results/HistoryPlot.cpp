@@ -1,0 +1,148 @@
+#include "results/HistoryPlot.hpp"
+
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineSeries>
+#include <QPainter>
+#include <QSignalBlocker>
+#include <QValueAxis>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mcdda::gui {
+
+HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
+{
+    y_box_ = new QComboBox(this);
+    y_box_->setObjectName(QStringLiteral("historyColumn"));
+    y_box_->setToolTip(tr("Measured displacement plotted"));
+    x_box_ = new QComboBox(this);
+    x_box_->setObjectName(QStringLiteral("historyAbscissa"));
+    x_box_->setToolTip(tr("Plotted against time or a load (load-settlement curve)"));
+    note_ = new QLabel(this);
+
+    auto* chart = new QChart;
+    chart->legend()->hide();
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    series_ = new QLineSeries(chart);
+    series_->setPointsVisible(true);
+    chart->addSeries(series_);
+    x_axis_ = new QValueAxis(chart);
+    y_axis_ = new QValueAxis(chart);
+    chart->addAxis(x_axis_, Qt::AlignBottom);
+    chart->addAxis(y_axis_, Qt::AlignLeft);
+    series_->attachAxis(x_axis_);
+    series_->attachAxis(y_axis_);
+    view_ = new QChartView(chart, this);
+    view_->setRenderHint(QPainter::Antialiasing);
+    view_->setMinimumSize(240, 160);
+
+    auto* controls = new QHBoxLayout;
+    controls->addWidget(new QLabel(tr("Plot"), this));
+    controls->addWidget(y_box_, 1);
+    controls->addWidget(new QLabel(tr("against"), this));
+    controls->addWidget(x_box_, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addLayout(controls);
+    layout->addWidget(note_);
+    layout->addWidget(view_, 1);
+
+    connect(y_box_, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
+    connect(x_box_, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
+    clear();
+}
+
+QChart* HistoryPlot::chart() const { return view_->chart(); }
+
+void HistoryPlot::clear()
+{
+    table_ = {};
+    {
+        const QSignalBlocker a(y_box_), b(x_box_);
+        y_box_->clear();
+        x_box_->clear();
+    }
+    redraw();
+}
+
+int HistoryPlot::load(const QString& csv_path)
+{
+    const QString y = yColumn(), x = xColumn();
+    HistoryTable table;
+    if (!QFileInfo::exists(csv_path) || !read_history(csv_path, table)) {
+        clear();
+        return 0;
+    }
+    table_ = std::move(table);
+    {
+        const QSignalBlocker a(y_box_), b(x_box_);
+        y_box_->clear();
+        x_box_->clear();
+        x_box_->addItem(tr("time (s)"), QStringLiteral("time"));
+        for (const QString& c : table_.columns) {
+            if (c.startsWith(QLatin1String("load:")))
+                x_box_->addItem(tr("load %1").arg(c.mid(5)), c);
+            else if (c.endsWith(QLatin1String(":ux")) || c.endsWith(QLatin1String(":uy")))
+                y_box_->addItem(tr("%1 (m)").arg(c), c);
+        }
+        if (const int i = y_box_->findData(y); i >= 0) y_box_->setCurrentIndex(i);
+        if (const int i = x_box_->findData(x); i >= 0) x_box_->setCurrentIndex(i);
+    }
+    redraw();
+    return static_cast<int>(table_.rows.size());
+}
+
+void HistoryPlot::setColumns(const QString& y_column, const QString& x_column)
+{
+    const QSignalBlocker a(y_box_), b(x_box_);
+    if (const int i = y_box_->findData(y_column); i >= 0) y_box_->setCurrentIndex(i);
+    if (const int i = x_box_->findData(x_column); i >= 0) x_box_->setCurrentIndex(i);
+    redraw();
+}
+
+QString HistoryPlot::yColumn() const { return y_box_->currentData().toString(); }
+
+QString HistoryPlot::xColumn() const { return x_box_->currentData().toString(); }
+
+void HistoryPlot::redraw()
+{
+    const int xi = table_.column(xColumn()), yi = table_.column(yColumn());
+    QList<QPointF> points;
+    if (xi >= 0 && yi >= 0)
+        for (const auto& row : table_.rows) points.append(QPointF(row[xi], row[yi]));
+    series_->replace(points);
+    if (table_.columns.isEmpty())
+        note_->setText(tr("No history: run the model."));
+    else if (yi < 0)
+        note_->setText(tr("The model has no measurement points."));
+    else
+        note_->setText(tr("%n step(s)", "", static_cast<int>(points.size())));
+    double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    double hi[2] = {-lo[0], -lo[1]};
+    for (const QPointF& p : points) {
+        lo[0] = std::min(lo[0], p.x()), hi[0] = std::max(hi[0], p.x());
+        lo[1] = std::min(lo[1], p.y()), hi[1] = std::max(hi[1], p.y());
+    }
+    QValueAxis* axes[2] = {x_axis_, y_axis_};
+    for (int k = 0; k < 2; ++k) {
+        if (!(lo[k] <= hi[k])) lo[k] = 0.0, hi[k] = 1.0;
+        if (hi[k] - lo[k] <= 1e-12 * std::max(1.0, std::abs(lo[k]))) {
+            const double pad = lo[k] != 0.0 ? 0.05 * std::abs(lo[k]) : 1e-6;
+            lo[k] -= pad, hi[k] += pad;
+        }
+        axes[k]->setRange(lo[k], hi[k]);
+        axes[k]->applyNiceNumbers();
+    }
+    x_axis_->setTitleText(x_box_->currentText());
+    y_axis_->setTitleText(y_box_->currentText());
+}
+
+}  // namespace mcdda::gui

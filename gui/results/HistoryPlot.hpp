@@ -1,0 +1,56 @@
+#pragma once
+/// \file HistoryPlot.hpp
+/// Plots a run's history.csv with Qt Charts: one measurement-point column (…:ux or …:uy)
+/// against time or against a load column (load:<name>, a load–settlement curve).
+
+#include "results/HistoryCsv.hpp"
+
+#include <QString>
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+
+QT_BEGIN_NAMESPACE
+class QChart;
+class QChartView;
+class QLineSeries;
+class QValueAxis;
+QT_END_NAMESPACE
+
+namespace mcdda::gui {
+
+class HistoryPlot : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit HistoryPlot(QWidget* parent = nullptr);
+
+    /// Reads the history at `csv_path` (again) and redraws, keeping the chosen columns when
+    /// they are still there. A missing file empties the plot. Returns the number of rows.
+    int load(const QString& csv_path);
+    void clear();
+
+    const HistoryTable& table() const { return table_; }
+    /// The plotted curve (one point per history row).
+    QLineSeries* series() const { return series_; }
+    QChart* chart() const;
+    /// Chooses the plotted column (e.g. "crest:uy") and the abscissa ("time" or "load:<name>").
+    void setColumns(const QString& y_column, const QString& x_column);
+    QString yColumn() const;
+    QString xColumn() const;
+
+private:
+    void redraw();
+
+    QComboBox* y_box_ = nullptr;
+    QComboBox* x_box_ = nullptr;
+    QLabel* note_ = nullptr;
+    QChartView* view_ = nullptr;
+    QLineSeries* series_ = nullptr;
+    QValueAxis* x_axis_ = nullptr;
+    QValueAxis* y_axis_ = nullptr;
+    HistoryTable table_;
+};
+
+}  // namespace mcdda::gui

@@ -1,0 +1,50 @@
+#pragma once
+/// \file StepSlider.hpp
+/// Replays the saved steps of a results folder: a slider over the entries of the run's .pvd
+/// and a label with the step's time. Choosing a position emits the step's .vtu.
+
+#include "results/PvdFile.hpp"
+
+#include <QString>
+#include <QWidget>
+
+#include <vector>
+
+class QLabel;
+class QSlider;
+
+namespace mcdda::gui {
+
+class StepSlider : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit StepSlider(QWidget* parent = nullptr);
+
+    /// Reads the .pvd at `path` (again) and moves to its last step without emitting
+    /// stepChosen. An unreadable or missing file leaves no steps. Returns the step count.
+    int load(const QString& pvd_path);
+    /// Forgets the steps.
+    void clear();
+
+    /// Number of saved steps (slider positions).
+    int count() const { return static_cast<int>(entries_.size()); }
+    const std::vector<PvdEntry>& entries() const { return entries_; }
+    int currentIndex() const;
+    /// Moves to saved step `index` (0 = the first saved) and emits stepChosen.
+    void setCurrentIndex(int index);
+    QSlider* slider() const { return slider_; }
+
+signals:
+    /// The user (or setCurrentIndex) chose a saved step.
+    void stepChosen(const QString& vtu_path, double time);
+
+private:
+    void showLabel();
+
+    QSlider* slider_ = nullptr;
+    QLabel* label_ = nullptr;
+    std::vector<PvdEntry> entries_;
+};
+
+}  // namespace mcdda::gui

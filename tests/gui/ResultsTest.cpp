@@ -1,0 +1,265 @@
+// The results features of the desktop program on a (virtual) X server: more fields and the
+// deformed shape in the view, replaying saved steps, the history plot and the exports. One
+// short run of the incline example is shared by the tests.
+
+#include "MainWindow.hpp"
+#include "results/HistoryPlot.hpp"
+#include "results/StepSlider.hpp"
+#include "run/RunController.hpp"
+#include "widgets/ModelView.hpp"
+
+#include <QChart>
+#include <QDir>
+#include <QFile>
+#include <QGuiApplication>
+#include <QImageReader>
+#include <QLineSeries>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <map>
+#include <memory>
+
+using namespace mcdda;
+using mcdda::gui::MainWindow;
+using mcdda::gui::ModelView;
+
+namespace {
+
+const QString incline = QStringLiteral(MCDDA_EXAMPLES_DIR "/incline-sliding.json");
+
+bool saturated(QColor c) { return c.hsvSaturation() > 120 && c.value() > 80; }
+
+void keep(const QImage& image, const QString& name)
+{
+    image.save(QStringLiteral(MCDDA_TEST_OUTPUT_DIR "/results_") + name + QStringLiteral(".png"));
+}
+
+/// Pixels that differ clearly between two frames of the same size.
+int differing(const QImage& a, const QImage& b)
+{
+    if (a.size() != b.size()) return a.width() * a.height();
+    int n = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) {
+            const QColor p = a.pixelColor(x, y), q = b.pixelColor(x, y);
+            if (std::abs(p.red() - q.red()) + std::abs(p.green() - q.green()) + std::abs(p.blue() - q.blue()) > 60) ++n;
+        }
+    return n;
+}
+
+/// Histogram of coarse colours (4 levels a channel) of the left part (the model, not the bar).
+std::map<int, int> colour_histogram(const QImage& image)
+{
+    std::map<int, int> h;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width() * 6 / 10; ++x) {
+            const QColor c = image.pixelColor(x, y);
+            ++h[(c.red() / 64) * 16 + (c.green() / 64) * 4 + c.blue() / 64];
+        }
+    return h;
+}
+
+/// Non-white pixels in the right part of the frame, where the scalar bar is.
+int legend_ink(const QImage& image)
+{
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = image.width() * 8 / 10; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (c.red() < 200 || c.green() < 200 || c.blue() < 200) ++n;
+        }
+    return n;
+}
+
+}  // namespace
+
+class ResultsTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void fieldsChangeThePicture();
+    void stepSliderReplaysSavedSteps();
+    void plotShowsTheHistory();
+    void exportPngWritesTheFrame();
+    void exportsCopyTheFiles();
+    void cleanupTestCase();
+
+private:
+    QTemporaryDir out_;
+    std::unique_ptr<MainWindow> window_;
+};
+
+void ResultsTest::initTestCase()
+{
+    gui::register_run_types();
+    if (QGuiApplication::platformName() != QLatin1String("xcb"))
+        QSKIP("the VTK view needs the xcb platform (run under xvfb-run)");
+    QVERIFY(out_.isValid());
+    window_ = std::make_unique<MainWindow>();
+    const auto model = std::make_shared<const Preprocessed>(
+        preprocess_file(incline.toStdString(), {"/analysis/steps=6", "/analysis/output_every=2"}));
+    QVERIFY(model->ok);
+    window_->showPreprocessed(model, incline);
+    window_->setRunOutputFolder(out_.path());
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    QSignalSpy finished(window_.get(), &MainWindow::runFinished);
+    QVERIFY(window_->startRun());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 120000);
+    QCOMPARE(finished.at(0).at(0).value<RunStatus>(), RunStatus::Completed);
+    QCOMPARE(window_->resultsFolder(), out_.path());
+}
+
+void ResultsTest::fieldsChangeThePicture()
+{
+    ModelView* view = window_->modelView();
+    window_->setResultField(QStringLiteral("stress_1"));
+    QCOMPARE(window_->resultField(), QStringLiteral("stress_1"));
+    const QImage sigma1 = view->grabFrame();
+    keep(sigma1, QStringLiteral("stress_1"));
+    window_->setResultField(QStringLiteral("displacement"));
+    const QImage displacement = view->grabFrame();
+    keep(displacement, QStringLiteral("displacement"));
+    QVERIFY(!sigma1.isNull() && sigma1.size() == displacement.size());
+
+    // Both are coloured (a rainbow map) but differently distributed.
+    const auto a = colour_histogram(sigma1), b = colour_histogram(displacement);
+    QVERIFY(a != b);
+    int moved = 0;  // pixels that change bins, summed over the bins
+    for (const auto& [bin, count] : a) moved += std::abs(count - (b.count(bin) ? b.at(bin) : 0));
+    QVERIFY2(moved > 2000, qPrintable(QString::number(moved)));
+    QVERIFY2(differing(sigma1, displacement) > 2000, "the two fields look the same");
+    // The scalar bar (colours, labels, title) is drawn at the right.
+    QVERIFY2(legend_ink(sigma1) > 2000, qPrintable(QString::number(legend_ink(sigma1))));
+    QVERIFY2(legend_ink(displacement) > 2000, qPrintable(QString::number(legend_ink(displacement))));
+
+    // Every field of the chooser can be shown.
+    for (const char* field : {"ux", "uy", "stress_xx", "stress_yy", "stress_xy", "stress_3", "plastic_strain",
+                              "plastic_state"}) {
+        window_->setResultField(QString::fromLatin1(field));
+        QCOMPARE(window_->resultField(), QString::fromLatin1(field));
+        QVERIFY2(view->result() != nullptr || !view->resultFile().isEmpty(), field);
+    }
+    window_->setResultField(QStringLiteral("displacement"));
+}
+
+void ResultsTest::stepSliderReplaysSavedSteps()
+{
+    gui::StepSlider* steps = window_->stepSlider();
+    QVERIFY(steps != nullptr);
+    const QStringList vtus = QDir(out_.path()).entryList({QStringLiteral("*.vtu")}, QDir::Files, QDir::Name);
+    QVERIFY(vtus.size() >= 2);
+    QCOMPARE(steps->count(), static_cast<int>(vtus.size()));
+    QCOMPARE(steps->slider()->maximum() - steps->slider()->minimum() + 1, static_cast<int>(vtus.size()));
+    QCOMPARE(steps->currentIndex(), steps->count() - 1);
+
+    ModelView* view = window_->modelView();
+    window_->setDeformFactor(20.0);
+    steps->setCurrentIndex(steps->count() - 1);
+    QCOMPARE(QFileInfo(view->resultFile()).fileName(), vtus.last());
+    const QImage last = view->grabFrame();
+    keep(last, QStringLiteral("step_last"));
+
+    steps->slider()->setValue(0);  // as the user drags it
+    QCOMPARE(QFileInfo(view->resultFile()).fileName(), vtus.first());
+    const QImage first = view->grabFrame();
+    keep(first, QStringLiteral("step_0"));
+    QVERIFY2(differing(first, last) > 500, qPrintable(QString::number(differing(first, last))));
+
+    // Nothing has moved at step 0: the deformation factor changes nothing and the displacement
+    // is uniform (no red end of the map on the sliding block).
+    window_->setDeformFactor(0.0);
+    const QImage undeformed = view->grabFrame();
+    window_->setDeformFactor(20.0);
+    const QImage deformed = view->grabFrame();
+    // Only joints (drawn undeformed only) may differ.
+    QVERIFY2(differing(undeformed, deformed) < 2000, qPrintable(QString::number(differing(undeformed, deformed))));
+    const QPoint block = view->toWidget(QPointF(4.82, 4.37)).toPoint();
+    const QColor c0 = first.pixelColor(block), c1 = last.pixelColor(block);
+    QVERIFY2(!(c0.red() > 180 && c0.blue() < 100), qPrintable(c0.name()));
+    QVERIFY2(c1 != c0, qPrintable(c1.name()));
+    window_->setDeformFactor(0.0);
+}
+
+void ResultsTest::plotShowsTheHistory()
+{
+    gui::HistoryPlot* plot = window_->historyPlot();
+    QVERIFY(plot != nullptr);
+    QFile csv(out_.filePath(QStringLiteral("history.csv")));
+    QVERIFY(csv.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QList<QByteArray> lines = csv.readAll().trimmed().split('\n');
+    const int rows = static_cast<int>(lines.size()) - 1;
+    QVERIFY(rows >= 6);
+    QCOMPARE(static_cast<int>(plot->table().rows.size()), rows);
+    QVERIFY(!plot->yColumn().isEmpty());
+    QVERIFY(plot->yColumn().endsWith(QStringLiteral(":ux")) || plot->yColumn().endsWith(QStringLiteral(":uy")));
+    QCOMPARE(plot->xColumn(), QStringLiteral("time"));
+    QVERIFY(plot->chart() != nullptr);
+    QCOMPARE(plot->chart()->series().size(), 1);
+    QCOMPARE(plot->series()->count(), rows);
+
+    // Against a load column when there is one (load-settlement).
+    for (const QString& c : plot->table().columns)
+        if (c.startsWith(QStringLiteral("load:"))) {
+            plot->setColumns(plot->yColumn(), c);
+            QCOMPARE(plot->xColumn(), c);
+            QCOMPARE(plot->series()->count(), rows);
+            plot->setColumns(plot->yColumn(), QStringLiteral("time"));
+            break;
+        }
+    const int column = plot->table().column(plot->yColumn());
+    QCOMPARE(plot->series()->at(rows - 1).y(), plot->table().rows.back()[column]);
+}
+
+void ResultsTest::exportPngWritesTheFrame()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("view.png"));
+    const QImage frame = window_->modelView()->grabFrame();
+    QVERIFY(window_->exportPng(path));
+    QImage saved;
+    QVERIFY(saved.load(path));
+    QCOMPARE(saved.size(), frame.size());
+    int coloured = 0;
+    for (int y = 0; y < saved.height(); ++y)
+        for (int x = 0; x < saved.width(); ++x)
+            if (saturated(saved.pixelColor(x, y))) ++coloured;
+    QVERIFY2(coloured > 10000, qPrintable(QString::number(coloured)));
+    // No temporary file is left beside it.
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{QStringLiteral("view.png")});
+
+    // A folder that cannot be written: false, and the window says why.
+    QVERIFY(!window_->exportPng(dir.filePath(QStringLiteral("missing/sub/view.png"))));
+    QVERIFY(window_->messages().contains(QStringLiteral("view.png")));
+}
+
+void ResultsTest::exportsCopyTheFiles()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString target = dir.filePath(QStringLiteral("copy"));
+    QVERIFY(window_->exportSteps(target));
+    const QStringList vtus = QDir(out_.path()).entryList({QStringLiteral("*.vtu")}, QDir::Files, QDir::Name);
+    QCOMPARE(QDir(target).entryList({QStringLiteral("*.vtu")}, QDir::Files, QDir::Name), vtus);
+    QVERIFY(QFile::exists(QDir(target).filePath(QStringLiteral("incline-sliding.pvd"))));
+
+    const QString csv = dir.filePath(QStringLiteral("h.csv"));
+    QVERIFY(window_->exportHistory(csv));
+    QFile a(csv), b(out_.filePath(QStringLiteral("history.csv")));
+    QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+    QCOMPARE(a.readAll(), b.readAll());
+}
+
+void ResultsTest::cleanupTestCase()
+{
+    if (window_) window_->close();
+    window_.reset();
+}
+
+QTEST_MAIN(ResultsTest)
+#include "ResultsTest.moc"
