@@ -1,6 +1,8 @@
 #include "MainWindow.hpp"
 
 #include "Version.hpp"
+#include "document/ModelDocument.hpp"
+#include "tools/DrawTool.hpp"
 #include "results/HistoryPlot.hpp"
 #include "results/ResultExport.hpp"
 #include "results/StepSlider.hpp"
@@ -23,6 +25,11 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QActionGroup>
+#include <QHeaderView>
+#include <QSettings>
+#include <QTreeWidget>
+#include <QUndoStack>
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QStatusBar>
@@ -41,6 +48,11 @@ namespace {
 
 QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 
+constexpr int max_recent_files = 8;
+const char* const recent_key = "recentFiles";
+
+QString point_text(const Point2& p) { return QStringLiteral("(%1, %2)").arg(p.x, 0, 'g', 6).arg(p.y, 0, 'g', 6); }
+
 bool is_model_file(const QUrl& url)
 {
     return url.isLocalFile() && url.toLocalFile().endsWith(QStringLiteral(".json"), Qt::CaseInsensitive);
@@ -52,9 +64,22 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
     view_ = new ModelView(this);
     setCentralWidget(view_);
+    document_ = new ModelDocument(this);
+    region_tool_ = new DrawTool(DrawTool::Shape::Polygon, view_, [this]() -> const Model& { return document_->model(); }, this);
+    joint_tool_ = new DrawTool(DrawTool::Shape::Polyline, view_, [this]() -> const Model& { return document_->model(); }, this);
+    connect(region_tool_, &DrawTool::finished, this, [this](const std::vector<Point2>& points) {
+        document_->addRegion(points, document_->model().materials.empty() ? -1 : 0);
+    });
+    connect(joint_tool_, &DrawTool::finished, this, [this](const std::vector<Point2>& points) {
+        document_->addJoint(points);
+    });
     createDock();
+    createModelDock();
     createResultDocks();
+    tabifyDockWidget(plot_dock_, model_dock_);  // the view keeps its width
+    model_dock_->raise();
     createActions();
+    createEditActions();
     createRunActions();
     createStatusBar();
     setAcceptDrops(true);
@@ -62,6 +87,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     resize(1100, 750);
     connect(view_, &ModelView::cursorMoved, this, &MainWindow::showCursor);
     connect(view_, &ModelView::cursorLeft, cursor_label_, &QLabel::clear);
+    connect(document_, &ModelDocument::changed, this, &MainWindow::onDocumentChanged);
+    connect(document_, &ModelDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(document_, &ModelDocument::pathChanged, this, &MainWindow::updateTitle);
+    applySnap();
+    refreshModelTree();
 }
 
 MainWindow::~MainWindow() { joinRun(); }
@@ -69,6 +99,10 @@ MainWindow::~MainWindow() { joinRun(); }
 void MainWindow::createActions()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* new_action = file->addAction(tr("&New"), this, &MainWindow::newModel);
+    new_action->setObjectName(QStringLiteral("newAction"));
+    new_action->setShortcut(QKeySequence::New);
+    new_action->setStatusTip(tr("Start an empty model"));
     QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::openDialog);
     open->setShortcut(QKeySequence::Open);
     open->setStatusTip(tr("Open a model file (*.json)"));
@@ -76,6 +110,18 @@ void MainWindow::createActions()
     reload_action_->setShortcut(QKeySequence::Refresh);
     reload_action_->setStatusTip(tr("Read the model file again, e.g. after editing it"));
     reload_action_->setEnabled(false);
+    recent_menu_ = file->addMenu(tr("Recent &Files"));
+    recent_menu_->setObjectName(QStringLiteral("recentMenu"));
+    refreshRecentMenu();
+    file->addSeparator();
+    QAction* save_action = file->addAction(tr("&Save"), this, &MainWindow::save);
+    save_action->setObjectName(QStringLiteral("saveAction"));
+    save_action->setShortcut(QKeySequence::Save);
+    save_action->setStatusTip(tr("Write the model to its file"));
+    QAction* save_as = file->addAction(tr("Save &As..."), this, &MainWindow::saveAsDialog);
+    save_as->setObjectName(QStringLiteral("saveAsAction"));
+    save_as->setShortcut(QKeySequence::SaveAs);
+    save_as->setStatusTip(tr("Write the model to a new file"));
     file->addSeparator();
     createExportActions(file);
     file->addSeparator();
@@ -102,6 +148,14 @@ void MainWindow::createActions()
     show_points_ = toggle(tr("Measurement &points"), tr("Show the measurement points"));
     show_legend_ = toggle(tr("Le&gend"), tr("Show the legend"));
     view->addSeparator();
+    snap_action_ = view->addAction(tr("Snap to &Grid"));
+    snap_action_->setObjectName(QStringLiteral("snapToGridAction"));
+    snap_action_->setCheckable(true);
+    snap_action_->setChecked(true);
+    snap_action_->setStatusTip(tr("Drawn points snap to a grid (0.5 m) and to nearby region vertices"));
+    connect(snap_action_, &QAction::toggled, this, &MainWindow::applySnap);
+    view->addSeparator();
+    view->addAction(model_dock_->toggleViewAction());
     view->addAction(dock_->toggleViewAction());
     view->addAction(steps_dock_->toggleViewAction());
     view->addAction(plot_dock_->toggleViewAction());
@@ -115,6 +169,281 @@ void MainWindow::createActions()
                               "to zoom, press F to fit.</p>")
                                .arg(QString::fromLatin1(mcdda::version_string)));
     });
+}
+
+void MainWindow::createEditActions()
+{
+    // Between File and View (created before it).
+    auto* edit = new QMenu(tr("&Edit"), this);
+    menuBar()->insertMenu(menuBar()->actions().at(1), edit);
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("undoAction"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("redoAction"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+
+    QToolBar* bar = addToolBar(tr("Tools"));
+    bar->setObjectName(QStringLiteral("tools"));
+    auto* group = new QActionGroup(this);
+    auto tool = [&](const QString& text, const QString& name, const QString& tip, void (MainWindow::*slot)()) {
+        QAction* action = edit->addAction(text, this, slot);
+        action->setObjectName(name);
+        action->setCheckable(true);
+        action->setStatusTip(tip);
+        group->addAction(action);
+        bar->addAction(action);
+        return action;
+    };
+    select_action_ = tool(tr("&Select"), QStringLiteral("selectToolAction"),
+                          tr("Navigate: drag to pan, turn the wheel to zoom"), &MainWindow::selectTool);
+    region_action_ = tool(tr("Draw &Region"), QStringLiteral("drawRegionAction"),
+                          tr("Click the corners of a new region; double-click or Enter closes it, Escape cancels"),
+                          &MainWindow::drawRegionTool);
+    joint_action_ = tool(tr("Draw &Joint"), QStringLiteral("drawJointAction"),
+                         tr("Click the points of a new joint; double-click or Enter finishes it, Escape cancels"),
+                         &MainWindow::drawJointTool);
+    select_action_->setChecked(true);
+}
+
+DrawTool* MainWindow::activeTool() const { return dynamic_cast<DrawTool*>(view_->tool()); }
+
+void MainWindow::setTool(DrawTool* tool)
+{
+    view_->setTool(tool);
+    QAction* action = tool == region_tool_ ? region_action_ : tool == joint_tool_ ? joint_action_ : select_action_;
+    action->setChecked(true);
+    if (tool) {
+        view_->clearResult();
+        view_->setFocus();
+    }
+}
+
+void MainWindow::selectTool() { setTool(nullptr); }
+void MainWindow::drawRegionTool() { setTool(region_tool_); }
+void MainWindow::drawJointTool() { setTool(joint_tool_); }
+
+void MainWindow::setGridSpacing(double metres)
+{
+    if (metres > 0.0) grid_spacing_ = metres;
+    applySnap();
+}
+
+void MainWindow::applySnap()
+{
+    SnapOptions options;
+    options.grid = snap_action_ && snap_action_->isChecked();
+    options.spacing = grid_spacing_;
+    region_tool_->setSnapOptions(options);
+    joint_tool_->setSnapOptions(options);
+}
+
+void MainWindow::createModelDock()
+{
+    tree_ = new QTreeWidget(this);
+    tree_->setObjectName(QStringLiteral("modelTree"));
+    tree_->setColumnCount(2);
+    tree_->setHeaderLabels({tr("Item"), tr("Details")});
+    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    tree_->setSelectionMode(QAbstractItemView::SingleSelection);
+    model_dock_ = new QDockWidget(tr("Model"), this);
+    model_dock_->setObjectName(QStringLiteral("model"));
+    model_dock_->setWidget(tree_);
+    addDockWidget(Qt::RightDockWidgetArea, model_dock_);
+}
+
+void MainWindow::refreshModelTree()
+{
+    const Model& m = document_->model();
+    tree_->clear();
+    auto group = [&](const QString& title, std::size_t count) {
+        auto* item = new QTreeWidgetItem(tree_, {title, QString::number(count)});
+        item->setExpanded(true);
+        return item;
+    };
+    auto name_or = [](const std::string& name, const QString& fallback) {
+        return name.empty() ? fallback : to_qt(name);
+    };
+    QTreeWidgetItem* regions = group(tr("Regions"), m.regions.size());
+    for (std::size_t i = 0; i < m.regions.size(); ++i) {
+        const Region& r = m.regions[i];
+        const QString material = r.material >= 0 && static_cast<std::size_t>(r.material) < m.materials.size()
+                                     ? to_qt(m.materials[static_cast<std::size_t>(r.material)].name)
+                                     : tr("no material");
+        new QTreeWidgetItem(regions, {name_or(r.name, tr("region %1").arg(i + 1)),
+                                      tr("%1, %n vertices", "", static_cast<int>(r.boundary.size())).arg(material)});
+    }
+    QTreeWidgetItem* joints = group(tr("Joints"), m.joints.size());
+    QTreeWidgetItem* explicit_joints = new QTreeWidgetItem(joints, {tr("Explicit")});
+    std::vector<QTreeWidgetItem*> sets;
+    for (std::size_t i = 0; i < m.joint_sets.size(); ++i)
+        sets.push_back(new QTreeWidgetItem(joints, {tr("Set %1").arg(name_or(m.joint_sets[i].name, QString::number(i + 1))),
+                                                    tr("spacing %1 m").arg(m.joint_sets[i].spacing)}));
+    int explicit_count = 0;
+    for (std::size_t i = 0; i < m.joints.size(); ++i) {
+        const Joint& j = m.joints[i];
+        QTreeWidgetItem* parent = j.joint_set >= 0 && static_cast<std::size_t>(j.joint_set) < sets.size()
+                                      ? sets[static_cast<std::size_t>(j.joint_set)] : explicit_joints;
+        if (parent == explicit_joints) ++explicit_count;
+        const QString details = j.points.empty() ? QString()
+                                                 : tr("%1 to %2").arg(point_text(j.points.front()), point_text(j.points.back()));
+        new QTreeWidgetItem(parent, {name_or(j.name, tr("joint %1").arg(i + 1)), details});
+    }
+    explicit_joints->setText(1, QString::number(explicit_count));
+    explicit_joints->setExpanded(true);
+    QTreeWidgetItem* materials = group(tr("Materials"), m.materials.size() + m.joint_materials.size());
+    for (const Material& x : m.materials) new QTreeWidgetItem(materials, {to_qt(x.name), tr("rock/soil")});
+    for (const JointMaterial& x : m.joint_materials) new QTreeWidgetItem(materials, {to_qt(x.name), tr("joint")});
+    QTreeWidgetItem* supports = group(tr("Supports"), m.fixed_points.size() + m.rollers.size());
+    for (const FixedPoint& f : m.fixed_points)
+        new QTreeWidgetItem(supports, {to_qt(f.name), tr("fixed point %1").arg(point_text(f.point))});
+    for (const Roller& r : m.rollers)
+        new QTreeWidgetItem(supports, {to_qt(r.name), tr("roller %1 to %2").arg(point_text(r.from), point_text(r.to))});
+    QTreeWidgetItem* loads = group(tr("Loads"), m.point_loads.size() + m.edge_pressures.size());
+    for (const PointLoad& l : m.point_loads)
+        new QTreeWidgetItem(loads, {to_qt(l.name), tr("point load at %1").arg(point_text(l.point))});
+    for (const EdgePressure& e : m.edge_pressures)
+        new QTreeWidgetItem(loads, {to_qt(e.name), tr("pressure %1 Pa").arg(e.pressure)});
+    QTreeWidgetItem* points = group(tr("Measurement points"), m.measurement_points.size());
+    for (const MeasurementPoint& q : m.measurement_points)
+        new QTreeWidgetItem(points, {to_qt(q.name), point_text(q.point)});
+}
+
+QStringList MainWindow::recentFiles() const
+{
+    return QSettings().value(QString::fromLatin1(recent_key)).toStringList();
+}
+
+void MainWindow::addRecentFile(const QString& path)
+{
+    QStringList files = recentFiles();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > max_recent_files) files.removeLast();
+    QSettings().setValue(QString::fromLatin1(recent_key), files);
+    refreshRecentMenu();
+}
+
+void MainWindow::refreshRecentMenu()
+{
+    recent_menu_->clear();
+    const QStringList files = recentFiles();
+    for (int i = 0; i < files.size(); ++i) {
+        const QString path = files[i];
+        QAction* action = recent_menu_->addAction(tr("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()), this,
+                                                  [this, path] {
+                                                      if (maybeSave()) openModel(path);
+                                                  });
+        action->setStatusTip(path);
+    }
+    recent_menu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::updateTitle()
+{
+    QString name;
+    const QString path = document_->path();
+    const QString model_name = to_qt(document_->model().name);
+    if (!path.isEmpty())
+        name = model_name.isEmpty() ? QFileInfo(path).fileName()
+                                    : tr("%1 (%2)").arg(QFileInfo(path).fileName(), model_name);
+    else
+        name = model_name.isEmpty() ? tr("Untitled") : model_name;
+    setWindowTitle(tr("%1[*] - mcdda").arg(name));
+    setWindowModified(document_->isModified());
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!document_->isModified() || !ask_to_save_) return true;
+    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
+                                             tr("The model has been modified. Save the changes?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                             QMessageBox::Save);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::newModel()
+{
+    if (!maybeSave()) return;
+    constexpr double pi = 3.14159265358979323846;
+    Model m;
+    Material rock;
+    rock.name = tr("rock").toStdString();
+    rock.young_modulus = 10e9;
+    rock.poisson_ratio = 0.25;
+    rock.density = 2600.0;
+    rock.cohesion = 1e6;
+    rock.friction_angle = 35.0 * pi / 180.0;
+    rock.dilation_angle = 0.0;
+    m.materials.push_back(rock);
+    JointMaterial joint;
+    joint.name = tr("joint").toStdString();
+    joint.friction_angle = 30.0 * pi / 180.0;
+    m.joint_materials.push_back(joint);
+    m.default_joint_material = 0;
+    m.gravity = {0.0, -9.81};
+    path_.clear();
+    reload_action_->setEnabled(false);
+    document_->setModel(m);  // → onDocumentChanged: an empty picture
+    setWindowFilePath(QString());
+    view_->showBox(-5.0, -5.0, 25.0, 20.0);
+    log(tr("New model: draw regions with Edit ▸ Draw Region."));
+}
+
+bool MainWindow::save()
+{
+    if (document_->path().isEmpty()) return saveAsDialog();
+    return saveModelAs(document_->path());
+}
+
+bool MainWindow::saveAsDialog()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save model"), last_folder_, tr("Model files (*.json)"));
+    if (path.isEmpty()) return false;
+    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) path += QStringLiteral(".json");
+    return saveModelAs(path);
+}
+
+bool MainWindow::saveModelAs(const QString& path)
+{
+    QString error;
+    if (!document_->saveAs(path, &error)) {
+        reportExportError(error);
+        return false;
+    }
+    path_ = path;
+    last_folder_ = QFileInfo(path).absolutePath();
+    reload_action_->setEnabled(true);
+    setWindowFilePath(path);
+    addRecentFile(path);
+    updateTitle();
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::onDocumentChanged()
+{
+    refreshModelTree();
+    updateTitle();
+    if (syncing_) return;
+    auto p = std::make_shared<Preprocessed>();
+    try {
+        *p = preprocess_model(document_->model(), PreprocessStage::Mesh);
+    } catch (const std::exception& e) {
+        Diagnostic d;
+        d.message = e.what();
+        p->diagnostics.push_back(d);
+        p->model = document_->model();
+        p->ok = false;
+    }
+    const QString source = document_->path().isEmpty() ? tr("Untitled") : document_->path();
+    showScene(p, source, true, false);
 }
 
 void MainWindow::createDock()
@@ -291,6 +620,7 @@ void MainWindow::applySceneOptions()
 
 void MainWindow::openDialog()
 {
+    if (!maybeSave()) return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open model"), last_folder_,
                                                       tr("Model files (*.json);;All files (*)"));
     if (!path.isEmpty()) openModel(path);
@@ -298,6 +628,7 @@ void MainWindow::openDialog()
 
 void MainWindow::reload()
 {
+    if (!maybeSave()) return;
     if (!path_.isEmpty()) load(path_, true);
 }
 
@@ -326,11 +657,27 @@ bool MainWindow::load(const QString& path, bool keep_camera)
         result->diagnostics.push_back(d);
         result->ok = false;
     }
-    showPreprocessed(result, path, keep_camera);
+    syncing_ = true;
+    const std::vector<Diagnostic> read = document_->open(path);
+    if (std::any_of(read.begin(), read.end(), [](const Diagnostic& d) { return d.severity == Diagnostic::Severity::Error; }))
+        document_->setModel(result->model);  // what could be read, without a file to save to
+    syncing_ = false;
+    if (document_->path() == path) addRecentFile(path);
+    showScene(result, path, keep_camera, true);
     return result->ok;
 }
 
 void MainWindow::showPreprocessed(std::shared_ptr<const Preprocessed> p, const QString& source, bool keep_camera)
+{
+    if (!p) return;
+    syncing_ = true;
+    document_->setModel(p->model);  // edits start from it; saving asks for a file
+    syncing_ = false;
+    showScene(std::move(p), source, keep_camera, true);
+}
+
+void MainWindow::showScene(std::shared_ptr<const Preprocessed> p, const QString& source, bool keep_camera,
+                           bool interactive)
 {
     if (!p) return;
     if (isRunning()) {
@@ -342,9 +689,8 @@ void MainWindow::showPreprocessed(std::shared_ptr<const Preprocessed> p, const Q
     results_folder_.clear();
     steps_->clear();
     plot_->clear();
-    const QString name = p->model.name.empty() ? QFileInfo(source).fileName() : to_qt(p->model.name);
-    setWindowTitle(tr("%1 - mcdda").arg(name));
-    setWindowFilePath(source);
+    if (interactive) setWindowFilePath(source);
+    updateTitle();
 
     QStringList lines;
     lines << tr("Model: %1").arg(source);
@@ -371,7 +717,7 @@ void MainWindow::showPreprocessed(std::shared_ptr<const Preprocessed> p, const Q
     messages_->setPlainText(lines.join(QLatin1Char('\n')));
     view_->setScene(std::move(p), keep_camera);
     updateRunActions();
-    if (!view_->scene()->ok) reportFailure(*view_->scene(), source);
+    if (!view_->scene()->ok && interactive) reportFailure(*view_->scene(), source);
 }
 
 void MainWindow::reportFailure(const Preprocessed& p, const QString& source)
@@ -625,6 +971,10 @@ void MainWindow::joinRun()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
     joinRun();
     QMainWindow::closeEvent(event);
 }

@@ -26,12 +26,16 @@ class QComboBox;
 class QDoubleSpinBox;
 class QProgressBar;
 class QThread;
+class QTreeWidget;
+class QActionGroup;
 
 namespace mcdda::gui {
 
 class ModelView;
 class StepSlider;
 class HistoryPlot;
+class ModelDocument;
+class DrawTool;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -51,6 +55,22 @@ public:
                           bool keep_camera = false);
 
     ModelView* modelView() const { return view_; }
+    /// The model being edited (what the view shows).
+    ModelDocument* document() const { return document_; }
+    /// The Model dock's tree.
+    QTreeWidget* modelTree() const { return tree_; }
+    /// The drawing tools (null for Select).
+    DrawTool* activeTool() const;
+    /// Grid snapping of the drawing tools (View ▸ Snap to Grid) and its spacing (m).
+    void setGridSpacing(double metres);
+    double gridSpacing() const { return grid_spacing_; }
+    /// Whether closing, New or Open ask before unsaved changes are lost (default true);
+    /// false discards them silently (for tests).
+    void setAskToSave(bool ask) { ask_to_save_ = ask; }
+    /// File ▸ Save As without its dialog: writes the document to `path`.
+    bool saveModelAs(const QString& path);
+    /// The Recent Files list (newest first).
+    QStringList recentFiles() const;
     /// The file shown, empty when none was opened.
     QString modelPath() const { return path_; }
     /// The text of the Messages dock.
@@ -86,6 +106,16 @@ public:
     bool exportHistory(const QString& path);
 
 public slots:
+    /// File ▸ New: an empty model with a default material and joint material.
+    void newModel();
+    /// File ▸ Save (Save As when the model has no file yet).
+    bool save();
+    /// File ▸ Save As: asks for a file.
+    bool saveAsDialog();
+    /// Edit ▸ tools: the navigation tool, drawing regions, drawing joints.
+    void selectTool();
+    void drawRegionTool();
+    void drawJointTool();
     /// Run ▸ Run: analyses the shown model on a worker thread. False when there is no usable
     /// model or a run is going on.
     bool startRun();
@@ -110,6 +140,21 @@ protected:
 
 private:
     void createActions();
+    void createEditActions();
+    void createModelDock();
+    void refreshModelTree();
+    void refreshRecentMenu();
+    void addRecentFile(const QString& path);
+    void updateTitle();
+    /// The document changed: pre-processes it again and shows it, keeping the camera.
+    void onDocumentChanged();
+    /// Shows a pre-processed model; `interactive` reports failures in a message box.
+    void showScene(std::shared_ptr<const Preprocessed> p, const QString& source, bool keep_camera,
+                   bool interactive);
+    /// Asks whether to save unsaved changes; false when the user cancelled.
+    bool maybeSave();
+    void setTool(DrawTool* tool);
+    void applySnap();
     void createDock();
     void createStatusBar();
     void createResultDocks();
@@ -165,6 +210,19 @@ private:
     int progress_ms_ = 100, snapshot_ms_ = 250;
     QString path_;
     QString last_folder_;
+    ModelDocument* document_ = nullptr;
+    bool syncing_ = false;  ///< the document is being set from an already pre-processed model
+    bool ask_to_save_ = true;
+    QTreeWidget* tree_ = nullptr;
+    QDockWidget* model_dock_ = nullptr;
+    QMenu* recent_menu_ = nullptr;
+    QAction* snap_action_ = nullptr;
+    QAction* select_action_ = nullptr;
+    QAction* region_action_ = nullptr;
+    QAction* joint_action_ = nullptr;
+    DrawTool* region_tool_ = nullptr;
+    DrawTool* joint_tool_ = nullptr;
+    double grid_spacing_ = 0.5;
 };
 
 }  // namespace mcdda::gui

@@ -53,6 +53,22 @@ void AddJointCommand::undo() {
     notify();
 }
 
+AddRollerCommand::AddRollerCommand(ModelDocument* document, Roller roller, QUndoCommand* parent)
+    : DocumentCommand(document, parent), roller_(std::move(roller)) {
+    if (roller_.name.empty()) roller_.name = "roller " + std::to_string(document->model().rollers.size() + 1);
+    setText(tr("Add roller \"%1\"").arg(QString::fromStdString(roller_.name)));
+}
+
+void AddRollerCommand::redo() {
+    model().rollers.push_back(roller_);
+    notify();
+}
+
+void AddRollerCommand::undo() {
+    model().rollers.pop_back();
+    notify();
+}
+
 SetMaterialCommand::SetMaterialCommand(ModelDocument* document, int index, Material material, QUndoCommand* parent)
     : DocumentCommand(document, parent), index_(index), new_(std::move(material)) {
     const auto& materials = document->model().materials;

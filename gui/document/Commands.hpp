@@ -54,6 +54,18 @@ private:
     std::size_t index_ = 0;  ///< where redo() inserted it
 };
 
+/// Appends a roller support.
+class AddRollerCommand : public DocumentCommand {
+    Q_DECLARE_TR_FUNCTIONS(mcdda::gui::AddRollerCommand)
+public:
+    AddRollerCommand(ModelDocument* document, Roller roller, QUndoCommand* parent = nullptr);
+    void redo() override;
+    void undo() override;
+
+private:
+    Roller roller_;
+};
+
 /// Replaces one material (by index); regions keep referring to it by index.
 class SetMaterialCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(mcdda::gui::SetMaterialCommand)

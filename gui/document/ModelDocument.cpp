@@ -69,6 +69,10 @@ void ModelDocument::addJoint(const std::vector<Point2>& points, int jointMateria
     undo_.push(new AddJointCommand(this, std::move(j)));
 }
 
+void ModelDocument::addRoller(const Roller& roller) {
+    undo_.push(new AddRollerCommand(this, roller));
+}
+
 void ModelDocument::setMaterial(int index, const Material& material) {
     undo_.push(new SetMaterialCommand(this, index, material));
 }

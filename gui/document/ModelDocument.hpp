@@ -51,6 +51,8 @@ public:
     void addRegion(const Ring& boundary, int material, const QString& name = QString());
     /// Adds an explicit joint along the polyline; an empty name becomes "joint N".
     void addJoint(const std::vector<Point2>& points, int jointMaterial = -1, const QString& name = QString());
+    /// Adds a roller support (an empty name becomes "roller N").
+    void addRoller(const Roller& roller);
     /// Replaces material `index`.
     void setMaterial(int index, const Material& material);
     void setAnalysisSettings(const AnalysisSettings& settings);

@@ -1,15 +1,23 @@
 #include "widgets/ModelView.hpp"
 
+#include "tools/ViewTool.hpp"
 #include "view/Palette.hpp"
 
 #include <QEvent>
 #include <QGuiApplication>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QResizeEvent>
 #include <QWheelEvent>
 #include <QtGui/qguiapplication_platform.h>
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
@@ -26,6 +34,11 @@ namespace mcdda::gui {
 struct ModelView::Impl {
     vtkNew<vtkRenderWindow> window;
     vtkNew<vtkRenderer> renderer;
+    vtkNew<vtkRenderer> overlay;  ///< layer 1, same camera: the rubber band stays on top
+    vtkNew<vtkPolyData> preview_data;
+    vtkNew<vtkActor> preview_actor;
+    std::vector<Point2> preview;
+    ViewTool* tool = nullptr;
     std::shared_ptr<const Preprocessed> scene;
     view::SceneOptions options;
     std::shared_ptr<const ResultSnapshot> result;  ///< shown instead of the model when set
@@ -52,6 +65,20 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<
     impl_->window->SetMultiSamples(0);  // an X visual with multisampling is not guaranteed
     impl_->renderer->SetBackground(view::palette::background.data());
     impl_->renderer->GetActiveCamera()->ParallelProjectionOn();
+
+    impl_->window->SetNumberOfLayers(2);
+    impl_->overlay->SetLayer(1);
+    impl_->overlay->InteractiveOff();
+    impl_->window->AddRenderer(impl_->overlay);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(impl_->preview_data);
+    impl_->preview_actor->SetMapper(mapper);
+    impl_->preview_actor->GetProperty()->SetColor(0.0, 0.45, 0.85);
+    impl_->preview_actor->GetProperty()->SetLineWidth(2.0f);
+    impl_->preview_actor->GetProperty()->SetPointSize(6.0f);
+    impl_->preview_actor->GetProperty()->LightingOff();
+    impl_->preview_actor->VisibilityOff();
+    impl_->overlay->AddActor(impl_->preview_actor);
 }
 
 ModelView::~ModelView()
@@ -88,9 +115,17 @@ void ModelView::syncSize()
     impl_->window->SetSize(std::max(1, qRound(width() * ratio)), std::max(1, qRound(height() * ratio)));
 }
 
+void ModelView::syncOverlay()
+{
+    // The overlay's own camera follows the model's but fits its clipping range to the rubber band.
+    impl_->overlay->GetActiveCamera()->DeepCopy(impl_->renderer->GetActiveCamera());
+    if (!impl_->preview.empty()) impl_->overlay->ResetCameraClippingRange();
+}
+
 void ModelView::renderNow()
 {
     if (!ensureWindow()) return;
+    syncOverlay();
     impl_->window->Render();
 }
 
@@ -192,6 +227,7 @@ QImage ModelView::grabFrame()
 {
     if (!ensureWindow()) return {};
     syncSize();
+    syncOverlay();
     impl_->window->Render();
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(impl_->window);
@@ -229,6 +265,65 @@ QPointF ModelView::toWidget(const QPointF& model_pos) const
     impl_->renderer->GetActiveCamera()->GetFocalPoint(focal);
     const double m = metresPerPixel();
     return {0.5 * width() + (model_pos.x() - focal[0]) / m, 0.5 * height() - (model_pos.y() - focal[1]) / m};
+}
+
+void ModelView::setTool(ViewTool* tool)
+{
+    if (impl_->tool == tool) return;
+    if (impl_->tool) impl_->tool->cancel();
+    impl_->tool = tool;
+    impl_->panning = false;
+    if (tool) setCursor(Qt::CrossCursor); else unsetCursor();
+}
+
+ViewTool* ModelView::tool() const { return impl_->tool; }
+
+void ModelView::setPreview(const std::vector<Point2>& points, bool closed)
+{
+    impl_->preview = points;
+    vtkNew<vtkPoints> pts;
+    for (const Point2& p : points) pts->InsertNextPoint(p.x, p.y, 0.0);
+    vtkNew<vtkCellArray> lines;
+    vtkNew<vtkCellArray> verts;
+    const auto n = static_cast<vtkIdType>(points.size());
+    for (vtkIdType i = 0; i < n; ++i) verts->InsertNextCell(1, &i);
+    if (n >= 2) {
+        std::vector<vtkIdType> ids;
+        for (vtkIdType i = 0; i < n; ++i) ids.push_back(i);
+        if (closed && n >= 3) ids.push_back(0);
+        lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    }
+    impl_->preview_data->SetPoints(pts);
+    impl_->preview_data->SetVerts(verts);
+    impl_->preview_data->SetLines(lines);
+    impl_->preview_data->Modified();
+    impl_->preview_actor->SetVisibility(n > 0);
+    update();
+}
+
+void ModelView::clearPreview() { setPreview({}, false); }
+
+std::vector<Point2> ModelView::preview() const { return impl_->preview; }
+
+void ModelView::showBox(double xmin, double ymin, double xmax, double ymax)
+{
+    syncSize();
+    vtkCamera* camera = impl_->renderer->GetActiveCamera();
+    const double cx = 0.5 * (xmin + xmax), cy = 0.5 * (ymin + ymax);
+    const double wx = std::max(1e-6, xmax - xmin), wy = std::max(1e-6, ymax - ymin);
+    const double aspect = static_cast<double>(std::max(1, width())) / std::max(1, height());
+    const double half = 1.05 * std::max(0.5 * wy, 0.5 * wx / aspect);
+    const double distance = 10.0 * std::max(wx, wy);
+    camera->SetFocalPoint(cx, cy, 0.0);
+    camera->SetPosition(cx, cy, distance);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetParallelScale(half);
+    impl_->renderer->ResetCameraClippingRange();
+    double range[2];
+    camera->GetClippingRange(range);
+    camera->SetClippingRange(std::min(range[0], 0.5 * distance), std::max(range[1], 2.0 * distance));
+    impl_->camera_touched = true;
+    update();
 }
 
 void ModelView::fitView()
@@ -287,7 +382,13 @@ void ModelView::resizeEvent(QResizeEvent* event)
 
 void ModelView::mousePressEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton) {
+    if (impl_->tool && event->button() == Qt::LeftButton) {
+        setFocus(Qt::MouseFocusReason);
+        impl_->tool->pressed(event->position());
+        event->accept();
+        return;
+    }
+    if ((event->button() == Qt::LeftButton && !impl_->tool) || event->button() == Qt::MiddleButton) {
         impl_->panning = true;
         impl_->last_pos = event->position();
         setCursor(Qt::ClosedHandCursor);
@@ -304,6 +405,7 @@ void ModelView::mouseMoveEvent(QMouseEvent* event)
         panBy(pos - impl_->last_pos);
         impl_->last_pos = pos;
     }
+    if (impl_->tool) impl_->tool->moved(pos);
     emit cursorMoved(toModel(pos));
     event->accept();
 }
@@ -312,7 +414,7 @@ void ModelView::mouseReleaseEvent(QMouseEvent* event)
 {
     if (impl_->panning && !(event->buttons() & (Qt::LeftButton | Qt::MiddleButton))) {
         impl_->panning = false;
-        unsetCursor();
+        if (impl_->tool) setCursor(Qt::CrossCursor); else unsetCursor();
     }
     event->accept();
 }
@@ -324,7 +426,21 @@ void ModelView::mouseDoubleClickEvent(QMouseEvent* event)
         event->accept();
         return;
     }
+    if (impl_->tool && event->button() == Qt::LeftButton) {
+        impl_->tool->doubleClicked(event->position());
+        event->accept();
+        return;
+    }
     QWidget::mouseDoubleClickEvent(event);
+}
+
+void ModelView::keyPressEvent(QKeyEvent* event)
+{
+    if (impl_->tool && impl_->tool->keyPressed(event->key())) {
+        event->accept();
+        return;
+    }
+    QWidget::keyPressEvent(event);
 }
 
 void ModelView::wheelEvent(QWheelEvent* event)

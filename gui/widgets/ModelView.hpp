@@ -14,8 +14,11 @@
 #include <QWidget>
 
 #include <memory>
+#include <vector>
 
 namespace mcdda::gui {
+
+class ViewTool;
 
 class ModelView : public QWidget {
     Q_OBJECT
@@ -64,6 +67,19 @@ public:
     /// Size of one logical pixel in the model (m): how precise a cursor position is.
     double metresPerPixel() const;
 
+    /// The editing tool that gets left clicks and keys (not owned); null = navigation only
+    /// (left or middle drag pans). With a tool the middle button pans.
+    void setTool(ViewTool* tool);
+    ViewTool* tool() const;
+    /// A rubber band drawn over the picture (model coordinates), e.g. a shape being drawn;
+    /// `closed` joins the last point to the first.
+    void setPreview(const std::vector<Point2>& points, bool closed);
+    void clearPreview();
+    /// The rubber band's points (empty when none).
+    std::vector<Point2> preview() const;
+    /// Shows the model box [xmin, xmax] × [ymin, ymax] (with a margin); counts as navigating.
+    void showBox(double xmin, double ymin, double xmax, double ymax);
+
     QSize sizeHint() const override { return {800, 600}; }
     /// Null: VTK paints this widget, not QPainter (required by Qt::WA_PaintOnScreen).
     QPaintEngine* paintEngine() const override { return nullptr; }
@@ -89,6 +105,7 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void leaveEvent(QEvent* event) override;
     bool event(QEvent* event) override;
@@ -101,6 +118,7 @@ private:
     void syncSize();
     void rebuild(bool keep_camera);
     void renderNow();
+    void syncOverlay();
 };
 
 }  // namespace mcdda::gui

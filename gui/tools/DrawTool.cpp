@@ -1,0 +1,112 @@
+#include "tools/DrawTool.hpp"
+
+#include "widgets/ModelView.hpp"
+
+#include <Qt>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace mcdda::gui {
+
+namespace {
+
+bool same(const Point2& a, const Point2& b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-9; }
+
+double signed_area(const std::vector<Point2>& ring)
+{
+    double a = 0.0;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Point2& p = ring[i];
+        const Point2& q = ring[(i + 1) % ring.size()];
+        a += p.x * q.y - q.x * p.y;
+    }
+    return 0.5 * a;
+}
+
+}  // namespace
+
+DrawTool::DrawTool(Shape shape, ModelView* view, std::function<const Model&()> model, QObject* parent)
+    : QObject(parent), shape_(shape), view_(view), model_(std::move(model))
+{
+}
+
+Point2 DrawTool::snapped(const QPointF& widget_pos) const
+{
+    const QPointF m = view_->toModel(widget_pos);
+    SnapOptions options = snap_;
+    options.vertex_tolerance = tolerance_px_ * view_->metresPerPixel();
+    return snap_point({m.x(), m.y()}, model_(), points_, options);
+}
+
+void DrawTool::pressed(const QPointF& widget_pos)
+{
+    const Point2 p = snapped(widget_pos);
+    if (!points_.empty() && same(points_.back(), p)) return;  // the second press of a double-click
+    if (shape_ == Shape::Polygon && points_.size() >= 3 && same(points_.front(), p)) {
+        finish();  // clicking the first vertex closes the polygon
+        return;
+    }
+    points_.push_back(p);
+    cursor_ = p;
+    has_cursor_ = true;
+    updatePreview();
+}
+
+void DrawTool::moved(const QPointF& widget_pos)
+{
+    if (points_.empty()) return;
+    cursor_ = snapped(widget_pos);
+    has_cursor_ = true;
+    updatePreview();
+}
+
+void DrawTool::doubleClicked(const QPointF& widget_pos)
+{
+    pressed(widget_pos);  // adds the vertex unless its press already did
+    finish();
+}
+
+bool DrawTool::keyPressed(int key)
+{
+    switch (key) {
+        case Qt::Key_Return:
+        case Qt::Key_Enter: finish(); return true;
+        case Qt::Key_Escape: cancel(); return true;
+        case Qt::Key_Backspace:
+            if (points_.empty()) return false;
+            points_.pop_back();
+            updatePreview();
+            return true;
+        default: return false;
+    }
+}
+
+bool DrawTool::finish()
+{
+    std::vector<Point2> shape = points_;
+    if (shape.size() > 1 && same(shape.front(), shape.back()) && shape_ == Shape::Polygon) shape.pop_back();
+    const std::size_t needed = shape_ == Shape::Polygon ? 3 : 2;
+    if (shape.size() < needed) return false;
+    if (shape_ == Shape::Polygon && signed_area(shape) < 0.0) std::reverse(shape.begin(), shape.end());
+    cancel();
+    emit finished(shape);
+    return true;
+}
+
+void DrawTool::cancel()
+{
+    points_.clear();
+    has_cursor_ = false;
+    view_->clearPreview();
+}
+
+void DrawTool::updatePreview()
+{
+    std::vector<Point2> line = points_;
+    if (has_cursor_ && (line.empty() || !same(line.back(), cursor_))) line.push_back(cursor_);
+    view_->setPreview(line, shape_ == Shape::Polygon);
+}
+
+}  // namespace mcdda::gui

@@ -1,0 +1,26 @@
+#pragma once
+/// \file ViewTool.hpp
+/// What a ModelView hands its left-button clicks, cursor moves and keys to while an editing
+/// tool is active (the middle button and the wheel keep navigating). Positions are in widget
+/// (logical) pixels; the tool converts them with ModelView::toModel().
+
+#include <QPointF>
+
+namespace mcdda::gui {
+
+class ViewTool {
+public:
+    virtual ~ViewTool() = default;
+    /// The left button went down.
+    virtual void pressed(const QPointF& widget_pos) = 0;
+    /// The cursor moved (with or without a button).
+    virtual void moved(const QPointF& /*widget_pos*/) {}
+    /// A left double-click (its first press came through pressed()).
+    virtual void doubleClicked(const QPointF& /*widget_pos*/) {}
+    /// A key; true when the tool used it.
+    virtual bool keyPressed(int /*key*/) { return false; }
+    /// Drop whatever is half done (e.g. when another tool is chosen).
+    virtual void cancel() {}
+};
+
+}  // namespace mcdda::gui

@@ -1,0 +1,177 @@
+// Model editing in the desktop program on a (virtual) X server: File ▸ New, drawing a region
+// and a joint with simulated clicks (grid snapping), the picture, undo/redo, saving and opening
+// the file again in another window.
+
+#include "MainWindow.hpp"
+#include "ModelCompare.hpp"
+#include "document/ModelDocument.hpp"
+#include "view/Palette.hpp"
+#include "widgets/ModelView.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace mcdda;
+using mcdda::gui::MainWindow;
+using mcdda::gui::ModelView;
+
+namespace {
+
+QPoint pixel_of(const ModelView& view, double x, double y)
+{
+    return view.toWidget(QPointF(x, y)).toPoint();
+}
+
+bool near(QColor c, const view::Rgb& rgb)
+{
+    return std::abs(c.redF() - rgb[0]) < 0.06 && std::abs(c.greenF() - rgb[1]) < 0.06 &&
+           std::abs(c.blueF() - rgb[2]) < 0.06;
+}
+
+/// Pixels of `colour` in the 9 × 9 device pixels around the model point (x, y).
+int count_around(ModelView& view, double x, double y, const view::Rgb& colour)
+{
+    const QImage frame = view.grabFrame();
+    const QPointF centre = view.toWidget(QPointF(x, y)) * view.devicePixelRatioF();
+    int n = 0;
+    for (int dy = -4; dy <= 4; ++dy)
+        for (int dx = -4; dx <= 4; ++dx) {
+            const QPoint p(qRound(centre.x()) + dx, qRound(centre.y()) + dy);
+            if (frame.rect().contains(p) && near(frame.pixelColor(p), colour)) ++n;
+        }
+    return n;
+}
+
+}  // namespace
+
+class EditingTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void drawUndoRedoSaveOpen();
+};
+
+void EditingTest::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);  // Recent Files go to a test settings file
+    if (QGuiApplication::platformName() != QLatin1String("xcb"))
+        QSKIP("the VTK view needs the xcb platform (run under xvfb-run)");
+}
+
+void EditingTest::drawUndoRedoSaveOpen()
+{
+    MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QAction* new_action = window.findChild<QAction*>(QStringLiteral("newAction"));
+    QVERIFY(new_action);
+    new_action->trigger();
+    gui::ModelDocument* doc = window.document();
+    QCOMPARE(doc->model().materials.size(), std::size_t(1));
+    QCOMPARE(doc->model().joint_materials.size(), std::size_t(1));
+    QVERIFY(doc->model().regions.empty());
+    QVERIFY(!doc->isModified());
+    QVERIFY(window.windowTitle().contains(QStringLiteral("Untitled")));
+
+    ModelView* view = window.modelView();
+    QVERIFY(count_around(*view, 5, 5, view::palette::background) >= 70);
+
+    // A 10 m square, clicked a little off the grid nodes: the grid (0.5 m) puts it right.
+    window.findChild<QAction*>(QStringLiteral("drawRegionAction"))->trigger();
+    QVERIFY(window.activeTool() != nullptr);
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 0.1, -0.12));
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 10.15, 0.08));
+    QTest::mouseMove(view, pixel_of(*view, 9.9, 9.9));
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 9.9, 9.9));
+    QCOMPARE(view->preview().size(), std::size_t(3));  // the rubber band: 3 vertices
+    QTest::mouseDClick(view, Qt::LeftButton, {}, pixel_of(*view, -0.1, 10.1));
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    QVERIFY(view->preview().empty());
+    const Ring& ring = doc->model().regions[0].boundary;
+    QCOMPARE(ring.size(), std::size_t(4));
+    const double expected[4][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+    for (int i = 0; i < 4; ++i) {
+        QCOMPARE(ring[static_cast<std::size_t>(i)].x, expected[i][0]);
+        QCOMPARE(ring[static_cast<std::size_t>(i)].y, expected[i][1]);
+    }
+    QCOMPARE(doc->model().regions[0].material, 0);
+    QVERIFY(doc->isModified());
+    QVERIFY(window.isWindowModified());
+
+    // A joint across it; its first point snaps to nothing but the grid.
+    window.findChild<QAction*>(QStringLiteral("drawJointAction"))->trigger();
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, -2.05, 3.1));
+    QTest::mouseDClick(view, Qt::LeftButton, {}, pixel_of(*view, 12.1, 2.9));
+    QCOMPARE(doc->model().joints.size(), std::size_t(1));
+    QCOMPARE(doc->model().joints[0].points.size(), std::size_t(2));
+    QCOMPARE(doc->model().joints[0].points[0].y, 3.0);
+    QCOMPARE(doc->model().joints[0].points[1].x, 12.0);
+
+    // Escape drops a half-drawn joint.
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 1, 1));
+    QCOMPARE(view->preview().size(), std::size_t(1));
+    QTest::keyClick(view, Qt::Key_Escape);
+    QVERIFY(view->preview().empty());
+    QCOMPARE(doc->model().joints.size(), std::size_t(1));
+
+    const view::Rgb rock = view::material_color(0);
+    QVERIFY2(count_around(*view, 5, 7, rock) >= 40, "the square is filled with the material colour");
+    QVERIFY(window.modelTree()->topLevelItem(0)->childCount() == 1);  // Regions
+
+    QAction* undo = window.findChild<QAction*>(QStringLiteral("undoAction"));
+    QAction* redo = window.findChild<QAction*>(QStringLiteral("redoAction"));
+    QVERIFY(undo && redo);
+    QVERIFY(undo->text().contains(QStringLiteral("joint")));
+    undo->trigger();
+    undo->trigger();
+    QVERIFY(doc->model().regions.empty());
+    QVERIFY(doc->model().joints.empty());
+    QVERIFY(!doc->isModified());
+    QVERIFY(count_around(*view, 5, 7, view::palette::background) >= 70);
+    redo->trigger();
+    redo->trigger();
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    QCOMPARE(doc->model().joints.size(), std::size_t(1));
+    QVERIFY(count_around(*view, 5, 7, rock) >= 40);
+
+    // A roller along the base (no support tool yet) makes the model usable.
+    Roller base;
+    base.name = "base";
+    base.from = {0, 0};
+    base.to = {10, 0};
+    base.fix_x = true;
+    base.fix_y = true;
+    doc->addRoller(base);
+    QVERIFY2(view->scene() && view->scene()->ok, qPrintable(window.messages()));
+    QVERIFY(window.modelTree()->topLevelItem(3)->childCount() == 1);  // Supports
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("drawn.json"));
+    QVERIFY(window.saveModelAs(path));
+    QVERIFY(!doc->isModified());
+    QVERIFY(!window.isWindowModified());
+    QVERIFY(window.windowTitle().contains(QStringLiteral("drawn.json")));
+    QVERIFY(window.recentFiles().contains(QFileInfo(path).absoluteFilePath()));
+
+    MainWindow other;
+    other.resize(800, 600);
+    other.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&other));
+    QVERIFY2(other.openModel(path), qPrintable(other.messages()));
+    const std::string diff = test::ModelComparer(1e-12).compare(doc->model(), other.document()->model());
+    QVERIFY2(diff.empty(), diff.c_str());
+    QCOMPARE(other.document()->path(), path);
+    QVERIFY(!other.document()->isModified());
+}
+
+QTEST_MAIN(EditingTest)
+#include "EditingTest.moc"
