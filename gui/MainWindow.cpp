@@ -2,6 +2,7 @@
 
 #include "Version.hpp"
 #include "document/ModelDocument.hpp"
+#include "panels/PropertyEditor.hpp"
 #include "tools/DrawTool.hpp"
 #include "results/HistoryPlot.hpp"
 #include "results/ResultExport.hpp"
@@ -37,6 +38,8 @@
 #include <QThread>
 #include <QToolBar>
 #include <QUrl>
+#include <QFutureWatcher>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -65,21 +68,61 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     view_ = new ModelView(this);
     setCentralWidget(view_);
     document_ = new ModelDocument(this);
-    region_tool_ = new DrawTool(DrawTool::Shape::Polygon, view_, [this]() -> const Model& { return document_->model(); }, this);
-    joint_tool_ = new DrawTool(DrawTool::Shape::Polyline, view_, [this]() -> const Model& { return document_->model(); }, this);
-    connect(region_tool_, &DrawTool::finished, this, [this](const std::vector<Point2>& points) {
+    preprocess_ = new QFutureWatcher<std::shared_ptr<Preprocessed>>(this);
+    connect(preprocess_, &QFutureWatcherBase::finished, this, &MainWindow::onPreprocessed);
+    region_tool_ = makeTool(int(DrawTool::Shape::Polygon), [this](const std::vector<Point2>& points) {
         document_->addRegion(points, document_->model().materials.empty() ? -1 : 0);
     });
-    connect(joint_tool_, &DrawTool::finished, this, [this](const std::vector<Point2>& points) {
+    joint_tool_ = makeTool(int(DrawTool::Shape::Polyline), [this](const std::vector<Point2>& points) {
         document_->addJoint(points);
+    });
+    fixed_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
+        FixedPoint f;
+        f.point = points.front();
+        document_->addFixedPoint(f);
+    });
+    roller_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
+        Roller r;
+        r.from = points.front();
+        r.to = points.back();
+        const QString fix = roller_fix_box_->currentData().toString();
+        r.fix_x = fix.contains(QLatin1Char('x'));
+        r.fix_y = fix.contains(QLatin1Char('y'));
+        document_->addRoller(r);
+    });
+    load_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
+        PointLoad l;
+        l.point = points.front();
+        l.force = {load_fx_->value() * 1e3, load_fy_->value() * 1e3};  // kN/m → N/m
+        document_->addPointLoad(l);
+    });
+    pressure_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
+        EdgePressure e;
+        e.from = points.front();
+        e.to = points.back();
+        e.pressure = pressure_box_->value() * 1e3;  // kPa → Pa
+        document_->addEdgePressure(e);
+    });
+    point_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
+        MeasurementPoint q;
+        q.point = points.front();
+        document_->addMeasurementPoint(q);
     });
     createDock();
     createModelDock();
     createResultDocks();
     tabifyDockWidget(plot_dock_, model_dock_);  // the view keeps its width
+    property_editor_ = new PropertyEditor(document_, this);
+    property_editor_->setObjectName(QStringLiteral("propertyEditor"));
+    property_dock_ = new QDockWidget(tr("Properties"), this);
+    property_dock_->setObjectName(QStringLiteral("properties"));
+    property_dock_->setWidget(property_editor_);
+    addDockWidget(Qt::RightDockWidgetArea, property_dock_);
+    tabifyDockWidget(model_dock_, property_dock_);
     model_dock_->raise();
     createActions();
     createEditActions();
+    createToolOptions();
     createRunActions();
     createStatusBar();
     setAcceptDrops(true);
@@ -94,7 +137,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     refreshModelTree();
 }
 
-MainWindow::~MainWindow() { joinRun(); }
+MainWindow::~MainWindow()
+{
+    joinRun();
+    requested_ = 0;
+    preprocess_->waitForFinished();  // its result is dropped
+}
+
+DrawTool* MainWindow::makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply)
+{
+    auto* tool = new DrawTool(static_cast<DrawTool::Shape>(shape), view_,
+                              [this]() -> const Model& { return document_->model(); }, this);
+    connect(tool, &DrawTool::finished, this, std::move(apply));
+    return tool;
+}
 
 void MainWindow::createActions()
 {
@@ -206,7 +262,62 @@ void MainWindow::createEditActions()
     joint_action_ = tool(tr("Draw &Joint"), QStringLiteral("drawJointAction"),
                          tr("Click the points of a new joint; double-click or Enter finishes it, Escape cancels"),
                          &MainWindow::drawJointTool);
+    bar->addSeparator();
+    QAction* fixed = tool(tr("&Fixed Point"), QStringLiteral("fixedPointAction"),
+                          tr("Click where the mesh is held in both directions"), &MainWindow::fixedPointTool);
+    QAction* roller = tool(tr("R&oller"), QStringLiteral("rollerAction"),
+                           tr("Click the two ends of a roller; the fixed directions are chosen in Tool Options"),
+                           &MainWindow::rollerTool);
+    QAction* load = tool(tr("Point &Load"), QStringLiteral("pointLoadAction"),
+                         tr("Click where a point load acts; its force is set in Tool Options"),
+                         &MainWindow::pointLoadTool);
+    QAction* pressure = tool(tr("Edge &Pressure"), QStringLiteral("edgePressureAction"),
+                             tr("Click the two ends of a loaded edge; the pressure is set in Tool Options"),
+                             &MainWindow::edgePressureTool);
+    QAction* point = tool(tr("&Measurement Point"), QStringLiteral("measurementPointAction"),
+                          tr("Click where displacements are recorded"), &MainWindow::measurementPointTool);
+    tool_actions_ = {{region_tool_, region_action_}, {joint_tool_, joint_action_}, {fixed_tool_, fixed},
+                     {roller_tool_, roller}, {load_tool_, load}, {pressure_tool_, pressure}, {point_tool_, point}};
     select_action_->setChecked(true);
+}
+
+void MainWindow::createToolOptions()
+{
+    QToolBar* bar = addToolBar(tr("Tool Options"));
+    bar->setObjectName(QStringLiteral("toolOptions"));
+    auto label = [&](const QString& text) {
+        auto* l = new QLabel(text, this);
+        l->setContentsMargins(6, 0, 2, 0);
+        bar->addWidget(l);
+    };
+    label(tr("Roller fixes"));
+    roller_fix_box_ = new QComboBox(this);
+    roller_fix_box_->setObjectName(QStringLiteral("rollerFixBox"));
+    roller_fix_box_->setToolTip(tr("Directions a new roller holds"));
+    roller_fix_box_->addItem(tr("y"), QStringLiteral("y"));
+    roller_fix_box_->addItem(tr("x"), QStringLiteral("x"));
+    roller_fix_box_->addItem(tr("x and y"), QStringLiteral("xy"));
+    bar->addWidget(roller_fix_box_);
+    bar->addSeparator();
+    auto spin = [&](const QString& name, const QString& unit, double value, const QString& tip) {
+        auto* box = new QDoubleSpinBox(this);
+        box->setObjectName(name);
+        box->setRange(-1e9, 1e9);
+        box->setDecimals(3);
+        box->setValue(value);
+        box->setSuffix(QLatin1Char(' ') + unit);
+        box->setToolTip(tip);
+        bar->addWidget(box);
+        return box;
+    };
+    label(tr("Load Fx"));
+    load_fx_ = spin(QStringLiteral("loadFxBox"), tr("kN/m"), 0.0, tr("Horizontal force of a new point load"));
+    label(tr("Fy"));
+    load_fy_ = spin(QStringLiteral("loadFyBox"), tr("kN/m"), -1.0, tr("Vertical force of a new point load"));
+    bar->addSeparator();
+    label(tr("Pressure"));
+    pressure_box_ = spin(QStringLiteral("pressureBox"), tr("kPa"), 100.0,
+                         tr("Pressure of a new edge load (positive pushes into the material)"));
 }
 
 DrawTool* MainWindow::activeTool() const { return dynamic_cast<DrawTool*>(view_->tool()); }
@@ -214,7 +325,9 @@ DrawTool* MainWindow::activeTool() const { return dynamic_cast<DrawTool*>(view_-
 void MainWindow::setTool(DrawTool* tool)
 {
     view_->setTool(tool);
-    QAction* action = tool == region_tool_ ? region_action_ : tool == joint_tool_ ? joint_action_ : select_action_;
+    QAction* action = select_action_;
+    for (const auto& [t, a] : tool_actions_)
+        if (t == tool) action = a;
     action->setChecked(true);
     if (tool) {
         view_->clearResult();
@@ -225,6 +338,11 @@ void MainWindow::setTool(DrawTool* tool)
 void MainWindow::selectTool() { setTool(nullptr); }
 void MainWindow::drawRegionTool() { setTool(region_tool_); }
 void MainWindow::drawJointTool() { setTool(joint_tool_); }
+void MainWindow::fixedPointTool() { setTool(fixed_tool_); }
+void MainWindow::rollerTool() { setTool(roller_tool_); }
+void MainWindow::pointLoadTool() { setTool(load_tool_); }
+void MainWindow::edgePressureTool() { setTool(pressure_tool_); }
+void MainWindow::measurementPointTool() { setTool(point_tool_); }
 
 void MainWindow::setGridSpacing(double metres)
 {
@@ -237,8 +355,8 @@ void MainWindow::applySnap()
     SnapOptions options;
     options.grid = snap_action_ && snap_action_->isChecked();
     options.spacing = grid_spacing_;
-    region_tool_->setSnapOptions(options);
-    joint_tool_->setSnapOptions(options);
+    for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_})
+        tool->setSnapOptions(options);
 }
 
 void MainWindow::createModelDock()
@@ -431,17 +549,50 @@ void MainWindow::onDocumentChanged()
 {
     refreshModelTree();
     updateTitle();
-    if (syncing_) return;
-    auto p = std::make_shared<Preprocessed>();
-    try {
-        *p = preprocess_model(document_->model(), PreprocessStage::Mesh);
-    } catch (const std::exception& e) {
-        Diagnostic d;
-        d.message = e.what();
-        p->diagnostics.push_back(d);
-        p->model = document_->model();
-        p->ok = false;
+    ++generation_;
+    if (syncing_) {
+        requested_ = 0;  // the caller shows a picture itself; one still being made is dropped
+        return;
     }
+    requested_ = generation_;
+    // One computation at a time: a newer change waits for the running one and supersedes it.
+    if (!preprocess_->isRunning()) startPreprocess();
+    updateRunActions();
+}
+
+void MainWindow::startPreprocess()
+{
+    running_ = requested_;
+    statusBar()->showMessage(tr("Pre-processing..."));
+    preprocess_->setFuture(QtConcurrent::run([model = document_->model()] {
+        auto p = std::make_shared<Preprocessed>();
+        try {
+            *p = preprocess_model(model, PreprocessStage::Mesh);
+        } catch (const std::exception& e) {
+            Diagnostic d;
+            d.message = e.what();
+            p->diagnostics.push_back(d);
+            p->model = model;
+            p->ok = false;
+        }
+        return p;
+    }));
+}
+
+void MainWindow::onPreprocessed()
+{
+    if (requested_ == 0) {  // dropped (a model was opened meanwhile)
+        statusBar()->clearMessage();
+        updateRunActions();
+        return;
+    }
+    if (running_ != requested_) {  // superseded by a newer change
+        startPreprocess();
+        return;
+    }
+    requested_ = 0;
+    statusBar()->clearMessage();
+    const auto p = preprocess_->result();
     const QString source = document_->path().isEmpty() ? tr("Untitled") : document_->path();
     showScene(p, source, true, false);
 }
@@ -802,7 +953,7 @@ void MainWindow::updateRunActions()
 {
     const bool running = isRunning();
     const auto scene = view_->scene();
-    run_action_->setEnabled(!running && scene && scene->ok);
+    run_action_->setEnabled(!running && scene && scene->ok && !isPreprocessing());  // not a stale picture
     pause_action_->setEnabled(running);
     pause_action_->setText(running && controller_->isPaused() ? tr("Res&ume") : tr("&Pause"));
     stop_action_->setEnabled(running);
@@ -841,7 +992,7 @@ void MainWindow::log(const QString& line) { messages_->appendPlainText(line); }
 bool MainWindow::startRun()
 {
     const auto scene = view_->scene();
-    if (isRunning() || !scene || !scene->ok) return false;
+    if (isRunning() || !scene || !scene->ok || isPreprocessing()) return false;
     running_folder_ = runOutputFolder();
     const QString stem = windowFilePath().isEmpty() ? QStringLiteral("model")
                                                     : QFileInfo(windowFilePath()).completeBaseName();

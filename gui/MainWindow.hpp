@@ -15,7 +15,10 @@
 #include <QMainWindow>
 #include <QString>
 
+#include <functional>
 #include <memory>
+#include <utility>
+#include <vector>
 
 class QAction;
 class QMenu;
@@ -28,6 +31,8 @@ class QProgressBar;
 class QThread;
 class QTreeWidget;
 class QActionGroup;
+template <typename T>
+class QFutureWatcher;
 
 namespace mcdda::gui {
 
@@ -36,6 +41,7 @@ class StepSlider;
 class HistoryPlot;
 class ModelDocument;
 class DrawTool;
+class PropertyEditor;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -59,6 +65,11 @@ public:
     ModelDocument* document() const { return document_; }
     /// The Model dock's tree.
     QTreeWidget* modelTree() const { return tree_; }
+    /// The Properties dock's forms.
+    PropertyEditor* propertyEditor() const { return property_editor_; }
+    /// Whether the document is being pre-processed again after an edit (on the thread pool;
+    /// the view shows the previous picture meanwhile).
+    bool isPreprocessing() const { return requested_ != 0; }
     /// The drawing tools (null for Select).
     DrawTool* activeTool() const;
     /// Grid snapping of the drawing tools (View ▸ Snap to Grid) and its spacing (m).
@@ -116,6 +127,15 @@ public slots:
     void selectTool();
     void drawRegionTool();
     void drawJointTool();
+    /// Edit ▸ tools for supports, loads and measurement points: Fixed Point (click), Roller
+    /// (two clicks; fixed directions from the Tool Options bar), Point Load (click; force from
+    /// the bar, default (0, −1) kN/m), Edge Pressure (two clicks; default 100 kPa), Measurement
+    /// Point (click; named "point N").
+    void fixedPointTool();
+    void rollerTool();
+    void pointLoadTool();
+    void edgePressureTool();
+    void measurementPointTool();
     /// Run ▸ Run: analyses the shown model on a worker thread. False when there is no usable
     /// model or a run is going on.
     bool startRun();
@@ -141,6 +161,12 @@ protected:
 private:
     void createActions();
     void createEditActions();
+    void createToolOptions();
+    /// Creates a drawing tool whose finished shape `apply` turns into an edit.
+    DrawTool* makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply);
+    /// Pre-processes the document on the thread pool (a newer request supersedes it).
+    void startPreprocess();
+    void onPreprocessed();
     void createModelDock();
     void refreshModelTree();
     void refreshRecentMenu();
@@ -222,6 +248,22 @@ private:
     QAction* joint_action_ = nullptr;
     DrawTool* region_tool_ = nullptr;
     DrawTool* joint_tool_ = nullptr;
+    DrawTool* fixed_tool_ = nullptr;
+    DrawTool* roller_tool_ = nullptr;
+    DrawTool* load_tool_ = nullptr;
+    DrawTool* pressure_tool_ = nullptr;
+    DrawTool* point_tool_ = nullptr;
+    std::vector<std::pair<DrawTool*, QAction*>> tool_actions_;
+    QComboBox* roller_fix_box_ = nullptr;
+    QDoubleSpinBox* load_fx_ = nullptr;
+    QDoubleSpinBox* load_fy_ = nullptr;
+    QDoubleSpinBox* pressure_box_ = nullptr;
+    PropertyEditor* property_editor_ = nullptr;
+    QDockWidget* property_dock_ = nullptr;
+    QFutureWatcher<std::shared_ptr<Preprocessed>>* preprocess_ = nullptr;
+    unsigned long generation_ = 0;  ///< counts model changes
+    unsigned long requested_ = 0;   ///< generation waiting for its picture; 0 = none
+    unsigned long running_ = 0;     ///< generation being pre-processed
     double grid_spacing_ = 0.5;
 };
 

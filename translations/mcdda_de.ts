@@ -2,230 +2,85 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>HistoryCsv</name>
+    <message>
+        <location filename="../gui/results/HistoryCsv.cpp" line="15"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryCsv.cpp" line="40"/>
+        <source>%1 is empty</source>
+        <translation>%1 ist leer</translation>
+    </message>
+</context>
+<context>
+    <name>PvdFile</name>
+    <message>
+        <location filename="../gui/results/PvdFile.cpp" line="19"/>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/PvdFile.cpp" line="35"/>
+        <source>%1 is not a valid collection: %2</source>
+        <translation>%1 ist keine gültige Sammlung: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/PvdFile.cpp" line="36"/>
+        <source>%1 holds no collection</source>
+        <translation>%1 enthält keine Sammlung</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="23"/>
+        <location filename="../app/gui/main.cpp" line="24"/>
+        <source>Language of the program, e.g. &quot;de&quot; or &quot;en&quot; (default: $%1, else the system&apos;s).</source>
+        <translation>Sprache des Programms, z. B. „de“ oder „en“ (Vorgabe: $%1, sonst die des Systems).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="33"/>
         <source>Pre- and post-processor for elastic-plastic discontinuous deformation analysis.</source>
         <translation>Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="28"/>
+        <location filename="../app/gui/main.cpp" line="39"/>
         <source>Model file (*.json) to open.</source>
         <translation>Zu öffnende Modelldatei (*.json).</translation>
     </message>
 </context>
 <context>
-    <name>mcdda::gui::MainWindow</name>
+    <name>mcdda::gui</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="49"/>
-        <source>mcdda</source>
-        <translation>mcdda</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="59"/>
-        <source>&amp;File</source>
-        <translation>&amp;Datei</translation>
+        <location filename="../gui/results/ResultExport.cpp" line="23"/>
+        <source>There is no picture to save.</source>
+        <translation>Es gibt kein Bild zum Speichern.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="60"/>
-        <source>&amp;Open...</source>
-        <translation>Ö&amp;ffnen...</translation>
+        <location filename="../gui/results/ResultExport.cpp" line="28"/>
+        <location filename="../gui/results/ResultExport.cpp" line="33"/>
+        <location filename="../gui/results/ResultExport.cpp" line="38"/>
+        <location filename="../gui/results/ResultExport.cpp" line="54"/>
+        <location filename="../gui/results/ResultExport.cpp" line="67"/>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="62"/>
-        <source>Open a model file (*.json)</source>
-        <translation>Eine Modelldatei öffnen (*.json)</translation>
+        <location filename="../gui/results/ResultExport.cpp" line="48"/>
+        <location filename="../gui/results/ResultExport.cpp" line="60"/>
+        <source>Cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="63"/>
-        <source>&amp;Reload</source>
-        <translation>&amp;Neu laden</translation>
+        <location filename="../gui/results/ResultExport.cpp" line="79"/>
+        <source>%1 lists no saved steps.</source>
+        <translation>%1 führt keine gespeicherten Zeitschritte auf.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="65"/>
-        <source>Read the model file again, e.g. after editing it</source>
-        <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="68"/>
-        <source>&amp;Quit</source>
-        <translation>&amp;Beenden</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="71"/>
-        <source>&amp;View</source>
-        <translation>&amp;Ansicht</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="72"/>
-        <source>&amp;Fit</source>
-        <translation>&amp;Einpassen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="74"/>
-        <source>Show the whole model</source>
-        <translation>Das ganze Modell zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="84"/>
-        <source>&amp;Mesh</source>
-        <translation>&amp;Netz</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="84"/>
-        <source>Show the element edges</source>
-        <translation>Die Elementkanten zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="85"/>
-        <source>&amp;Joints</source>
-        <translation>&amp;Klüfte</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="85"/>
-        <source>Show the joint traces</source>
-        <translation>Die Kluftspuren zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="86"/>
-        <source>&amp;Supports</source>
-        <translation>A&amp;uflager</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="86"/>
-        <source>Show fixed points and rollers</source>
-        <translation>Festpunkte und Rollenlager zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="87"/>
-        <source>&amp;Loads</source>
-        <translation>&amp;Lasten</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="87"/>
-        <source>Show point loads and edge pressures</source>
-        <translation>Punktlasten und Randdrücke zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="88"/>
-        <source>Measurement &amp;points</source>
-        <translation>&amp;Messpunkte</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="88"/>
-        <source>Show the measurement points</source>
-        <translation>Die Messpunkte zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="89"/>
-        <source>Le&amp;gend</source>
-        <translation>Le&amp;gende</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="89"/>
-        <source>Show the legend</source>
-        <translation>Die Legende zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="93"/>
-        <source>&amp;Help</source>
-        <translation>&amp;Hilfe</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="94"/>
-        <source>&amp;About mcdda</source>
-        <translation>Ü&amp;ber mcdda</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="95"/>
-        <source>About mcdda</source>
-        <translation>Über mcdda</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="96"/>
-        <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="109"/>
-        <source>Messages about the model appear here.</source>
-        <translation>Meldungen zum Modell erscheinen hier.</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="110"/>
-        <source>Messages</source>
-        <translation>Meldungen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="136"/>
-        <source>x = %1 m   y = %2 m</source>
-        <translation>x = %1 m   y = %2 m</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="155"/>
-        <source>Open model</source>
-        <translation>Modell öffnen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="156"/>
-        <source>Model files (*.json);;All files (*)</source>
-        <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="172"/>
-        <source>Reading %1...</source>
-        <translation>%1 wird gelesen...</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="198"/>
-        <source>%1 - mcdda</source>
-        <translation>%1 - mcdda</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="202"/>
-        <source>Model: %1</source>
-        <translation>Modell: %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="206"/>
-        <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
-        <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="212"/>
-        <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
-        <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="221"/>
-        <source>Not meshed: %n error(s)</source>
-        <translation>
-            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
-            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="233"/>
-        <source>pre-processing stopped without a message</source>
-        <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="237"/>
-        <source>... and %n more</source>
-        <translation>
-            <numerusform>... und %n weitere</numerusform>
-            <numerusform>... und %n weitere</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="240"/>
-        <source>Model not usable</source>
-        <translation>Modell nicht verwendbar</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="241"/>
-        <source>%1 could not be pre-processed.</source>
-        <translation>%1 konnte nicht vorverarbeitet werden.</translation>
+        <location filename="../gui/results/ResultExport.cpp" line="84"/>
+        <source>Cannot create the folder %1.</source>
+        <translation>Der Ordner %1 kann nicht angelegt werden.</translation>
     </message>
 </context>
 <context>
@@ -245,32 +100,1361 @@
     </message>
 </context>
 <context>
+    <name>mcdda::gui::AddRollerCommand</name>
+    <message>
+        <location filename="../gui/document/Commands.cpp" line="59"/>
+        <source>Add roller &quot;%1&quot;</source>
+        <translation>Rollenlager „%1“ hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::HistoryPlot</name>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="25"/>
+        <source>Measured displacement plotted</source>
+        <translation>Dargestellte gemessene Verschiebung</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="28"/>
+        <source>Plotted against time or a load (load-settlement curve)</source>
+        <translation>Aufgetragen über der Zeit oder einer Last (Last-Setzungs-Kurve)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="48"/>
+        <source>Plot</source>
+        <translation>Darstellen</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="50"/>
+        <source>against</source>
+        <translation>über</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="89"/>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="92"/>
+        <source>load %1</source>
+        <translation>Last %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="94"/>
+        <source>%1 (m)</source>
+        <translation>%1 (m)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="123"/>
+        <source>No history: run the model.</source>
+        <translation>Kein Verlauf: Modell berechnen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="125"/>
+        <source>The model has no measurement points.</source>
+        <translation>Das Modell hat keine Messpunkte.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/results/HistoryPlot.cpp" line="127"/>
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n Zeitschritt</numerusform>
+            <numerusform>%n Zeitschritte</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::MainWindow</name>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="129"/>
+        <source>mcdda</source>
+        <translation>mcdda</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="157"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="158"/>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="161"/>
+        <source>Start an empty model</source>
+        <translation>Ein leeres Modell beginnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="162"/>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="164"/>
+        <source>Open a model file (*.json)</source>
+        <translation>Eine Modelldatei öffnen (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <source>&amp;Reload</source>
+        <translation>Neu &amp;laden</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="167"/>
+        <source>Read the model file again, e.g. after editing it</source>
+        <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
+        <source>Recent &amp;Files</source>
+        <translation>&amp;Zuletzt geöffnete Dateien</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
+        <source>Write the model to its file</source>
+        <translation>Das Modell in seine Datei schreiben</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="177"/>
+        <source>Save &amp;As...</source>
+        <translation>Speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="180"/>
+        <source>Write the model to a new file</source>
+        <translation>Das Modell in eine neue Datei schreiben</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="187"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="188"/>
+        <source>&amp;Fit</source>
+        <translation>&amp;Einpassen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="190"/>
+        <source>Show the whole model</source>
+        <translation>Das ganze Modell zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="200"/>
+        <source>&amp;Mesh</source>
+        <translation>&amp;Netz</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="200"/>
+        <source>Show the element edges</source>
+        <translation>Die Elementkanten zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="201"/>
+        <source>&amp;Joints</source>
+        <translation>&amp;Klüfte</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="201"/>
+        <source>Show the joint traces</source>
+        <translation>Die Kluftspuren zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="202"/>
+        <source>&amp;Supports</source>
+        <translation>A&amp;uflager</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="202"/>
+        <source>Show fixed points and rollers</source>
+        <translation>Festpunkte und Rollenlager zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="203"/>
+        <source>&amp;Loads</source>
+        <translation>&amp;Lasten</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="203"/>
+        <source>Show point loads and edge pressures</source>
+        <translation>Punktlasten und Kantendrücke zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="204"/>
+        <source>Measurement &amp;points</source>
+        <translation>&amp;Messpunkte</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="204"/>
+        <source>Show the measurement points</source>
+        <translation>Die Messpunkte zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="205"/>
+        <source>Le&amp;gend</source>
+        <translation>Le&amp;gende</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="205"/>
+        <source>Show the legend</source>
+        <translation>Die Legende zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="207"/>
+        <source>Snap to &amp;Grid</source>
+        <translation>Am &amp;Raster fangen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="211"/>
+        <source>Drawn points snap to a grid (0.5 m) and to nearby region vertices</source>
+        <translation>Gezeichnete Punkte rasten auf einem Raster (0,5 m) und an nahen Bereichsecken ein</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="219"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="220"/>
+        <source>&amp;About mcdda</source>
+        <translation>Ü&amp;ber mcdda</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="221"/>
+        <source>About mcdda</source>
+        <translation>Über mcdda</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="222"/>
+        <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="233"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="235"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="238"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="245"/>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="257"/>
+        <source>&amp;Select</source>
+        <translation>&amp;Auswählen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="258"/>
+        <source>Navigate: drag to pan, turn the wheel to zoom</source>
+        <translation>Navigieren: zum Verschieben ziehen, zum Zoomen das Mausrad drehen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="259"/>
+        <source>Draw &amp;Region</source>
+        <translation>&amp;Bereich zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="260"/>
+        <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
+        <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="262"/>
+        <source>Draw &amp;Joint</source>
+        <translation>&amp;Kluft zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="263"/>
+        <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
+        <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="266"/>
+        <source>&amp;Fixed Point</source>
+        <translation>&amp;Festpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="267"/>
+        <source>Click where the mesh is held in both directions</source>
+        <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="268"/>
+        <source>R&amp;oller</source>
+        <translation>R&amp;ollenlager</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="269"/>
+        <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
+        <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="271"/>
+        <source>Point &amp;Load</source>
+        <translation>&amp;Punktlast</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="272"/>
+        <source>Click where a point load acts; its force is set in Tool Options</source>
+        <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="274"/>
+        <source>Edge &amp;Pressure</source>
+        <translation>Kanten&amp;druck</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="275"/>
+        <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
+        <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="277"/>
+        <source>&amp;Measurement Point</source>
+        <translation>&amp;Messpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="278"/>
+        <source>Click where displacements are recorded</source>
+        <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="286"/>
+        <source>Tool Options</source>
+        <translation>Werkzeugoptionen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="293"/>
+        <source>Roller fixes</source>
+        <translation>Rollenlager hält</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="296"/>
+        <source>Directions a new roller holds</source>
+        <translation>Richtungen, die ein neues Rollenlager hält</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="297"/>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="298"/>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="299"/>
+        <source>x and y</source>
+        <translation>x und y</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="313"/>
+        <source>Load Fx</source>
+        <translation>Last Fx</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="314"/>
+        <location filename="../gui/MainWindow.cpp" line="316"/>
+        <source>kN/m</source>
+        <translation>kN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="314"/>
+        <source>Horizontal force of a new point load</source>
+        <translation>Horizontalkraft einer neuen Punktlast</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="315"/>
+        <source>Fy</source>
+        <translation>Fy</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="316"/>
+        <source>Vertical force of a new point load</source>
+        <translation>Vertikalkraft einer neuen Punktlast</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="318"/>
+        <source>Pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="319"/>
+        <source>kPa</source>
+        <translation>kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="320"/>
+        <source>Pressure of a new edge load (positive pushes into the material)</source>
+        <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="367"/>
+        <source>Item</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="367"/>
+        <source>Details</source>
+        <translation>Details</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="370"/>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="388"/>
+        <source>Regions</source>
+        <translation>Bereiche</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="393"/>
+        <source>no material</source>
+        <translation>kein Material</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="394"/>
+        <source>region %1</source>
+        <translation>Bereich %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/MainWindow.cpp" line="395"/>
+        <source>%1, %n vertices</source>
+        <translation>
+            <numerusform>%1, %n Ecke</numerusform>
+            <numerusform>%1, %n Ecken</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="397"/>
+        <source>Joints</source>
+        <translation>Klüfte</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="398"/>
+        <source>Explicit</source>
+        <translation>Einzelklüfte</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="401"/>
+        <source>Set %1</source>
+        <translation>Kluftschar %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="402"/>
+        <source>spacing %1 m</source>
+        <translation>Abstand %1 m</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="410"/>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="411"/>
+        <source>joint %1</source>
+        <translation>Kluft %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="415"/>
+        <source>Materials</source>
+        <translation>Materialien</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="416"/>
+        <source>rock/soil</source>
+        <translation>Fels/Boden</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="417"/>
+        <location filename="../gui/MainWindow.cpp" line="504"/>
+        <source>joint</source>
+        <translation>Kluft</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="418"/>
+        <source>Supports</source>
+        <translation>Auflager</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="420"/>
+        <source>fixed point %1</source>
+        <translation>Festpunkt %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="422"/>
+        <source>roller %1 to %2</source>
+        <translation>Rollenlager %1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="423"/>
+        <source>Loads</source>
+        <translation>Lasten</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="425"/>
+        <source>point load at %1</source>
+        <translation>Punktlast bei %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="427"/>
+        <source>pressure %1 Pa</source>
+        <translation>Kantendruck %1 Pa</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="428"/>
+        <source>Measurement points</source>
+        <translation>Messpunkte</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="455"/>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="471"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="473"/>
+        <location filename="../gui/MainWindow.cpp" line="596"/>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="474"/>
+        <source>%1[*] - mcdda</source>
+        <translation>%1[*] - mcdda</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="481"/>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="482"/>
+        <source>The model has been modified. Save the changes?</source>
+        <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="495"/>
+        <source>rock</source>
+        <translation>Fels</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="514"/>
+        <source>New model: draw regions with Edit ▸ Draw Region.</source>
+        <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <source>Save model</source>
+        <translation>Modell speichern</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <source>Model files (*.json)</source>
+        <translation>Modelldateien (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="544"/>
+        <location filename="../gui/MainWindow.cpp" line="671"/>
+        <location filename="../gui/MainWindow.cpp" line="702"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="566"/>
+        <source>Pre-processing...</source>
+        <translation>Vorverarbeitung...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="605"/>
+        <source>Messages about the model appear here.</source>
+        <translation>Meldungen zum Modell erscheinen hier.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="606"/>
+        <source>Messages</source>
+        <translation>Meldungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="616"/>
+        <source>Steps</source>
+        <translation>Zeitschritte</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="623"/>
+        <source>Plots</source>
+        <translation>Diagramme</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="632"/>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="633"/>
+        <source>&amp;Picture (PNG)...</source>
+        <translation>&amp;Bild (PNG)...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="634"/>
+        <source>Export picture</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="635"/>
+        <source>PNG pictures (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="640"/>
+        <source>Save the picture of the view as a PNG file</source>
+        <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="641"/>
+        <source>Saved &amp;Steps (PVD/VTU)...</source>
+        <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="642"/>
+        <source>Export saved steps to</source>
+        <translation>Gespeicherte Zeitschritte exportieren nach</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="646"/>
+        <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
+        <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="647"/>
+        <source>&amp;History (CSV)...</source>
+        <translation>&amp;Verlauf (CSV)...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="648"/>
+        <source>Export history</source>
+        <translation>Verlauf exportieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="649"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="653"/>
+        <source>Copy the run&apos;s history of loads and measured displacements</source>
+        <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="659"/>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="678"/>
+        <source>There are no saved steps yet: run the model first.</source>
+        <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/MainWindow.cpp" line="687"/>
+        <source>Copied %n file(s) to %1</source>
+        <translation>
+            <numerusform>%n Datei nach %1 kopiert</numerusform>
+            <numerusform>%n Dateien nach %1 kopiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="694"/>
+        <source>There is no history yet: run the model first.</source>
+        <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="755"/>
+        <source>x = %1 m   y = %2 m</source>
+        <translation>x = %1 m   y = %2 m</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="775"/>
+        <source>Open model</source>
+        <translation>Modell öffnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="776"/>
+        <source>Model files (*.json);;All files (*)</source>
+        <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="793"/>
+        <source>Reading %1...</source>
+        <translation>%1 wird gelesen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="836"/>
+        <source>The run was stopped: another model was opened.</source>
+        <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="897"/>
+        <location filename="../gui/MainWindow.cpp" line="900"/>
+        <source>&amp;Run</source>
+        <translation>Be&amp;rechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="898"/>
+        <source>Run</source>
+        <translation>Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="903"/>
+        <source>Analyse the model; the picture follows the run</source>
+        <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="904"/>
+        <location filename="../gui/MainWindow.cpp" line="958"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="906"/>
+        <source>Pause or resume the run</source>
+        <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="907"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="910"/>
+        <source>Stop the run after the current step; the results so far are kept</source>
+        <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="912"/>
+        <source>Results &amp;Folder...</source>
+        <translation>Ergebnis&amp;ordner...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="914"/>
+        <source>Folder for the results</source>
+        <translation>Ordner für die Ergebnisse</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="917"/>
+        <source>Choose where runs write their files</source>
+        <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="923"/>
+        <source>Field shown for results</source>
+        <translation>Angezeigtes Ergebnisfeld</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="925"/>
+        <source>Displacement |u|</source>
+        <translation>Verschiebung |u|</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="926"/>
+        <source>Displacement ux</source>
+        <translation>Verschiebung ux</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="927"/>
+        <source>Displacement uy</source>
+        <translation>Verschiebung uy</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="928"/>
+        <source>Stress σxx</source>
+        <translation>Spannung σxx</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="929"/>
+        <source>Stress σyy</source>
+        <translation>Spannung σyy</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="930"/>
+        <source>Stress τxy</source>
+        <translation>Spannung τxy</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="931"/>
+        <source>Principal stress σ1</source>
+        <translation>Hauptspannung σ1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="932"/>
+        <source>Principal stress σ3</source>
+        <translation>Hauptspannung σ3</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="933"/>
+        <source>Plastic state</source>
+        <translation>Plastischer Zustand</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="934"/>
+        <source>Plastic strain</source>
+        <translation>Plastische Dehnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="937"/>
+        <source>Deformation ×</source>
+        <translation>Verformung ×</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="942"/>
+        <source>Scale factor of the drawn displacements (0 = undeformed)</source>
+        <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="958"/>
+        <source>Res&amp;ume</source>
+        <translation>&amp;Fortsetzen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/MainWindow.cpp" line="1015"/>
+        <source>Run started: %n step(s); results in %1</source>
+        <translation>
+            <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
+            <numerusform>Berechnung gestartet: %n Zeitschritte; Ergebnisse in %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1026"/>
+        <source>Run resumed.</source>
+        <translation>Berechnung fortgesetzt.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1029"/>
+        <source>Run paused.</source>
+        <translation>Berechnung unterbrochen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1040"/>
+        <source>Stopping the run...</source>
+        <translation>Berechnung wird abgebrochen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1046"/>
+        <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
+        <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/MainWindow.cpp" line="1087"/>
+        <source>Run completed: %n step(s).</source>
+        <translation>
+            <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
+            <numerusform>Berechnung abgeschlossen: %n Zeitschritte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1088"/>
+        <source>Run stopped after step %1.</source>
+        <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1089"/>
+        <source>The model collapsed: %1</source>
+        <translation>Das Modell ist kollabiert: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1090"/>
+        <source>The run failed: %1</source>
+        <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1093"/>
+        <source>Results in %1</source>
+        <translation>Ergebnisse in %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1100"/>
+        <source>Collapse</source>
+        <translation>Kollaps</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1100"/>
+        <source>Run failed</source>
+        <translation>Berechnung fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1102"/>
+        <source>The results up to the last accepted step are kept in %1.</source>
+        <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="847"/>
+        <source>Model: %1</source>
+        <translation>Modell: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="117"/>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="851"/>
+        <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
+        <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="857"/>
+        <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
+        <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/MainWindow.cpp" line="866"/>
+        <source>Not meshed: %n error(s)</source>
+        <translation>
+            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
+            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="879"/>
+        <source>pre-processing stopped without a message</source>
+        <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/MainWindow.cpp" line="883"/>
+        <source>... and %n more</source>
+        <translation>
+            <numerusform>... und %n weitere</numerusform>
+            <numerusform>... und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="886"/>
+        <source>Model not usable</source>
+        <translation>Modell nicht verwendbar</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="887"/>
+        <source>%1 could not be pre-processed.</source>
+        <translation>%1 konnte nicht vorverarbeitet werden.</translation>
+    </message>
+</context>
+<context>
     <name>mcdda::gui::ModelDocument</name>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="38"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="49"/>
         <source>The model has no file yet; choose one with Save As.</source>
         <translation>Das Modell hat noch keine Datei; wählen Sie eine mit „Speichern unter“.</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="48"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="59"/>
         <source>Cannot save %1: %2</source>
         <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="106"/>
+        <source>Add fixed point &quot;%1&quot;</source>
+        <translation>Festpunkt „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="113"/>
+        <source>Add point load &quot;%1&quot;</source>
+        <translation>Punktlast „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="120"/>
+        <source>Add edge pressure &quot;%1&quot;</source>
+        <translation>Kantendruck „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="127"/>
+        <source>Add measurement point &quot;%1&quot;</source>
+        <translation>Messpunkt „%1“ hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::PropertyEditor</name>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="103"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="104"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <source>Joint material</source>
+        <translation>Kluftmaterial</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="105"/>
+        <source>Analysis</source>
+        <translation>Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="106"/>
+        <source>In-situ stress</source>
+        <translation>Primärspannung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="122"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
+        <source>MPa</source>
+        <translation>MPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
+        <source>Young&apos;s modulus E</source>
+        <translation>Elastizitätsmodul E</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
+        <source>Poisson&apos;s ratio ν [–]</source>
+        <translation>Querdehnzahl ν [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="153"/>
+        <source>kN/m³</source>
+        <translation>kN/m³</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <source>Unit weight γ</source>
+        <translation>Wichte γ</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="161"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
+        <source>kPa</source>
+        <translation>kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="156"/>
+        <source>Cohesion c</source>
+        <translation>Kohäsion c</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="157"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="159"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="191"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="158"/>
+        <source>Friction angle φ</source>
+        <translation>Reibungswinkel φ</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="160"/>
+        <source>Dilation angle ψ</source>
+        <translation>Dilatanzwinkel ψ</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="162"/>
+        <source>Tensile strength</source>
+        <translation>Zugfestigkeit</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="163"/>
+        <source>Plastic (Mohr–Coulomb)</source>
+        <translation>Plastisch (Mohr-Coulomb)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="291"/>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
+        <source>Friction angle φj</source>
+        <translation>Reibungswinkel φj</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
+        <source>Cohesion cj</source>
+        <translation>Kohäsion cj</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
+        <source>Tensile strength tj</source>
+        <translation>Zugfestigkeit tj</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
+        <source>MN/m</source>
+        <translation>MN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="198"/>
+        <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
+        <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
+        <source>Normal stiffness kn</source>
+        <translation>Normalsteifigkeit kn</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
+        <source>Shear stiffness; 0 = automatic</source>
+        <translation>Schubsteifigkeit; 0 = automatisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <source>Shear stiffness ks</source>
+        <translation>Schubsteifigkeit ks</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="221"/>
+        <source>Static</source>
+        <translation>Statisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
+        <source>Dynamic</source>
+        <translation>Dynamisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="223"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <source>Type</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
+        <source>Steps [–]</source>
+        <translation>Zeitschritte [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
+        <source>Time step Δt</source>
+        <translation>Zeitschritt Δt</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
+        <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
+        <source>Max displacement ratio [–]</source>
+        <translation>Max. Verschiebungsverhältnis [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="236"/>
+        <source>Contact spring stiffness; 0 = automatic (from E)</source>
+        <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="237"/>
+        <source>Penalty</source>
+        <translation>Penalty</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="242"/>
+        <source> steps</source>
+        <translation> Zeitschritte</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
+        <source>Save every</source>
+        <translation>Speichern alle</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
+        <source>Plasticity</source>
+        <translation>Plastizität</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <source>Uniform</source>
+        <translation>Gleichförmig</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <source>From gravity</source>
+        <translation>Aus Eigengewicht</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
+        <source>Stresses: compression positive.</source>
+        <translation>Spannungen: Druck positiv.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <source>σxx</source>
+        <translation>σxx</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <source>σyy</source>
+        <translation>σyy</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
+        <source>τxy</source>
+        <translation>τxy</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <source>σzz given (else ν(σxx + σyy))</source>
+        <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <source>σzz</source>
+        <translation>σzz</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="286"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
+        <source>Ground surface y</source>
+        <translation>Geländeoberfläche y</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="290"/>
+        <source>K0 = σh/σv [–]</source>
+        <translation>K0 = σh/σv [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="322"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="327"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="439"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="465"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="516"/>
+        <source>Not applied: %1</source>
+        <translation>Nicht übernommen: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="443"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="469"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="494"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="520"/>
+        <source>Applied.</source>
+        <translation>Übernommen.</translation>
     </message>
 </context>
 <context>
     <name>mcdda::gui::SetAnalysisSettingsCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="78"/>
+        <location filename="../gui/document/Commands.cpp" line="94"/>
         <source>Change analysis settings</source>
         <translation>Berechnungseinstellungen ändern</translation>
     </message>
 </context>
 <context>
+    <name>mcdda::gui::SetInitialStressCommand</name>
+    <message>
+        <location filename="../gui/document/Commands.cpp" line="130"/>
+        <source>Change in-situ stress</source>
+        <translation>Primärspannungszustand ändern</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::SetJointMaterialCommand</name>
+    <message>
+        <location filename="../gui/document/Commands.cpp" line="122"/>
+        <source>Change joint material &quot;%1&quot;</source>
+        <translation>Kluftmaterial „%1“ ändern</translation>
+    </message>
+</context>
+<context>
     <name>mcdda::gui::SetMaterialCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="62"/>
+        <location filename="../gui/document/Commands.cpp" line="78"/>
         <source>Change material &quot;%1&quot;</source>
         <translation>Material „%1“ ändern</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::StepSlider</name>
+    <message>
+        <location filename="../gui/results/StepSlider.cpp" line="15"/>
+        <source>Saved step shown</source>
+        <translation>Angezeigter gespeicherter Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/StepSlider.cpp" line="22"/>
+        <source>Step:</source>
+        <translation>Zeitschritt:</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/StepSlider.cpp" line="67"/>
+        <source>no saved steps</source>
+        <translation>keine gespeicherten Zeitschritte</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/StepSlider.cpp" line="70"/>
+        <source>%1 of %2, t = %3 s</source>
+        <translation>%1 von %2, t = %3 s</translation>
     </message>
 </context>
 </TS>

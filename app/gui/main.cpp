@@ -1,22 +1,32 @@
 /// \file main.cpp
-/// mcdda-gui [MODEL.json]: the desktop program.
+/// mcdda-gui [--language CODE] [MODEL.json]: the desktop program.
 
+#include "Language.hpp"
 #include "MainWindow.hpp"
 #include "Version.hpp"
 
 #include <QApplication>
+#include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
 #include <QIcon>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QStringList>
-#include <QTranslator>
 
 #include <cstring>
 
 namespace {
+
+QCommandLineOption language_option()
+{
+    return QCommandLineOption(
+        {QStringLiteral("l"), QStringLiteral("language")},
+        QCoreApplication::translate("main",
+                                    "Language of the program, e.g. \"de\" or \"en\" (default: $%1, "
+                                    "else the system's).")
+            .arg(QString::fromLatin1(mcdda::i18n::language_variable)),
+        QStringLiteral("CODE"));
+}
 
 void describe_options(QCommandLineParser& parser)
 {
@@ -24,6 +34,7 @@ void describe_options(QCommandLineParser& parser)
         "main", "Pre- and post-processor for elastic-plastic discontinuous deformation analysis."));
     parser.addHelpOption();
     parser.addVersionOption();
+    parser.addOption(language_option());
     parser.addPositionalArgument(QStringLiteral("model"),
                                  QCoreApplication::translate("main", "Model file (*.json) to open."),
                                  QStringLiteral("[MODEL.json]"));
@@ -46,22 +57,18 @@ bool wants_text_only(int argc, char** argv)
     return false;
 }
 
-void install_translations(QApplication& app)
+/// Installs the translations for --language (else $MCDDA_LANGUAGE, else the system locale)
+/// before the options are described, so that --help speaks the chosen language too.
+void install_translations(QCoreApplication& app)
 {
-    const QLocale locale;
-    auto* qt = new QTranslator(&app);
-    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QCoreApplication::installTranslator(qt);
-    auto* own = new QTranslator(&app);
-    const QStringList folders{QStringLiteral(":/i18n"),
-                              QCoreApplication::applicationDirPath() + QStringLiteral("/../share/mcdda/translations"),
-                              QCoreApplication::applicationDirPath() + QStringLiteral("/translations")};
-    for (const QString& folder : folders)
-        if (own->load(locale, QStringLiteral("mcdda"), QStringLiteral("_"), folder)) {
-            QCoreApplication::installTranslator(own);
-            break;
-        }
+    QCommandLineParser early;
+    early.addOption(language_option());
+    // Unknown options make parse() fail but keep the known values; the full parse reports them.
+    early.parse(QCoreApplication::arguments());
+    const QString requested = early.value(QStringLiteral("language"));
+    if (!requested.isEmpty() && !mcdda::i18n::is_known_language(requested))
+        qWarning("mcdda-gui: unknown language \"%s\"; the texts stay in English", qUtf8Printable(requested));
+    mcdda::i18n::install_translations(mcdda::i18n::choose_locale(requested), &app);
 }
 
 }  // namespace
@@ -71,6 +78,7 @@ int main(int argc, char** argv)
     if (wants_text_only(argc, argv)) {
         QCoreApplication app(argc, argv);
         set_identity();
+        install_translations(app);
         QCommandLineParser parser;
         describe_options(parser);
         parser.process(app);  // prints and exits

@@ -104,4 +104,30 @@ void SetAnalysisSettingsCommand::undo() {
     notify();
 }
 
+namespace {
+std::size_t checked_index(std::size_t size, int index, const char* what) {
+    if (index < 0 || static_cast<std::size_t>(index) >= size)
+        throw std::out_of_range(std::string(what) + ": no item " + std::to_string(index));
+    return static_cast<std::size_t>(index);
+}
+}  // namespace
+
+SetJointMaterialCommand::SetJointMaterialCommand(ModelDocument* document, int index, JointMaterial material,
+                                                 QUndoCommand* parent)
+    : SetValueCommand<JointMaterial>(
+          document,
+          [i = checked_index(document->model().joint_materials.size(), index, "SetJointMaterialCommand")](
+              Model& m) -> JointMaterial& { return m.joint_materials[i]; },
+          std::move(material), QString(), parent) {
+    setText(tr("Change joint material \"%1\"")
+                .arg(QString::fromStdString(document->model().joint_materials[static_cast<std::size_t>(index)].name)));
+}
+
+SetInitialStressCommand::SetInitialStressCommand(ModelDocument* document, const InitialStress& stress,
+                                                 QUndoCommand* parent)
+    : SetValueCommand<InitialStress>(
+          document, [](Model& m) -> InitialStress& { return m.initial_stress; }, stress, QString(), parent) {
+    setText(tr("Change in-situ stress"));
+}
+
 }  // namespace mcdda::gui

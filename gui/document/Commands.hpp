@@ -8,7 +8,12 @@
 #include <QCoreApplication>
 #include <QUndoCommand>
 
+#include <QString>
+
 #include <cstddef>
+#include <functional>
+#include <utility>
+#include <vector>
 
 namespace mcdda::gui {
 
@@ -92,6 +97,76 @@ public:
 private:
     AnalysisSettings new_;
     AnalysisSettings old_;
+};
+
+/// Appends one item to a list of the model (fixed points, loads, measurement points, ...) and
+/// removes it again on undo: one template instead of a near-copy per list.
+template <typename T>
+class AddItemCommand : public DocumentCommand {
+public:
+    AddItemCommand(ModelDocument* document, std::vector<T> Model::*list, T item, const QString& text,
+                   QUndoCommand* parent = nullptr)
+        : DocumentCommand(document, parent), list_(list), item_(std::move(item)) {
+        setText(text);
+    }
+    void redo() override {
+        (model().*list_).push_back(item_);
+        notify();
+    }
+    void undo() override {
+        (model().*list_).pop_back();
+        notify();
+    }
+    const T& item() const { return item_; }
+
+private:
+    std::vector<T> Model::*list_;
+    T item_;
+};
+
+/// Replaces one value of the model (found by `access`), restoring the old one on undo.
+template <typename T>
+class SetValueCommand : public DocumentCommand {
+public:
+    using Access = std::function<T&(Model&)>;
+    SetValueCommand(ModelDocument* document, Access access, T value, const QString& text,
+                    QUndoCommand* parent = nullptr)
+        : DocumentCommand(document, parent), access_(std::move(access)), new_(std::move(value)) {
+        setText(text);
+    }
+    void redo() override {
+        if (!saved_) {
+            old_ = access_(model());
+            saved_ = true;
+        }
+        access_(model()) = new_;
+        notify();
+    }
+    void undo() override {
+        access_(model()) = old_;
+        notify();
+    }
+
+private:
+    Access access_;
+    T new_;
+    T old_{};
+    bool saved_ = false;
+};
+
+/// Replaces one joint material (by index).
+class SetJointMaterialCommand : public SetValueCommand<JointMaterial> {
+    Q_DECLARE_TR_FUNCTIONS(mcdda::gui::SetJointMaterialCommand)
+public:
+    SetJointMaterialCommand(ModelDocument* document, int index, JointMaterial material,
+                            QUndoCommand* parent = nullptr);
+};
+
+/// Replaces the initial (in-situ) stress.
+class SetInitialStressCommand : public SetValueCommand<InitialStress> {
+    Q_DECLARE_TR_FUNCTIONS(mcdda::gui::SetInitialStressCommand)
+public:
+    SetInitialStressCommand(ModelDocument* document, const InitialStress& stress, QUndoCommand* parent = nullptr);
 };
 
 }  // namespace mcdda::gui

@@ -6,12 +6,23 @@
 
 #include <QFile>
 
+#include <algorithm>
 #include <exception>
+#include <string>
 
 namespace mcdda::gui {
 
 namespace {
 std::string local_path(const QString& path) { return QFile::encodeName(path).toStdString(); }
+
+/// `stem` + " N" with the smallest N ≥ size + 1 that no item of `items` is named yet.
+template <typename T>
+std::string unused_name(const std::vector<T>& items, const std::string& stem) {
+    for (std::size_t n = items.size() + 1;; ++n) {
+        const std::string name = stem + " " + std::to_string(n);
+        if (std::none_of(items.begin(), items.end(), [&](const T& x) { return x.name == name; })) return name;
+    }
+}
 }  // namespace
 
 ModelDocument::ModelDocument(QObject* parent) : QObject(parent) {
@@ -79,6 +90,42 @@ void ModelDocument::setMaterial(int index, const Material& material) {
 
 void ModelDocument::setAnalysisSettings(const AnalysisSettings& settings) {
     undo_.push(new SetAnalysisSettingsCommand(this, settings));
+}
+
+void ModelDocument::setJointMaterial(int index, const JointMaterial& material) {
+    undo_.push(new SetJointMaterialCommand(this, index, material));
+}
+
+void ModelDocument::setInitialStress(const InitialStress& stress) {
+    undo_.push(new SetInitialStressCommand(this, stress));
+}
+
+void ModelDocument::addFixedPoint(const FixedPoint& point) {
+    FixedPoint p = point;
+    if (p.name.empty()) p.name = unused_name(model_.fixed_points, "fixed point");
+    const QString text = tr("Add fixed point \"%1\"").arg(QString::fromStdString(p.name));
+    undo_.push(new AddItemCommand<FixedPoint>(this, &Model::fixed_points, std::move(p), text));
+}
+
+void ModelDocument::addPointLoad(const PointLoad& load) {
+    PointLoad l = load;
+    if (l.name.empty()) l.name = unused_name(model_.point_loads, "load");
+    const QString text = tr("Add point load \"%1\"").arg(QString::fromStdString(l.name));
+    undo_.push(new AddItemCommand<PointLoad>(this, &Model::point_loads, std::move(l), text));
+}
+
+void ModelDocument::addEdgePressure(const EdgePressure& pressure) {
+    EdgePressure e = pressure;
+    if (e.name.empty()) e.name = unused_name(model_.edge_pressures, "pressure");
+    const QString text = tr("Add edge pressure \"%1\"").arg(QString::fromStdString(e.name));
+    undo_.push(new AddItemCommand<EdgePressure>(this, &Model::edge_pressures, std::move(e), text));
+}
+
+void ModelDocument::addMeasurementPoint(const MeasurementPoint& point) {
+    MeasurementPoint p = point;
+    if (p.name.empty()) p.name = unused_name(model_.measurement_points, "point");
+    const QString text = tr("Add measurement point \"%1\"").arg(QString::fromStdString(p.name));
+    undo_.push(new AddItemCommand<MeasurementPoint>(this, &Model::measurement_points, std::move(p), text));
 }
 
 void ModelDocument::setPath(const QString& path) {

@@ -56,6 +56,15 @@ public:
     /// Replaces material `index`.
     void setMaterial(int index, const Material& material);
     void setAnalysisSettings(const AnalysisSettings& settings);
+    /// Replaces joint material `index`.
+    void setJointMaterial(int index, const JointMaterial& material);
+    void setInitialStress(const InitialStress& stress);
+    /// Adds a fixed point, point load, edge pressure or measurement point; an empty name becomes
+    /// "fixed point N", "load N", "pressure N" or "point N" (a name not used yet).
+    void addFixedPoint(const FixedPoint& point);
+    void addPointLoad(const PointLoad& load);
+    void addEdgePressure(const EdgePressure& pressure);
+    void addMeasurementPoint(const MeasurementPoint& point);
 
 signals:
     /// The model changed (an edit, undo, redo, open or setModel).

@@ -51,12 +51,25 @@ void DrawTool::pressed(const QPointF& widget_pos)
     points_.push_back(p);
     cursor_ = p;
     has_cursor_ = true;
+    if ((shape_ == Shape::Point || shape_ == Shape::Segment) && points_.size() >= needed()) {
+        finish();
+        return;
+    }
     updatePreview();
+}
+
+std::size_t DrawTool::needed() const
+{
+    switch (shape_) {
+        case Shape::Polygon: return 3;
+        case Shape::Point: return 1;
+        default: return 2;
+    }
 }
 
 void DrawTool::moved(const QPointF& widget_pos)
 {
-    if (points_.empty()) return;
+    if (points_.empty() || shape_ == Shape::Point) return;
     cursor_ = snapped(widget_pos);
     has_cursor_ = true;
     updatePreview();
@@ -64,6 +77,7 @@ void DrawTool::moved(const QPointF& widget_pos)
 
 void DrawTool::doubleClicked(const QPointF& widget_pos)
 {
+    if (shape_ == Shape::Point) return;  // its first press already placed the point
     pressed(widget_pos);  // adds the vertex unless its press already did
     finish();
 }
@@ -87,8 +101,7 @@ bool DrawTool::finish()
 {
     std::vector<Point2> shape = points_;
     if (shape.size() > 1 && same(shape.front(), shape.back()) && shape_ == Shape::Polygon) shape.pop_back();
-    const std::size_t needed = shape_ == Shape::Polygon ? 3 : 2;
-    if (shape.size() < needed) return false;
+    if (shape.size() < needed()) return false;
     if (shape_ == Shape::Polygon && signed_area(shape) < 0.0) std::reverse(shape.begin(), shape.end());
     cancel();
     emit finished(shape);

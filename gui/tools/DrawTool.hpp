@@ -3,6 +3,8 @@
 /// Draws a polygon (a new region) or a polyline (a new joint) in a ModelView: left clicks add
 /// snapped vertices, a double-click or Enter finishes, Escape cancels. A rubber band follows
 /// the cursor. When finished it emits the points; the window turns them into a command.
+/// Shape::Point finishes at the first click (fixed points, point loads, measurement points),
+/// Shape::Segment at the second (rollers, edge pressures).
 
 #include "model/Model.hpp"
 #include "tools/Snap.hpp"
@@ -21,7 +23,7 @@ class DrawTool : public QObject, public ViewTool {
     Q_OBJECT
 
 public:
-    enum class Shape { Polygon, Polyline };
+    enum class Shape { Polygon, Polyline, Point, Segment };
 
     /// `model` gives the model whose vertices attract the cursor.
     DrawTool(Shape shape, ModelView* view, std::function<const Model&()> model, QObject* parent = nullptr);
@@ -46,11 +48,13 @@ public:
     void cancel() override;
 
 signals:
-    /// A polygon was closed (counter-clockwise, ≥ 3 vertices) or a polyline finished (≥ 2).
+    /// A polygon was closed (counter-clockwise, ≥ 3 vertices), a polyline finished (≥ 2), a
+    /// point placed (1) or a segment drawn (2).
     void finished(const std::vector<mcdda::Point2>& points);
 
 private:
     void updatePreview();
+    std::size_t needed() const;
 
     Shape shape_;
     ModelView* view_;

@@ -133,6 +133,50 @@ private slots:
         COMPARE_MODELS(document.model(), edited);
     }
 
+    void supportsLoadsPointsAndStressAreUndoable() {
+        ModelDocument document;
+        QVERIFY(openExample(document));
+        const Model original = document.model();
+        const std::size_t points = original.measurement_points.size();
+        FixedPoint f;
+        f.point = {1, 2};
+        document.addFixedPoint(f);
+        PointLoad l;
+        l.point = {3, 4};
+        l.force = {0, -1e3};
+        document.addPointLoad(l);
+        EdgePressure e;
+        e.from = {0, 0};
+        e.to = {1, 0};
+        e.pressure = 1e5;
+        document.addEdgePressure(e);
+        document.addMeasurementPoint(MeasurementPoint{"", {5, 6}});
+        document.addMeasurementPoint(MeasurementPoint{"", {7, 8}});
+        const auto& added = document.model().measurement_points;
+        QCOMPARE(added.size(), points + 2);
+        QVERIFY(added[points].name != added[points + 1].name);  // auto names stay unique
+        QVERIFY(!document.model().fixed_points.back().name.empty());
+        QCOMPARE(document.model().point_loads.back().force.y, -1e3);
+        QCOMPARE(document.model().edge_pressures.back().pressure, 1e5);
+
+        InitialStress s;
+        s.kind = InitialStress::Kind::Gravity;
+        s.surface_y = 20.0;
+        s.k0 = 0.5;
+        document.setInitialStress(s);
+        QCOMPARE(document.model().initial_stress.k0, 0.5);
+        if (!document.model().joint_materials.empty()) {
+            JointMaterial j = document.model().joint_materials[0];
+            j.cohesion = 12345.0;
+            document.setJointMaterial(0, j);
+            QCOMPARE(document.model().joint_materials[0].cohesion, 12345.0);
+        }
+        while (document.undoStack()->canUndo()) document.undoStack()->undo();
+        COMPARE_MODELS(original, document.model());
+        QVERIFY(!document.isModified());
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, gui::SetJointMaterialCommand(&document, 999, JointMaterial{}));
+    }
+
     void modifiedFollowsUndoRedoAndSave() {
         QTemporaryDir folder;
         QVERIFY(folder.isValid());

@@ -1,9 +1,57 @@
-// The German translation is compiled and embedded under ":/i18n". No display needed.
+// The German translation is compiled and embedded under ":/i18n"; --language / $MCDDA_LANGUAGE
+// pick it the way app/gui/main.cpp does (translations/Language.hpp). No display needed.
+
+#include "Language.hpp"
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QObject>
 #include <QTest>
 #include <QTranslator>
+
+#include <memory>
+
+namespace {
+
+QString tr_main_window(const char* source) { return QCoreApplication::translate("mcdda::gui::MainWindow", source); }
+
+/// The access key of a menu text ("Be&rechnung" -> 'r').
+QChar mnemonic(const QString& text)
+{
+    for (qsizetype i = 0; i + 1 < text.size(); ++i)
+        if (text[i] == QLatin1Char('&')) {
+            if (text[i + 1] != QLatin1Char('&')) return text[i + 1].toLower();
+            ++i;
+        }
+    return {};
+}
+
+/// Whether the translated `sources` (of MainWindow) have distinct access keys.
+bool distinct_mnemonics(std::initializer_list<const char*> sources)
+{
+    QList<QChar> seen;
+    for (const char* source : sources) {
+        const QChar key = mnemonic(tr_main_window(source));
+        if (key.isNull() || seen.contains(key)) {
+            qWarning("access key of \"%s\" missing or taken", qUtf8Printable(tr_main_window(source)));
+            return false;
+        }
+        seen.append(key);
+    }
+    return true;
+}
+
+/// Installs the translations for `code` as `mcdda-gui --language code` does; they go when the
+/// returned owner does.
+std::unique_ptr<QObject> install(const QString& code, mcdda::i18n::Installed* installed = nullptr)
+{
+    auto owner = std::make_unique<QObject>();
+    const auto found = mcdda::i18n::install_translations(mcdda::i18n::choose_locale(code), owner.get());
+    if (installed) *installed = found;
+    return owner;
+}
+
+}  // namespace
 
 class TranslationTest : public QObject {
     Q_OBJECT
@@ -40,6 +88,72 @@ private slots:
                                 QStringLiteral("_"), QStringLiteral(":/i18n")));
         QCOMPARE(translator.translate("mcdda::gui::MainWindow", "&Help"), QStringLiteral("&Hilfe"));
     }
+
+    void languageOptionGivesGermanMenus() {
+        mcdda::i18n::Installed installed;
+        const auto owner = install(QStringLiteral("de"), &installed);
+        QVERIFY(installed.mcdda);
+        // Main window menus.
+        QCOMPARE(tr_main_window("&File"), QStringLiteral("&Datei"));
+        QCOMPARE(tr_main_window("&Edit"), QStringLiteral("&Bearbeiten"));
+        QCOMPARE(tr_main_window("&View"), QStringLiteral("&Ansicht"));
+        QCOMPARE(tr_main_window("&Help"), QStringLiteral("&Hilfe"));
+        QCOMPARE(tr_main_window("&Export"), QStringLiteral("&Exportieren"));
+        QCOMPARE(tr_main_window("&Save"), QStringLiteral("&Speichern"));
+        QCOMPARE(tr_main_window("&Undo"), QStringLiteral("&Rückgängig"));
+        QCOMPARE(tr_main_window("Draw &Joint"), QStringLiteral("&Kluft zeichnen"));
+        // The Run menu.
+        QCOMPARE(tr_main_window("&Run"), QStringLiteral("Be&rechnung"));
+        QCOMPARE(tr_main_window("&Pause"), QStringLiteral("&Pause"));
+        QCOMPARE(tr_main_window("Res&ume"), QStringLiteral("&Fortsetzen"));
+        QCOMPARE(tr_main_window("&Stop"), QStringLiteral("&Abbrechen"));
+        QCOMPARE(tr_main_window("Results &Folder..."), QStringLiteral("Ergebnis&ordner..."));
+        QCOMPARE(QCoreApplication::translate("mcdda::gui::MainWindow", "Run completed: %n step(s).", nullptr, 1),
+                 QStringLiteral("Berechnung abgeschlossen: 1 Zeitschritt."));
+        QCOMPARE(QCoreApplication::translate("mcdda::gui::MainWindow", "Run completed: %n step(s).", nullptr, 40),
+                 QStringLiteral("Berechnung abgeschlossen: 40 Zeitschritte."));
+        // Access keys stay unique in the menu bar and the Run menu.
+        QVERIFY(distinct_mnemonics({"&File", "&Edit", "&View", "&Run", "&Help"}));
+        QVERIFY(distinct_mnemonics({"&Run", "&Pause", "&Stop", "Results &Folder..."}));
+        QVERIFY(distinct_mnemonics({"&Run", "Res&ume", "&Stop", "Results &Folder..."}));
+    }
+
+    void englishNeedsNoTranslation() {
+        mcdda::i18n::Installed installed;
+        const auto owner = install(QStringLiteral("en"), &installed);
+        QVERIFY(!installed.mcdda);
+        QCOMPARE(tr_main_window("&Run"), QStringLiteral("&Run"));
+    }
+
+    void translationsGoWithTheirOwner() {
+        { const auto owner = install(QStringLiteral("de_DE")); QCOMPARE(tr_main_window("&File"), QStringLiteral("&Datei")); }
+        QCOMPARE(tr_main_window("&File"), QStringLiteral("&File"));
+    }
+
+    void environmentPicksTheLanguageUnlessTheOptionDoes() {
+        qputenv(mcdda::i18n::language_variable, "de");
+        QCOMPARE(mcdda::i18n::choose_locale().language(), QLocale::German);
+        QCOMPARE(mcdda::i18n::choose_locale(QStringLiteral("en")).language(), QLocale::English);
+        qputenv(mcdda::i18n::language_variable, "");
+        QCOMPARE(mcdda::i18n::choose_locale(), QLocale());
+        qunsetenv(mcdda::i18n::language_variable);
+        QVERIFY(mcdda::i18n::is_known_language(QStringLiteral("de")));
+        QVERIFY(mcdda::i18n::is_known_language(QStringLiteral("en")));
+        QVERIFY(!mcdda::i18n::is_known_language(QStringLiteral("")));
+        QVERIFY(!mcdda::i18n::is_known_language(QStringLiteral("xx")));
+    }
+
+#ifdef MCDDA_TS_FILE
+    void everyMessageIsTranslated() {
+        QFile ts(QStringLiteral(MCDDA_TS_FILE));
+        QVERIFY(ts.open(QIODevice::ReadOnly));
+        const QByteArray text = ts.readAll();
+        QVERIFY(text.contains("<message"));
+        QVERIFY2(!text.contains("type=\"unfinished\""), "translations/mcdda_de.ts has unfinished messages");
+        QVERIFY2(!text.contains("type=\"vanished\"") && !text.contains("type=\"obsolete\""),
+                 "translations/mcdda_de.ts keeps obsolete messages (lupdate -no-obsolete)");
+    }
+#endif
 };
 
 QTEST_GUILESS_MAIN(TranslationTest)

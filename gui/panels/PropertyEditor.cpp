@@ -1,0 +1,524 @@
+#include "panels/PropertyEditor.hpp"
+
+#include "document/ModelDocument.hpp"
+#include "model/ModelValidator.hpp"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace mcdda::gui {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double deg = pi / 180.0;
+constexpr double standard_gravity = 9.81;  // as the model reader: unit weight = ρ g
+
+QString to_qt(const std::string& s) { return QString::fromStdString(s); }
+
+/// A number field with its unit shown after the value.
+QDoubleSpinBox* number(const QString& name, const QString& unit, double min, double max, int decimals,
+                       QWidget* parent)
+{
+    auto* box = new QDoubleSpinBox(parent);
+    box->setObjectName(name);
+    box->setRange(min, max);
+    box->setDecimals(decimals);
+    box->setKeyboardTracking(false);
+    box->setAccelerated(true);
+    if (!unit.isEmpty()) box->setSuffix(QLatin1Char(' ') + unit);
+    return box;
+}
+
+/// Shows `value` (already in the field's unit) and remembers what was shown, so an untouched
+/// field gives back the exact SI value instead of a rounded one.
+void display(QDoubleSpinBox* box, double value)
+{
+    box->setValue(value);
+    box->setProperty("shown", box->value());
+}
+
+/// The field's value converted to SI by `factor`, or `original` when the field is untouched.
+double si(const QDoubleSpinBox* box, double original, double factor)
+{
+    const QVariant shown = box->property("shown");
+    if (shown.isValid() && shown.toDouble() == box->value()) return original;
+    return box->value() * factor;
+}
+
+bool same(const Material& a, const Material& b)
+{
+    return a.name == b.name && a.young_modulus == b.young_modulus && a.poisson_ratio == b.poisson_ratio &&
+           a.density == b.density && a.cohesion == b.cohesion && a.friction_angle == b.friction_angle &&
+           a.dilation_angle == b.dilation_angle && a.tensile_strength == b.tensile_strength && a.plastic == b.plastic;
+}
+
+bool same(const JointMaterial& a, const JointMaterial& b)
+{
+    return a.name == b.name && a.friction_angle == b.friction_angle && a.cohesion == b.cohesion &&
+           a.tensile_strength == b.tensile_strength && a.normal_stiffness == b.normal_stiffness &&
+           a.shear_stiffness == b.shear_stiffness;
+}
+
+bool same(const AnalysisSettings& a, const AnalysisSettings& b)
+{
+    return a.kind == b.kind && a.steps == b.steps && a.time_step == b.time_step &&
+           a.max_displacement_ratio == b.max_displacement_ratio && a.penalty == b.penalty &&
+           a.output_every == b.output_every && a.plasticity == b.plasticity;
+}
+
+bool same(const InitialStress& a, const InitialStress& b)
+{
+    return a.kind == b.kind && a.stress == b.stress && a.stress_zz == b.stress_zz && a.surface_y == b.surface_y &&
+           a.k0 == b.k0;
+}
+
+QLabel* status_label(const QString& name, QWidget* parent)
+{
+    auto* label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    return label;
+}
+
+}  // namespace
+
+PropertyEditor::PropertyEditor(ModelDocument* document, QWidget* parent) : QWidget(parent), document_(document)
+{
+    tabs_ = new QTabWidget(this);
+    tabs_->setObjectName(QStringLiteral("propertyTabs"));
+    tabs_->addTab(createMaterialForm(), tr("Material"));
+    tabs_->addTab(createJointMaterialForm(), tr("Joint material"));
+    tabs_->addTab(createAnalysisForm(), tr("Analysis"));
+    tabs_->addTab(createInitialStressForm(), tr("In-situ stress"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(tabs_);
+    connect(document_, &ModelDocument::changed, this, &PropertyEditor::refresh);
+    refresh();
+}
+
+QString PropertyEditor::refusal(const Model& candidate, const std::string& prefix)
+{
+    std::vector<Diagnostic> diagnostics;
+    validate_model(candidate, diagnostics);
+    for (const Diagnostic& d : diagnostics) {
+        if (d.severity != Diagnostic::Severity::Error) continue;
+        const bool concerns = d.path.compare(0, prefix.size(), prefix) == 0 &&
+                              (d.path.size() == prefix.size() || d.path[prefix.size()] == '/');
+        if (concerns) return tr("%1 (%2)").arg(to_qt(d.message), to_qt(d.path));
+    }
+    return {};
+}
+
+void PropertyEditor::setStatus(QLabel* label, const QString& text, bool error)
+{
+    label->setStyleSheet(error ? QStringLiteral("color: #b00020;") : QString());
+    label->setText(text);
+}
+
+// --- forms -------------------------------------------------------------------------------
+
+QWidget* PropertyEditor::createMaterialForm()
+{
+    auto* page = new QWidget(this);
+    auto* form = new QFormLayout(page);
+    material_box_ = new QComboBox(page);
+    material_box_->setObjectName(QStringLiteral("materialBox"));
+    connect(material_box_, &QComboBox::currentIndexChanged, this, [this] {
+        if (!loading_) loadMaterial();
+    });
+    form->addRow(tr("Material"), material_box_);
+    mat_name_ = new QLineEdit(page);
+    mat_name_->setObjectName(QStringLiteral("materialName"));
+    form->addRow(tr("Name"), mat_name_);
+    mat_e_ = number(QStringLiteral("materialE"), tr("MPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("Young's modulus E"), mat_e_);
+    mat_nu_ = number(QStringLiteral("materialNu"), QString(), -1.0, 1.0, 4, page);
+    mat_nu_->setSingleStep(0.01);
+    form->addRow(tr("Poisson's ratio ν [–]"), mat_nu_);
+    mat_gamma_ = number(QStringLiteral("materialGamma"), tr("kN/m³"), -1e4, 1e4, 3, page);
+    form->addRow(tr("Unit weight γ"), mat_gamma_);
+    mat_c_ = number(QStringLiteral("materialCohesion"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("Cohesion c"), mat_c_);
+    mat_phi_ = number(QStringLiteral("materialPhi"), tr("°"), -360.0, 360.0, 3, page);
+    form->addRow(tr("Friction angle φ"), mat_phi_);
+    mat_psi_ = number(QStringLiteral("materialPsi"), tr("°"), -360.0, 360.0, 3, page);
+    form->addRow(tr("Dilation angle ψ"), mat_psi_);
+    mat_t_ = number(QStringLiteral("materialTensile"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("Tensile strength"), mat_t_);
+    mat_plastic_ = new QCheckBox(tr("Plastic (Mohr–Coulomb)"), page);
+    mat_plastic_->setObjectName(QStringLiteral("materialPlastic"));
+    form->addRow(QString(), mat_plastic_);
+    auto* apply = new QPushButton(tr("Apply"), page);
+    apply->setObjectName(QStringLiteral("materialApply"));
+    connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyMaterial);
+    form->addRow(QString(), apply);
+    mat_status_ = status_label(QStringLiteral("materialStatus"), page);
+    form->addRow(mat_status_);
+    for (QDoubleSpinBox* box : {mat_e_, mat_nu_, mat_gamma_, mat_c_, mat_phi_, mat_psi_, mat_t_})
+        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
+    connect(mat_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
+    return page;
+}
+
+QWidget* PropertyEditor::createJointMaterialForm()
+{
+    auto* page = new QWidget(this);
+    auto* form = new QFormLayout(page);
+    joint_box_ = new QComboBox(page);
+    joint_box_->setObjectName(QStringLiteral("jointMaterialBox"));
+    connect(joint_box_, &QComboBox::currentIndexChanged, this, [this] {
+        if (!loading_) loadJointMaterial();
+    });
+    form->addRow(tr("Joint material"), joint_box_);
+    jm_name_ = new QLineEdit(page);
+    jm_name_->setObjectName(QStringLiteral("jointMaterialName"));
+    form->addRow(tr("Name"), jm_name_);
+    jm_phi_ = number(QStringLiteral("jointPhi"), tr("°"), -360.0, 360.0, 3, page);
+    form->addRow(tr("Friction angle φj"), jm_phi_);
+    jm_c_ = number(QStringLiteral("jointCohesion"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("Cohesion cj"), jm_c_);
+    jm_t_ = number(QStringLiteral("jointTensile"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("Tensile strength tj"), jm_t_);
+    jm_kn_ = number(QStringLiteral("jointKn"), tr("MN/m"), -1e9, 1e9, 3, page);
+    jm_kn_->setToolTip(tr("Normal stiffness per metre of thickness; 0 = the analysis penalty"));
+    form->addRow(tr("Normal stiffness kn"), jm_kn_);
+    jm_ks_ = number(QStringLiteral("jointKs"), tr("MN/m"), -1e9, 1e9, 3, page);
+    jm_ks_->setToolTip(tr("Shear stiffness; 0 = automatic"));
+    form->addRow(tr("Shear stiffness ks"), jm_ks_);
+    auto* apply = new QPushButton(tr("Apply"), page);
+    apply->setObjectName(QStringLiteral("jointMaterialApply"));
+    connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyJointMaterial);
+    form->addRow(QString(), apply);
+    jm_status_ = status_label(QStringLiteral("jointMaterialStatus"), page);
+    form->addRow(jm_status_);
+    for (QDoubleSpinBox* box : {jm_phi_, jm_c_, jm_t_, jm_kn_, jm_ks_})
+        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
+    connect(jm_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
+    return page;
+}
+
+QWidget* PropertyEditor::createAnalysisForm()
+{
+    auto* page = new QWidget(this);
+    auto* form = new QFormLayout(page);
+    an_kind_ = new QComboBox(page);
+    an_kind_->setObjectName(QStringLiteral("analysisKind"));
+    an_kind_->addItem(tr("Static"), static_cast<int>(AnalysisSettings::Kind::Static));
+    an_kind_->addItem(tr("Dynamic"), static_cast<int>(AnalysisSettings::Kind::Dynamic));
+    form->addRow(tr("Type"), an_kind_);
+    an_steps_ = new QSpinBox(page);
+    an_steps_->setObjectName(QStringLiteral("analysisSteps"));
+    an_steps_->setRange(-1, 100000000);
+    an_steps_->setKeyboardTracking(false);
+    form->addRow(tr("Steps [–]"), an_steps_);
+    an_dt_ = number(QStringLiteral("analysisTimeStep"), tr("s"), -1e6, 1e6, 6, page);
+    form->addRow(tr("Time step Δt"), an_dt_);
+    an_ratio_ = number(QStringLiteral("analysisRatio"), QString(), -1.0, 1.0, 6, page);
+    an_ratio_->setSingleStep(0.001);
+    an_ratio_->setToolTip(tr("Largest displacement in one step divided by the model size (Shi's g2)"));
+    form->addRow(tr("Max displacement ratio [–]"), an_ratio_);
+    an_penalty_ = number(QStringLiteral("analysisPenalty"), tr("MN/m"), -1e12, 1e12, 3, page);
+    an_penalty_->setToolTip(tr("Contact spring stiffness; 0 = automatic (from E)"));
+    form->addRow(tr("Penalty"), an_penalty_);
+    an_output_ = new QSpinBox(page);
+    an_output_->setObjectName(QStringLiteral("analysisOutputEvery"));
+    an_output_->setRange(-1, 100000000);
+    an_output_->setKeyboardTracking(false);
+    an_output_->setSuffix(tr(" steps"));
+    form->addRow(tr("Save every"), an_output_);
+    an_plasticity_ = new QCheckBox(tr("Plasticity"), page);
+    an_plasticity_->setObjectName(QStringLiteral("analysisPlasticity"));
+    form->addRow(QString(), an_plasticity_);
+    auto* apply = new QPushButton(tr("Apply"), page);
+    apply->setObjectName(QStringLiteral("analysisApply"));
+    connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyAnalysis);
+    form->addRow(QString(), apply);
+    an_status_ = status_label(QStringLiteral("analysisStatus"), page);
+    form->addRow(an_status_);
+    for (QDoubleSpinBox* box : {an_dt_, an_ratio_, an_penalty_})
+        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyAnalysis(); });
+    for (QSpinBox* box : {an_steps_, an_output_})
+        connect(box, &QSpinBox::editingFinished, this, [this] { if (!loading_) applyAnalysis(); });
+    return page;
+}
+
+QWidget* PropertyEditor::createInitialStressForm()
+{
+    auto* page = new QWidget(this);
+    auto* form = new QFormLayout(page);
+    is_kind_ = new QComboBox(page);
+    is_kind_->setObjectName(QStringLiteral("stressKind"));
+    is_kind_->addItem(tr("None"), static_cast<int>(InitialStress::Kind::None));
+    is_kind_->addItem(tr("Uniform"), static_cast<int>(InitialStress::Kind::Uniform));
+    is_kind_->addItem(tr("From gravity"), static_cast<int>(InitialStress::Kind::Gravity));
+    connect(is_kind_, &QComboBox::currentIndexChanged, this, [this] { updateStressFields(); });
+    form->addRow(tr("Type"), is_kind_);
+    auto* note = new QLabel(tr("Stresses: compression positive."), page);
+    note->setWordWrap(true);
+    form->addRow(note);
+    is_sxx_ = number(QStringLiteral("stressXX"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("σxx"), is_sxx_);
+    is_syy_ = number(QStringLiteral("stressYY"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("σyy"), is_syy_);
+    is_sxy_ = number(QStringLiteral("stressXY"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("τxy"), is_sxy_);
+    is_szz_given_ = new QCheckBox(tr("σzz given (else ν(σxx + σyy))"), page);
+    is_szz_given_->setObjectName(QStringLiteral("stressZZGiven"));
+    connect(is_szz_given_, &QCheckBox::toggled, this, [this] { updateStressFields(); });
+    form->addRow(QString(), is_szz_given_);
+    is_szz_ = number(QStringLiteral("stressZZ"), tr("kPa"), -1e9, 1e9, 3, page);
+    form->addRow(tr("σzz"), is_szz_);
+    is_surface_ = number(QStringLiteral("stressSurfaceY"), tr("m"), -1e7, 1e7, 3, page);
+    form->addRow(tr("Ground surface y"), is_surface_);
+    is_k0_ = number(QStringLiteral("stressK0"), QString(), -100.0, 100.0, 4, page);
+    is_k0_->setSingleStep(0.05);
+    form->addRow(tr("K0 = σh/σv [–]"), is_k0_);
+    auto* apply = new QPushButton(tr("Apply"), page);
+    apply->setObjectName(QStringLiteral("stressApply"));
+    connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyInitialStress);
+    form->addRow(QString(), apply);
+    is_status_ = status_label(QStringLiteral("stressStatus"), page);
+    form->addRow(is_status_);
+    return page;
+}
+
+void PropertyEditor::updateStressFields()
+{
+    const auto kind = static_cast<InitialStress::Kind>(is_kind_->currentData().toInt());
+    const bool uniform = kind == InitialStress::Kind::Uniform;
+    const bool gravity = kind == InitialStress::Kind::Gravity;
+    for (QWidget* w : {static_cast<QWidget*>(is_sxx_), static_cast<QWidget*>(is_syy_),
+                       static_cast<QWidget*>(is_sxy_), static_cast<QWidget*>(is_szz_given_)})
+        w->setEnabled(uniform);
+    is_szz_->setEnabled(uniform && is_szz_given_->isChecked());
+    is_surface_->setEnabled(gravity);
+    is_k0_->setEnabled(gravity);
+}
+
+// --- loading -----------------------------------------------------------------------------
+
+void PropertyEditor::refresh()
+{
+    const Model& m = document_->model();
+    loading_ = true;
+    const int material = material_box_->currentIndex();
+    material_box_->clear();
+    for (std::size_t i = 0; i < m.materials.size(); ++i)
+        material_box_->addItem(tr("%1: %2").arg(i).arg(to_qt(m.materials[i].name)));
+    if (material_box_->count() > 0) material_box_->setCurrentIndex(std::clamp(material, 0, material_box_->count() - 1));
+    const int joint = joint_box_->currentIndex();
+    joint_box_->clear();
+    for (std::size_t i = 0; i < m.joint_materials.size(); ++i)
+        joint_box_->addItem(tr("%1: %2").arg(i).arg(to_qt(m.joint_materials[i].name)));
+    if (joint_box_->count() > 0) joint_box_->setCurrentIndex(std::clamp(joint, 0, joint_box_->count() - 1));
+    loading_ = false;
+    loadMaterial();
+    loadJointMaterial();
+    loadAnalysis();
+    loadInitialStress();
+}
+
+void PropertyEditor::loadMaterial()
+{
+    const Model& m = document_->model();
+    const int i = material_box_->currentIndex();
+    const bool valid = i >= 0 && static_cast<std::size_t>(i) < m.materials.size();
+    for (QWidget* w : material_box_->parentWidget()->findChildren<QWidget*>())
+        if (w != mat_status_) w->setEnabled(valid);
+    if (!valid) return;
+    loading_ = true;
+    const Material& x = m.materials[static_cast<std::size_t>(i)];
+    mat_name_->setText(to_qt(x.name));
+    display(mat_e_, x.young_modulus / 1e6);
+    display(mat_nu_, x.poisson_ratio);
+    display(mat_gamma_, x.density * standard_gravity / 1e3);
+    display(mat_c_, x.cohesion / 1e3);
+    display(mat_phi_, x.friction_angle / deg);
+    display(mat_psi_, x.dilation_angle / deg);
+    display(mat_t_, x.tensile_strength / 1e3);
+    mat_plastic_->setChecked(x.plastic);
+    loading_ = false;
+}
+
+void PropertyEditor::loadJointMaterial()
+{
+    const Model& m = document_->model();
+    const int i = joint_box_->currentIndex();
+    const bool valid = i >= 0 && static_cast<std::size_t>(i) < m.joint_materials.size();
+    for (QWidget* w : joint_box_->parentWidget()->findChildren<QWidget*>())
+        if (w != jm_status_) w->setEnabled(valid);
+    if (!valid) return;
+    loading_ = true;
+    const JointMaterial& x = m.joint_materials[static_cast<std::size_t>(i)];
+    jm_name_->setText(to_qt(x.name));
+    display(jm_phi_, x.friction_angle / deg);
+    display(jm_c_, x.cohesion / 1e3);
+    display(jm_t_, x.tensile_strength / 1e3);
+    display(jm_kn_, x.normal_stiffness / 1e6);
+    display(jm_ks_, x.shear_stiffness / 1e6);
+    loading_ = false;
+}
+
+void PropertyEditor::loadAnalysis()
+{
+    const AnalysisSettings& a = document_->model().analysis;
+    loading_ = true;
+    an_kind_->setCurrentIndex(an_kind_->findData(static_cast<int>(a.kind)));
+    an_steps_->setValue(a.steps);
+    display(an_dt_, a.time_step);
+    display(an_ratio_, a.max_displacement_ratio);
+    display(an_penalty_, a.penalty / 1e6);
+    an_output_->setValue(a.output_every);
+    an_plasticity_->setChecked(a.plasticity);
+    loading_ = false;
+}
+
+void PropertyEditor::loadInitialStress()
+{
+    const InitialStress& s = document_->model().initial_stress;
+    loading_ = true;
+    is_kind_->setCurrentIndex(is_kind_->findData(static_cast<int>(s.kind)));
+    display(is_sxx_, -s.stress[0] / 1e3);  // shown compression positive
+    display(is_syy_, -s.stress[1] / 1e3);
+    display(is_sxy_, -s.stress[2] / 1e3);
+    is_szz_given_->setChecked(s.stress_zz.has_value());
+    display(is_szz_, s.stress_zz ? -*s.stress_zz / 1e3 : 0.0);
+    display(is_surface_, s.surface_y);
+    display(is_k0_, s.k0);
+    updateStressFields();
+    loading_ = false;
+}
+
+// --- applying ----------------------------------------------------------------------------
+
+int PropertyEditor::materialIndex() const { return material_box_->currentIndex(); }
+void PropertyEditor::setMaterialIndex(int index) { material_box_->setCurrentIndex(index); }
+int PropertyEditor::jointMaterialIndex() const { return joint_box_->currentIndex(); }
+void PropertyEditor::setJointMaterialIndex(int index) { joint_box_->setCurrentIndex(index); }
+QString PropertyEditor::materialStatus() const { return mat_status_->text(); }
+QString PropertyEditor::jointMaterialStatus() const { return jm_status_->text(); }
+QString PropertyEditor::analysisStatus() const { return an_status_->text(); }
+QString PropertyEditor::initialStressStatus() const { return is_status_->text(); }
+
+bool PropertyEditor::applyMaterial()
+{
+    const Model& m = document_->model();
+    const int i = material_box_->currentIndex();
+    if (i < 0 || static_cast<std::size_t>(i) >= m.materials.size()) return false;
+    const Material& old = m.materials[static_cast<std::size_t>(i)];
+    Material x = old;
+    x.name = mat_name_->text().toStdString();
+    x.young_modulus = si(mat_e_, old.young_modulus, 1e6);
+    x.poisson_ratio = si(mat_nu_, old.poisson_ratio, 1.0);
+    x.density = si(mat_gamma_, old.density, 1e3 / standard_gravity);
+    x.cohesion = si(mat_c_, old.cohesion, 1e3);
+    x.friction_angle = si(mat_phi_, old.friction_angle, deg);
+    x.dilation_angle = si(mat_psi_, old.dilation_angle, deg);
+    x.tensile_strength = si(mat_t_, old.tensile_strength, 1e3);
+    x.plastic = mat_plastic_->isChecked();
+    if (same(x, old)) return true;
+    Model candidate = m;
+    candidate.materials[static_cast<std::size_t>(i)] = x;
+    const QString reason = refusal(candidate, "/materials/" + std::to_string(i));
+    if (!reason.isEmpty()) {
+        setStatus(mat_status_, tr("Not applied: %1").arg(reason), true);
+        return false;
+    }
+    document_->setMaterial(i, x);  // → changed() → refresh()
+    setStatus(mat_status_, tr("Applied."), false);
+    return true;
+}
+
+bool PropertyEditor::applyJointMaterial()
+{
+    const Model& m = document_->model();
+    const int i = joint_box_->currentIndex();
+    if (i < 0 || static_cast<std::size_t>(i) >= m.joint_materials.size()) return false;
+    const JointMaterial& old = m.joint_materials[static_cast<std::size_t>(i)];
+    JointMaterial x = old;
+    x.name = jm_name_->text().toStdString();
+    x.friction_angle = si(jm_phi_, old.friction_angle, deg);
+    x.cohesion = si(jm_c_, old.cohesion, 1e3);
+    x.tensile_strength = si(jm_t_, old.tensile_strength, 1e3);
+    x.normal_stiffness = si(jm_kn_, old.normal_stiffness, 1e6);
+    x.shear_stiffness = si(jm_ks_, old.shear_stiffness, 1e6);
+    if (same(x, old)) return true;
+    Model candidate = m;
+    candidate.joint_materials[static_cast<std::size_t>(i)] = x;
+    const QString reason = refusal(candidate, "/joint_materials/" + std::to_string(i));
+    if (!reason.isEmpty()) {
+        setStatus(jm_status_, tr("Not applied: %1").arg(reason), true);
+        return false;
+    }
+    document_->setJointMaterial(i, x);
+    setStatus(jm_status_, tr("Applied."), false);
+    return true;
+}
+
+bool PropertyEditor::applyAnalysis()
+{
+    const Model& m = document_->model();
+    const AnalysisSettings& old = m.analysis;
+    AnalysisSettings a = old;
+    a.kind = static_cast<AnalysisSettings::Kind>(an_kind_->currentData().toInt());
+    a.steps = an_steps_->value();
+    a.time_step = si(an_dt_, old.time_step, 1.0);
+    a.max_displacement_ratio = si(an_ratio_, old.max_displacement_ratio, 1.0);
+    a.penalty = si(an_penalty_, old.penalty, 1e6);
+    a.output_every = an_output_->value();
+    a.plasticity = an_plasticity_->isChecked();
+    if (same(a, old)) return true;
+    Model candidate = m;
+    candidate.analysis = a;
+    const QString reason = refusal(candidate, "/analysis");
+    if (!reason.isEmpty()) {
+        setStatus(an_status_, tr("Not applied: %1").arg(reason), true);
+        return false;
+    }
+    document_->setAnalysisSettings(a);
+    setStatus(an_status_, tr("Applied."), false);
+    return true;
+}
+
+bool PropertyEditor::applyInitialStress()
+{
+    const Model& m = document_->model();
+    const InitialStress& old = m.initial_stress;
+    InitialStress s = old;
+    s.kind = static_cast<InitialStress::Kind>(is_kind_->currentData().toInt());
+    s.stress = {si(is_sxx_, old.stress[0], -1e3), si(is_syy_, old.stress[1], -1e3), si(is_sxy_, old.stress[2], -1e3)};
+    if (is_szz_given_->isChecked())
+        s.stress_zz = si(is_szz_, old.stress_zz.value_or(0.0), -1e3);
+    else
+        s.stress_zz.reset();
+    s.surface_y = si(is_surface_, old.surface_y, 1.0);
+    s.k0 = si(is_k0_, old.k0, 1.0);
+    if (same(s, old)) return true;
+    Model candidate = m;
+    candidate.initial_stress = s;
+    const QString reason = refusal(candidate, "/initial_stress");
+    if (!reason.isEmpty()) {
+        setStatus(is_status_, tr("Not applied: %1").arg(reason), true);
+        return false;
+    }
+    document_->setInitialStress(s);
+    setStatus(is_status_, tr("Applied."), false);
+    return true;
+}
+
+}  // namespace mcdda::gui

@@ -1,0 +1,121 @@
+#pragma once
+/// \file PropertyEditor.hpp
+/// The Properties dock: forms for the materials, the joint materials, the analysis settings
+/// and the in-situ stress of the document's model. Values are shown in the units of the model
+/// file (MPa, kPa, kN/m³, degrees; in-situ stress compression positive) with the unit next to
+/// every field. Apply (or Enter in a field) converts them to SI, checks the changed model with
+/// validate_model() and either refuses — the first error about the edited item is shown in the
+/// form's status line and the model stays as it was — or applies the change as one undoable
+/// command.
+
+#include "model/Model.hpp"
+
+#include <QString>
+#include <QWidget>
+
+#include <string>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSpinBox;
+class QTabWidget;
+
+namespace mcdda::gui {
+
+class ModelDocument;
+
+class PropertyEditor : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit PropertyEditor(ModelDocument* document, QWidget* parent = nullptr);
+
+    /// The first error that validate_model() reports for `candidate` at `prefix` (a JSON
+    /// pointer such as "/materials/0") or below it, as "message (pointer)"; empty when there
+    /// is none.
+    static QString refusal(const Model& candidate, const std::string& prefix);
+
+    /// The material / joint material the forms show (an index into the model's lists).
+    int materialIndex() const;
+    void setMaterialIndex(int index);
+    int jointMaterialIndex() const;
+    void setJointMaterialIndex(int index);
+
+    /// The status lines under the forms: the reason of a refusal, or what was applied.
+    QString materialStatus() const;
+    QString jointMaterialStatus() const;
+    QString analysisStatus() const;
+    QString initialStressStatus() const;
+
+public slots:
+    /// Apply the form: true when the change was applied (or there was nothing to change).
+    bool applyMaterial();
+    bool applyJointMaterial();
+    bool applyAnalysis();
+    bool applyInitialStress();
+    /// Shows the document's model in the forms again (after an edit, undo, open).
+    void refresh();
+
+private:
+    QWidget* createMaterialForm();
+    QWidget* createJointMaterialForm();
+    QWidget* createAnalysisForm();
+    QWidget* createInitialStressForm();
+    void loadMaterial();
+    void loadJointMaterial();
+    void loadAnalysis();
+    void loadInitialStress();
+    void updateStressFields();
+    /// Shows `text` in `label`, red when it is a refusal.
+    static void setStatus(QLabel* label, const QString& text, bool error);
+
+    ModelDocument* document_;
+    bool loading_ = false;
+    QTabWidget* tabs_ = nullptr;
+
+    QComboBox* material_box_ = nullptr;
+    QLineEdit* mat_name_ = nullptr;
+    QDoubleSpinBox* mat_e_ = nullptr;
+    QDoubleSpinBox* mat_nu_ = nullptr;
+    QDoubleSpinBox* mat_gamma_ = nullptr;
+    QDoubleSpinBox* mat_c_ = nullptr;
+    QDoubleSpinBox* mat_phi_ = nullptr;
+    QDoubleSpinBox* mat_psi_ = nullptr;
+    QDoubleSpinBox* mat_t_ = nullptr;
+    QCheckBox* mat_plastic_ = nullptr;
+    QLabel* mat_status_ = nullptr;
+
+    QComboBox* joint_box_ = nullptr;
+    QLineEdit* jm_name_ = nullptr;
+    QDoubleSpinBox* jm_phi_ = nullptr;
+    QDoubleSpinBox* jm_c_ = nullptr;
+    QDoubleSpinBox* jm_t_ = nullptr;
+    QDoubleSpinBox* jm_kn_ = nullptr;
+    QDoubleSpinBox* jm_ks_ = nullptr;
+    QLabel* jm_status_ = nullptr;
+
+    QComboBox* an_kind_ = nullptr;
+    QSpinBox* an_steps_ = nullptr;
+    QDoubleSpinBox* an_dt_ = nullptr;
+    QDoubleSpinBox* an_ratio_ = nullptr;
+    QDoubleSpinBox* an_penalty_ = nullptr;
+    QSpinBox* an_output_ = nullptr;
+    QCheckBox* an_plasticity_ = nullptr;
+    QLabel* an_status_ = nullptr;
+
+    QComboBox* is_kind_ = nullptr;
+    QDoubleSpinBox* is_sxx_ = nullptr;
+    QDoubleSpinBox* is_syy_ = nullptr;
+    QDoubleSpinBox* is_sxy_ = nullptr;
+    QCheckBox* is_szz_given_ = nullptr;
+    QDoubleSpinBox* is_szz_ = nullptr;
+    QDoubleSpinBox* is_surface_ = nullptr;
+    QDoubleSpinBox* is_k0_ = nullptr;
+    QLabel* is_status_ = nullptr;
+};
+
+}  // namespace mcdda::gui

@@ -1,0 +1,331 @@
+// The Properties dock and the support/load/measurement tools on a (virtual) X server: refused
+// and applied edits with undo, tools placing items with simulated clicks, and the picture
+// following edits that are pre-processed off the GUI thread.
+
+#include "MainWindow.hpp"
+#include "document/ModelDocument.hpp"
+#include "panels/PropertyEditor.hpp"
+#include "view/Palette.hpp"
+#include "widgets/ModelView.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTimer>
+#include <QUndoStack>
+#include <QtTest>
+
+#include <cmath>
+#include <memory>
+
+using namespace mcdda;
+using mcdda::gui::MainWindow;
+using mcdda::gui::ModelView;
+using mcdda::gui::PropertyEditor;
+
+namespace {
+
+QPoint pixel_of(const ModelView& view, double x, double y) { return view.toWidget(QPointF(x, y)).toPoint(); }
+
+bool near(QColor c, const view::Rgb& rgb)
+{
+    return std::abs(c.redF() - rgb[0]) < 0.06 && std::abs(c.greenF() - rgb[1]) < 0.06 &&
+           std::abs(c.blueF() - rgb[2]) < 0.06;
+}
+
+/// Pixels of `colour` in the 15 × 15 device pixels around the model point (x, y).
+int count_around(ModelView& view, double x, double y, const view::Rgb& colour)
+{
+    const QImage frame = view.grabFrame();
+    const QPointF centre = view.toWidget(QPointF(x, y)) * view.devicePixelRatioF();
+    int n = 0;
+    for (int dy = -7; dy <= 7; ++dy)
+        for (int dx = -7; dx <= 7; ++dx) {
+            const QPoint p(qRound(centre.x()) + dx, qRound(centre.y()) + dy);
+            if (frame.rect().contains(p) && near(frame.pixelColor(p), colour)) ++n;
+        }
+    return n;
+}
+
+/// A window with File ▸ New, a 10 m square and a roller along its base, pre-processed.
+std::unique_ptr<MainWindow> square_window()
+{
+    auto window = std::make_unique<MainWindow>();
+    window->setAskToSave(false);
+    window->resize(1100, 750);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get())) return nullptr;
+    window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    gui::ModelDocument* doc = window->document();
+    doc->addRegion({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 0);
+    Roller base;
+    base.name = "base";
+    base.from = {0, 0};
+    base.to = {10, 0};
+    base.fix_x = base.fix_y = true;
+    doc->addRoller(base);
+    return window;
+}
+
+bool settled(const MainWindow& w)
+{
+    return !w.isPreprocessing() && w.modelView()->scene() && w.modelView()->scene()->ok;
+}
+
+}  // namespace
+
+class PropertyEditorTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void refusesImpossibleValues();
+    void appliesCohesionWithUndo();
+    void appliesJointMaterialAndInSituStress();
+    void toolsPlaceRollerAndMeasurementPoint();
+    void otherToolsPlaceItems();
+    void viewFollowsEditsOffTheGuiThread();
+};
+
+void PropertyEditorTest::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    if (QGuiApplication::platformName() != QLatin1String("xcb"))
+        QSKIP("the VTK view needs the xcb platform (run under xvfb-run)");
+}
+
+void PropertyEditorTest::refusesImpossibleValues()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    QTRY_VERIFY2(settled(*window), qPrintable(window->messages()));
+    gui::ModelDocument* doc = window->document();
+    const Material before = doc->model().materials[0];
+    const int commands = doc->undoStack()->count();
+    PropertyEditor* editor = window->propertyEditor();
+    QVERIFY(editor);
+    auto* nu = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialNu"));
+    auto* apply = editor->findChild<QPushButton*>(QStringLiteral("materialApply"));
+    QVERIFY(nu && apply);
+
+    nu->setValue(0.5);
+    apply->click();
+    QVERIFY2(editor->materialStatus().contains(QStringLiteral("Poisson")), qPrintable(editor->materialStatus()));
+    QCOMPARE(doc->model().materials[0].poisson_ratio, before.poisson_ratio);
+    QCOMPARE(doc->undoStack()->count(), commands);
+
+    nu->setValue(before.poisson_ratio);
+    auto* phi = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialPhi"));
+    QVERIFY(phi->suffix().contains(QStringLiteral("°")));
+    phi->setValue(90.0);
+    QVERIFY(!editor->applyMaterial());
+    QVERIFY2(editor->materialStatus().contains(QStringLiteral("friction")), qPrintable(editor->materialStatus()));
+    QCOMPARE(doc->model().materials[0].friction_angle, before.friction_angle);
+
+    phi->setValue(35.0);
+    auto* e = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialE"));
+    QVERIFY(e->suffix().contains(QStringLiteral("MPa")));
+    e->setValue(0.0);
+    QVERIFY(!editor->applyMaterial());
+    QVERIFY2(editor->materialStatus().contains(QStringLiteral("Young")), qPrintable(editor->materialStatus()));
+    QCOMPARE(doc->model().materials[0].young_modulus, before.young_modulus);
+    QCOMPARE(doc->undoStack()->count(), commands);
+}
+
+void PropertyEditorTest::appliesCohesionWithUndo()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    gui::ModelDocument* doc = window->document();
+    PropertyEditor* editor = window->propertyEditor();
+    const double old_cohesion = doc->model().materials[0].cohesion;
+    const double old_e = doc->model().materials[0].young_modulus;
+    const double old_density = doc->model().materials[0].density;
+    auto* c = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialCohesion"));
+    QVERIFY(c);
+    QVERIFY(c->suffix().contains(QStringLiteral("kPa")));
+    QCOMPARE(c->value(), old_cohesion / 1e3);
+    c->setValue(200.0);
+    editor->findChild<QPushButton*>(QStringLiteral("materialApply"))->click();
+    QCOMPARE(doc->model().materials[0].cohesion, 2e5);
+    QCOMPARE(doc->model().materials[0].young_modulus, old_e);   // untouched fields stay exact
+    QCOMPARE(doc->model().materials[0].density, old_density);
+    QVERIFY(editor->materialStatus().contains(QStringLiteral("Applied")));
+    QAction* undo = window->findChild<QAction*>(QStringLiteral("undoAction"));
+    QVERIFY(undo->text().contains(QStringLiteral("material")));
+    undo->trigger();
+    QCOMPARE(doc->model().materials[0].cohesion, old_cohesion);
+    QCOMPARE(c->value(), old_cohesion / 1e3);  // the form follows the undo
+    window->findChild<QAction*>(QStringLiteral("redoAction"))->trigger();
+    QCOMPARE(doc->model().materials[0].cohesion, 2e5);
+    QTRY_VERIFY(settled(*window));
+}
+
+void PropertyEditorTest::appliesJointMaterialAndInSituStress()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    gui::ModelDocument* doc = window->document();
+    PropertyEditor* editor = window->propertyEditor();
+    auto* cj = editor->findChild<QDoubleSpinBox*>(QStringLiteral("jointCohesion"));
+    QVERIFY(cj);
+    cj->setValue(50.0);
+    QVERIFY(editor->applyJointMaterial());
+    QCOMPARE(doc->model().joint_materials[0].cohesion, 5e4);
+    auto* phij = editor->findChild<QDoubleSpinBox*>(QStringLiteral("jointPhi"));
+    phij->setValue(95.0);
+    QVERIFY(!editor->applyJointMaterial());
+    QVERIFY(!editor->jointMaterialStatus().isEmpty());
+
+    auto* kind = editor->findChild<QComboBox*>(QStringLiteral("stressKind"));
+    kind->setCurrentIndex(kind->findData(static_cast<int>(InitialStress::Kind::Uniform)));
+    editor->findChild<QDoubleSpinBox*>(QStringLiteral("stressXX"))->setValue(1000.0);  // kPa, compression
+    editor->findChild<QDoubleSpinBox*>(QStringLiteral("stressYY"))->setValue(2000.0);
+    QVERIFY(editor->applyInitialStress());
+    const InitialStress& s = doc->model().initial_stress;
+    QCOMPARE(s.kind, InitialStress::Kind::Uniform);
+    QCOMPARE(s.stress[0], -1e6);  // stored tension positive
+    QCOMPARE(s.stress[1], -2e6);
+    QVERIFY(!s.stress_zz.has_value());
+    doc->undoStack()->undo();
+    QCOMPARE(doc->model().initial_stress.kind, InitialStress::Kind::None);
+
+    auto* steps = editor->findChild<QSpinBox*>(QStringLiteral("analysisSteps"));
+    steps->setValue(0);
+    QVERIFY(!editor->applyAnalysis());
+    QVERIFY(editor->analysisStatus().contains(QStringLiteral("step")));
+    steps->setValue(42);
+    QVERIFY(editor->applyAnalysis());
+    QCOMPARE(doc->model().analysis.steps, 42);
+    QTRY_VERIFY(settled(*window));
+}
+
+void PropertyEditorTest::toolsPlaceRollerAndMeasurementPoint()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    QTRY_VERIFY2(settled(*window), qPrintable(window->messages()));
+    gui::ModelDocument* doc = window->document();
+    ModelView* view = window->modelView();
+    view->showBox(-2, -2, 12, 12);
+
+    auto* fix = window->findChild<QComboBox*>(QStringLiteral("rollerFixBox"));
+    QVERIFY(fix);
+    fix->setCurrentIndex(fix->findData(QStringLiteral("x")));
+    window->findChild<QAction*>(QStringLiteral("rollerAction"))->trigger();
+    QVERIFY(window->activeTool());
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 10.1, 0.1));
+    QCOMPARE(doc->model().rollers.size(), std::size_t(1));  // one click is not a roller yet
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 9.9, 9.95));
+    QCOMPARE(doc->model().rollers.size(), std::size_t(2));
+    const Roller& r = doc->model().rollers[1];
+    QCOMPARE(r.from.x, 10.0);
+    QCOMPARE(r.from.y, 0.0);
+    QCOMPARE(r.to.x, 10.0);
+    QCOMPARE(r.to.y, 10.0);
+    QVERIFY(r.fix_x);
+    QVERIFY(!r.fix_y);
+    QCOMPARE(r.name, std::string("roller 2"));
+
+    QTRY_VERIFY(settled(*window));
+    QCOMPARE(count_around(*view, 5, 5, view::palette::measurement), 0);
+    window->findChild<QAction*>(QStringLiteral("measurementPointAction"))->trigger();
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 5.05, 4.95));
+    QCOMPARE(doc->model().measurement_points.size(), std::size_t(1));
+    QCOMPARE(doc->model().measurement_points[0].name, std::string("point 1"));
+    QCOMPARE(doc->model().measurement_points[0].point.x, 5.0);
+    QCOMPARE(doc->model().measurement_points[0].point.y, 5.0);
+    QTRY_VERIFY2(count_around(*view, 5, 5, view::palette::measurement) > 0, "the measurement point is drawn");
+
+    QAction* undo = window->findChild<QAction*>(QStringLiteral("undoAction"));
+    QVERIFY(undo->text().contains(QStringLiteral("measurement")));
+    undo->trigger();
+    QVERIFY(doc->model().measurement_points.empty());
+    undo->trigger();
+    QCOMPARE(doc->model().rollers.size(), std::size_t(1));
+    QTRY_VERIFY(settled(*window) && count_around(*view, 5, 5, view::palette::measurement) == 0);
+}
+
+void PropertyEditorTest::otherToolsPlaceItems()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    gui::ModelDocument* doc = window->document();
+    ModelView* view = window->modelView();
+    view->showBox(-2, -2, 12, 12);
+
+    window->findChild<QAction*>(QStringLiteral("fixedPointAction"))->trigger();
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 0.05, 0.05));
+    QCOMPARE(doc->model().fixed_points.size(), std::size_t(1));
+    QCOMPARE(doc->model().fixed_points[0].point.x, 0.0);
+
+    window->findChild<QAction*>(QStringLiteral("pointLoadAction"))->trigger();
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 5, 10));
+    QCOMPARE(doc->model().point_loads.size(), std::size_t(1));
+    QCOMPARE(doc->model().point_loads[0].force.x, 0.0);
+    QCOMPARE(doc->model().point_loads[0].force.y, -1e3);  // default −1 kN/m
+
+    window->findChild<QAction*>(QStringLiteral("edgePressureAction"))->trigger();
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 0, 10));
+    QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 10, 10));
+    QCOMPARE(doc->model().edge_pressures.size(), std::size_t(1));
+    QCOMPARE(doc->model().edge_pressures[0].pressure, 1e5);  // default 100 kPa
+    QCOMPARE(doc->model().edge_pressures[0].to.x, 10.0);
+
+    for (int i = 0; i < 3; ++i) doc->undoStack()->undo();
+    QVERIFY(doc->model().fixed_points.empty());
+    QVERIFY(doc->model().point_loads.empty());
+    QVERIFY(doc->model().edge_pressures.empty());
+    QTRY_VERIFY(settled(*window));
+}
+
+void PropertyEditorTest::viewFollowsEditsOffTheGuiThread()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    QTRY_VERIFY2(settled(*window), qPrintable(window->messages()));
+    QVERIFY(window->statisticsText().contains(QStringLiteral("elements")));
+    gui::ModelDocument* doc = window->document();
+    const auto before = window->modelView()->scene();
+
+    // An edit returns at once; the previous picture stays until the new one is ready.
+    auto* c = window->propertyEditor()->findChild<QDoubleSpinBox*>(QStringLiteral("materialCohesion"));
+    c->setValue(200.0);
+    QVERIFY(window->propertyEditor()->applyMaterial());
+    QVERIFY(window->isPreprocessing());
+    QCOMPARE(window->modelView()->scene(), before);
+    QAction* run = window->findChild<QAction*>(QStringLiteral("runAction"));
+    QVERIFY2(!run->isEnabled(), "no run of the stale picture");
+
+    // A newer edit supersedes the one being computed; only its result is shown.
+    c->setValue(300.0);
+    QVERIFY(window->propertyEditor()->applyMaterial());
+
+    // The event loop keeps running meanwhile.
+    int ticks = 0;
+    QTimer timer;
+    connect(&timer, &QTimer::timeout, [&] { ++ticks; });
+    timer.start(1);
+    QTRY_VERIFY(!window->isPreprocessing());
+    QVERIFY(ticks > 0);
+    const auto after = window->modelView()->scene();
+    QVERIFY(after != before);
+    QCOMPARE(after->model.materials[0].cohesion, 3e5);
+    QVERIFY(window->statisticsText().contains(QStringLiteral("elements")));
+    QCOMPARE(doc->model().materials[0].cohesion, 3e5);
+    QVERIFY(run->isEnabled());
+
+    // Removing the region empties the picture (pixel check) after the background work.
+    const view::Rgb rock = view::material_color(0);
+    window->modelView()->showBox(-2, -2, 12, 12);
+    QTRY_VERIFY(count_around(*window->modelView(), 5, 7, rock) > 100);
+    while (!doc->model().regions.empty()) doc->undoStack()->undo();
+    QTRY_VERIFY(count_around(*window->modelView(), 5, 7, view::palette::background) > 100);
+    QTRY_VERIFY(!window->isPreprocessing());
+}
+
+QTEST_MAIN(PropertyEditorTest)
+#include "PropertyEditorTest.moc"
