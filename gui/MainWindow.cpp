@@ -1,6 +1,7 @@
 #include "MainWindow.hpp"
 
 #include "Version.hpp"
+#include "dialogs/JointSetDialog.hpp"
 #include "document/ModelDocument.hpp"
 #include "panels/PropertyEditor.hpp"
 #include "tools/DrawTool.hpp"
@@ -28,6 +29,11 @@
 #include <QMimeData>
 #include <QActionGroup>
 #include <QHeaderView>
+#include <QCheckBox>
+#include <QGuiApplication>
+#include <QLineEdit>
+#include <QRegularExpression>
+#include <QIcon>
 #include <QSettings>
 #include <QTreeWidget>
 #include <QUndoStack>
@@ -70,9 +76,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     document_ = new ModelDocument(this);
     preprocess_ = new QFutureWatcher<std::shared_ptr<Preprocessed>>(this);
     connect(preprocess_, &QFutureWatcherBase::finished, this, &MainWindow::onPreprocessed);
-    region_tool_ = makeTool(int(DrawTool::Shape::Polygon), [this](const std::vector<Point2>& points) {
-        document_->addRegion(points, document_->model().materials.empty() ? -1 : 0);
-    });
+    region_tool_ = makeTool(int(DrawTool::Shape::Polygon),
+                            [this](const std::vector<Point2>& points) { applyRegion(points); });
     joint_tool_ = makeTool(int(DrawTool::Shape::Polyline), [this](const std::vector<Point2>& points) {
         document_->addJoint(points);
     });
@@ -107,6 +112,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         MeasurementPoint q;
         q.point = points.front();
         document_->addMeasurementPoint(q);
+    });
+    connect(region_tool_, &DrawTool::started, this, [this] {
+        hole_shift_ = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
     });
     createDock();
     createModelDock();
@@ -161,6 +169,7 @@ void MainWindow::createActions()
     new_action->setStatusTip(tr("Start an empty model"));
     QAction* open = file->addAction(tr("&Open..."), this, &MainWindow::openDialog);
     open->setShortcut(QKeySequence::Open);
+    open->setIcon(QIcon(QStringLiteral(":/icons/open.svg")));
     open->setStatusTip(tr("Open a model file (*.json)"));
     reload_action_ = file->addAction(tr("&Reload"), this, &MainWindow::reload);
     reload_action_->setShortcut(QKeySequence::Refresh);
@@ -173,6 +182,7 @@ void MainWindow::createActions()
     QAction* save_action = file->addAction(tr("&Save"), this, &MainWindow::save);
     save_action->setObjectName(QStringLiteral("saveAction"));
     save_action->setShortcut(QKeySequence::Save);
+    save_action->setIcon(QIcon(QStringLiteral(":/icons/save.svg")));
     save_action->setStatusTip(tr("Write the model to its file"));
     QAction* save_as = file->addAction(tr("Save &As..."), this, &MainWindow::saveAsDialog);
     save_as->setObjectName(QStringLiteral("saveAsAction"));
@@ -187,6 +197,7 @@ void MainWindow::createActions()
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* fit = view->addAction(tr("&Fit"), view_, &ModelView::fitView);
     fit->setShortcut(QKeySequence(Qt::Key_F));
+    fit->setIcon(QIcon(QStringLiteral(":/icons/fit-view.svg")));
     fit->setStatusTip(tr("Show the whole model"));
     view->addSeparator();
     auto toggle = [&](const QString& text, const QString& tip) {
@@ -235,9 +246,11 @@ void MainWindow::createEditActions()
     QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("undoAction"));
     undo->setShortcut(QKeySequence::Undo);
+    undo->setIcon(QIcon(QStringLiteral(":/icons/undo.svg")));
     QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("redoAction"));
     redo->setShortcut(QKeySequence::Redo);
+    redo->setIcon(QIcon(QStringLiteral(":/icons/redo.svg")));
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -245,8 +258,10 @@ void MainWindow::createEditActions()
     QToolBar* bar = addToolBar(tr("Tools"));
     bar->setObjectName(QStringLiteral("tools"));
     auto* group = new QActionGroup(this);
-    auto tool = [&](const QString& text, const QString& name, const QString& tip, void (MainWindow::*slot)()) {
+    auto tool = [&](const QString& text, const QString& name, const QString& icon, const QString& tip,
+                    void (MainWindow::*slot)()) {
         QAction* action = edit->addAction(text, this, slot);
+        action->setIcon(QIcon(QStringLiteral(":/icons/") + icon + QStringLiteral(".svg")));
         action->setObjectName(name);
         action->setCheckable(true);
         action->setStatusTip(tip);
@@ -254,28 +269,32 @@ void MainWindow::createEditActions()
         bar->addAction(action);
         return action;
     };
-    select_action_ = tool(tr("&Select"), QStringLiteral("selectToolAction"),
+    select_action_ = tool(tr("&Select"), QStringLiteral("selectToolAction"), QStringLiteral("select"),
                           tr("Navigate: drag to pan, turn the wheel to zoom"), &MainWindow::selectTool);
-    region_action_ = tool(tr("Draw &Region"), QStringLiteral("drawRegionAction"),
+    region_action_ = tool(tr("Draw &Region"), QStringLiteral("drawRegionAction"), QStringLiteral("draw-region"),
                           tr("Click the corners of a new region; double-click or Enter closes it, Escape cancels"),
                           &MainWindow::drawRegionTool);
-    joint_action_ = tool(tr("Draw &Joint"), QStringLiteral("drawJointAction"),
+    joint_action_ = tool(tr("Draw &Joint"), QStringLiteral("drawJointAction"), QStringLiteral("draw-joint"),
                          tr("Click the points of a new joint; double-click or Enter finishes it, Escape cancels"),
                          &MainWindow::drawJointTool);
     bar->addSeparator();
-    QAction* fixed = tool(tr("&Fixed Point"), QStringLiteral("fixedPointAction"),
+    QAction* fixed = tool(tr("&Fixed Point"), QStringLiteral("fixedPointAction"), QStringLiteral("fixed-point"),
                           tr("Click where the mesh is held in both directions"), &MainWindow::fixedPointTool);
-    QAction* roller = tool(tr("R&oller"), QStringLiteral("rollerAction"),
+    QAction* roller = tool(tr("R&oller"), QStringLiteral("rollerAction"), QStringLiteral("roller"),
                            tr("Click the two ends of a roller; the fixed directions are chosen in Tool Options"),
                            &MainWindow::rollerTool);
-    QAction* load = tool(tr("Point &Load"), QStringLiteral("pointLoadAction"),
+    QAction* load = tool(tr("Point &Load"), QStringLiteral("pointLoadAction"), QStringLiteral("point-load"),
                          tr("Click where a point load acts; its force is set in Tool Options"),
                          &MainWindow::pointLoadTool);
-    QAction* pressure = tool(tr("Edge &Pressure"), QStringLiteral("edgePressureAction"),
+    QAction* pressure = tool(tr("Edge &Pressure"), QStringLiteral("edgePressureAction"), QStringLiteral("edge-pressure"),
                              tr("Click the two ends of a loaded edge; the pressure is set in Tool Options"),
                              &MainWindow::edgePressureTool);
-    QAction* point = tool(tr("&Measurement Point"), QStringLiteral("measurementPointAction"),
+    QAction* point = tool(tr("&Measurement Point"), QStringLiteral("measurementPointAction"), QStringLiteral("measurement-point"),
                           tr("Click where displacements are recorded"), &MainWindow::measurementPointTool);
+    edit->addSeparator();
+    QAction* joint_set = edit->addAction(tr("Add Joint Se&t..."), this, &MainWindow::addJointSetDialog);
+    joint_set->setObjectName(QStringLiteral("addJointSetAction"));
+    joint_set->setStatusTip(tr("Add a family of parallel joints"));
     tool_actions_ = {{region_tool_, region_action_}, {joint_tool_, joint_action_}, {fixed_tool_, fixed},
                      {roller_tool_, roller}, {load_tool_, load}, {pressure_tool_, pressure}, {point_tool_, point}};
     select_action_->setChecked(true);
@@ -318,6 +337,65 @@ void MainWindow::createToolOptions()
     label(tr("Pressure"));
     pressure_box_ = spin(QStringLiteral("pressureBox"), tr("kPa"), 100.0,
                          tr("Pressure of a new edge load (positive pushes into the material)"));
+    bar->addSeparator();
+    hole_box_ = new QCheckBox(tr("Hole"), this);
+    hole_box_->setObjectName(QStringLiteral("holeBox"));
+    hole_box_->setToolTip(tr("Draw Region cuts an opening into the region around it (or hold Shift at the first click)"));
+    bar->addWidget(hole_box_);
+    bar->addSeparator();
+    label(tr("Point"));
+    coordinate_edit_ = new QLineEdit(this);
+    coordinate_edit_->setObjectName(QStringLiteral("coordinateEdit"));
+    coordinate_edit_->setPlaceholderText(tr("x, y"));
+    coordinate_edit_->setToolTip(tr("Type a point as \"x, y\" (m) and press Enter to place it; Enter on an empty field finishes the shape"));
+    coordinate_edit_->setMaximumWidth(140);
+    coordinate_edit_->setEnabled(false);
+    connect(coordinate_edit_, &QLineEdit::returnPressed, this, [this] {
+        if (enterCoordinates(coordinate_edit_->text())) coordinate_edit_->clear();
+    });
+    bar->addWidget(coordinate_edit_);
+}
+
+void MainWindow::applyRegion(const std::vector<Point2>& points)
+{
+    const bool hole = hole_shift_ || (hole_box_ && hole_box_->isChecked());
+    hole_shift_ = false;
+    if (!hole) {
+        document_->addRegion(points, document_->model().materials.empty() ? -1 : 0);
+        return;
+    }
+    const int region = document_->regionContaining(points);
+    if (region < 0) {
+        log(tr("The hole was not added: no region contains it."));
+        statusBar()->showMessage(tr("No region contains the hole"), 5000);
+        return;
+    }
+    document_->addHole(region, points);
+}
+
+bool MainWindow::enterCoordinates(const QString& text)
+{
+    DrawTool* tool = activeTool();
+    if (!tool) return false;
+    const QString trimmed = text.trimmed();
+    if (trimmed.isEmpty()) return tool->finish();
+    const QStringList parts =
+        trimmed.split(QRegularExpression(QStringLiteral("\\s*[,;]\\s*|\\s+")), Qt::SkipEmptyParts);
+    bool ok_x = false, ok_y = false;
+    const double x = parts.size() == 2 ? parts[0].toDouble(&ok_x) : 0.0;
+    const double y = parts.size() == 2 ? parts[1].toDouble(&ok_y) : 0.0;
+    if (!ok_x || !ok_y || !std::isfinite(x) || !std::isfinite(y)) {
+        statusBar()->showMessage(tr("Type a point as \"x, y\" in metres, e.g. \"2.5, -1\""), 5000);
+        return false;
+    }
+    tool->addPoint({x, y});
+    return true;
+}
+
+void MainWindow::addJointSetDialog()
+{
+    JointSetDialog dialog(document_->model(), this);
+    if (dialog.exec() == QDialog::Accepted) document_->addJointSet(dialog.jointSet());
 }
 
 DrawTool* MainWindow::activeTool() const { return dynamic_cast<DrawTool*>(view_->tool()); }
@@ -329,6 +407,8 @@ void MainWindow::setTool(DrawTool* tool)
     for (const auto& [t, a] : tool_actions_)
         if (t == tool) action = a;
     action->setChecked(true);
+    coordinate_edit_->setEnabled(tool != nullptr);
+    hole_shift_ = false;
     if (tool) {
         view_->clearResult();
         view_->setFocus();
@@ -900,13 +980,16 @@ void MainWindow::createRunActions()
     run_action_ = run->addAction(tr("&Run"), this, &MainWindow::startRun);
     run_action_->setObjectName(QStringLiteral("runAction"));
     run_action_->setShortcut(QKeySequence(Qt::Key_F5));
+    run_action_->setIcon(QIcon(QStringLiteral(":/icons/run.svg")));
     run_action_->setStatusTip(tr("Analyse the model; the picture follows the run"));
     pause_action_ = run->addAction(tr("&Pause"), this, &MainWindow::togglePause);
     pause_action_->setObjectName(QStringLiteral("pauseAction"));
+    pause_action_->setIcon(QIcon(QStringLiteral(":/icons/pause.svg")));
     pause_action_->setStatusTip(tr("Pause or resume the run"));
     stop_action_ = run->addAction(tr("&Stop"), this, &MainWindow::stopRun);
     stop_action_->setObjectName(QStringLiteral("stopAction"));
     stop_action_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    stop_action_->setIcon(QIcon(QStringLiteral(":/icons/stop.svg")));
     stop_action_->setStatusTip(tr("Stop the run after the current step; the results so far are kept"));
     run->addSeparator();
     QAction* folder = run->addAction(tr("Results &Folder..."), this, [this] {

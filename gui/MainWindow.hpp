@@ -31,6 +31,8 @@ class QProgressBar;
 class QThread;
 class QTreeWidget;
 class QActionGroup;
+class QCheckBox;
+class QLineEdit;
 template <typename T>
 class QFutureWatcher;
 
@@ -136,6 +138,12 @@ public slots:
     void pointLoadTool();
     void edgePressureTool();
     void measurementPointTool();
+    /// Edit ▸ Add Joint Set: asks for a joint set and adds it (undoable).
+    void addJointSetDialog();
+    /// The Tool Options' coordinate field: "x, y" (metres) places a vertex there as a click
+    /// does; empty text finishes the shape (as Enter in the view). False when no drawing tool
+    /// is active or the text is not two numbers.
+    bool enterCoordinates(const QString& text);
     /// Run ▸ Run: analyses the shown model on a worker thread. False when there is no usable
     /// model or a run is going on.
     bool startRun();
@@ -180,6 +188,8 @@ private:
     /// Asks whether to save unsaved changes; false when the user cancelled.
     bool maybeSave();
     void setTool(DrawTool* tool);
+    /// A drawn polygon: a new region, or a hole of the region holding it (Hole / Shift).
+    void applyRegion(const std::vector<Point2>& points);
     void applySnap();
     void createDock();
     void createStatusBar();
@@ -258,6 +268,9 @@ private:
     QDoubleSpinBox* load_fx_ = nullptr;
     QDoubleSpinBox* load_fy_ = nullptr;
     QDoubleSpinBox* pressure_box_ = nullptr;
+    QLineEdit* coordinate_edit_ = nullptr;
+    QCheckBox* hole_box_ = nullptr;
+    bool hole_shift_ = false;  ///< Shift was held at the first click of the region being drawn
     PropertyEditor* property_editor_ = nullptr;
     QDockWidget* property_dock_ = nullptr;
     QFutureWatcher<std::shared_ptr<Preprocessed>>* preprocess_ = nullptr;

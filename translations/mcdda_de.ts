@@ -84,6 +84,14 @@
     </message>
 </context>
 <context>
+    <name>mcdda::gui::AddHoleCommand</name>
+    <message>
+        <location filename="../gui/document/Commands.cpp" line="119"/>
+        <source>Add hole to region &quot;%1&quot;</source>
+        <translation>Öffnung in Bereich „%1“ hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>mcdda::gui::AddJointCommand</name>
     <message>
         <location filename="../gui/document/Commands.cpp" line="39"/>
@@ -164,385 +172,533 @@
     </message>
 </context>
 <context>
+    <name>mcdda::gui::JointSetDialog</name>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="22"/>
+        <source>Add Joint Set</source>
+        <translation>Kluftschar hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="33"/>
+        <source>Direction of the traces, counter-clockwise from the x axis</source>
+        <translation>Richtung der Spuren, gegen den Uhrzeigersinn von der x-Achse</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="35"/>
+        <source>Normal distance between neighbouring traces</source>
+        <translation>Normalabstand benachbarter Spuren</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="38"/>
+        <source>Limit to a box</source>
+        <translation>Auf ein Rechteck begrenzen</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="40"/>
+        <source>Without a box the traces cross the whole model</source>
+        <translation>Ohne Rechteck durchqueren die Spuren das ganze Modell</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="49"/>
+        <source>Smallest x of the box</source>
+        <translation>Kleinstes x des Rechtecks</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="50"/>
+        <source>Smallest y of the box</source>
+        <translation>Kleinstes y des Rechtecks</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="51"/>
+        <source>Largest x of the box</source>
+        <translation>Größtes x des Rechtecks</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="52"/>
+        <source>Largest y of the box</source>
+        <translation>Größtes y des Rechtecks</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="55"/>
+        <source>(default)</source>
+        <translation>(Standard)</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="58"/>
+        <source>Joint material %1</source>
+        <translation>Kluftmaterial %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="63"/>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="64"/>
+        <source>Spacing</source>
+        <translation>Abstand</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="65"/>
+        <source>Origin x</source>
+        <translation>Ursprung x</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="66"/>
+        <source>Origin y</source>
+        <translation>Ursprung y</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="68"/>
+        <source>x min, y min, x max, y max</source>
+        <translation>x min, y min, x max, y max</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="69"/>
+        <source>Joint material</source>
+        <translation>Kluftmaterial</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="111"/>
+        <source>The spacing must be positive.</source>
+        <translation>Der Abstand muss positiv sein.</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="114"/>
+        <source>The box needs x min &lt; x max and y min &lt; y max.</source>
+        <translation>Das Rechteck braucht x min &lt; x max und y min &lt; y max.</translation>
+    </message>
+</context>
+<context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="129"/>
+        <location filename="../gui/MainWindow.cpp" line="137"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="157"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="158"/>
+        <location filename="../gui/MainWindow.cpp" line="166"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="161"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="162"/>
+        <location filename="../gui/MainWindow.cpp" line="170"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="164"/>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="174"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="167"/>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="169"/>
+        <location filename="../gui/MainWindow.cpp" line="178"/>
         <source>Recent &amp;Files</source>
         <translation>&amp;Zuletzt geöffnete Dateien</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="173"/>
+        <location filename="../gui/MainWindow.cpp" line="182"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="176"/>
+        <location filename="../gui/MainWindow.cpp" line="186"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="177"/>
+        <location filename="../gui/MainWindow.cpp" line="187"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="180"/>
+        <location filename="../gui/MainWindow.cpp" line="190"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <location filename="../gui/MainWindow.cpp" line="194"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="187"/>
+        <location filename="../gui/MainWindow.cpp" line="197"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="188"/>
+        <location filename="../gui/MainWindow.cpp" line="198"/>
         <source>&amp;Fit</source>
         <translation>&amp;Einpassen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="190"/>
+        <location filename="../gui/MainWindow.cpp" line="201"/>
         <source>Show the whole model</source>
         <translation>Das ganze Modell zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="200"/>
+        <location filename="../gui/MainWindow.cpp" line="211"/>
         <source>&amp;Mesh</source>
         <translation>&amp;Netz</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="200"/>
+        <location filename="../gui/MainWindow.cpp" line="211"/>
         <source>Show the element edges</source>
         <translation>Die Elementkanten zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="201"/>
+        <location filename="../gui/MainWindow.cpp" line="212"/>
         <source>&amp;Joints</source>
         <translation>&amp;Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="201"/>
+        <location filename="../gui/MainWindow.cpp" line="212"/>
         <source>Show the joint traces</source>
         <translation>Die Kluftspuren zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="202"/>
+        <location filename="../gui/MainWindow.cpp" line="213"/>
         <source>&amp;Supports</source>
         <translation>A&amp;uflager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="202"/>
+        <location filename="../gui/MainWindow.cpp" line="213"/>
         <source>Show fixed points and rollers</source>
         <translation>Festpunkte und Rollenlager zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="203"/>
+        <location filename="../gui/MainWindow.cpp" line="214"/>
         <source>&amp;Loads</source>
         <translation>&amp;Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="203"/>
+        <location filename="../gui/MainWindow.cpp" line="214"/>
         <source>Show point loads and edge pressures</source>
         <translation>Punktlasten und Kantendrücke zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="204"/>
+        <location filename="../gui/MainWindow.cpp" line="215"/>
         <source>Measurement &amp;points</source>
         <translation>&amp;Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="204"/>
+        <location filename="../gui/MainWindow.cpp" line="215"/>
         <source>Show the measurement points</source>
         <translation>Die Messpunkte zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="205"/>
+        <location filename="../gui/MainWindow.cpp" line="216"/>
         <source>Le&amp;gend</source>
         <translation>Le&amp;gende</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="205"/>
+        <location filename="../gui/MainWindow.cpp" line="216"/>
         <source>Show the legend</source>
         <translation>Die Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="207"/>
+        <location filename="../gui/MainWindow.cpp" line="218"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster fangen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="211"/>
+        <location filename="../gui/MainWindow.cpp" line="222"/>
         <source>Drawn points snap to a grid (0.5 m) and to nearby region vertices</source>
         <translation>Gezeichnete Punkte rasten auf einem Raster (0,5 m) und an nahen Bereichsecken ein</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="219"/>
+        <location filename="../gui/MainWindow.cpp" line="230"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="220"/>
+        <location filename="../gui/MainWindow.cpp" line="231"/>
         <source>&amp;About mcdda</source>
         <translation>Ü&amp;ber mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="221"/>
+        <location filename="../gui/MainWindow.cpp" line="232"/>
         <source>About mcdda</source>
         <translation>Über mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="222"/>
+        <location filename="../gui/MainWindow.cpp" line="233"/>
         <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
         <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="233"/>
+        <location filename="../gui/MainWindow.cpp" line="244"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="235"/>
+        <location filename="../gui/MainWindow.cpp" line="246"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="238"/>
+        <location filename="../gui/MainWindow.cpp" line="250"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="245"/>
+        <location filename="../gui/MainWindow.cpp" line="258"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="257"/>
+        <location filename="../gui/MainWindow.cpp" line="272"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="258"/>
+        <location filename="../gui/MainWindow.cpp" line="273"/>
         <source>Navigate: drag to pan, turn the wheel to zoom</source>
         <translation>Navigieren: zum Verschieben ziehen, zum Zoomen das Mausrad drehen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="259"/>
+        <location filename="../gui/MainWindow.cpp" line="274"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="260"/>
+        <location filename="../gui/MainWindow.cpp" line="275"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="262"/>
+        <location filename="../gui/MainWindow.cpp" line="277"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="263"/>
+        <location filename="../gui/MainWindow.cpp" line="278"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="266"/>
+        <location filename="../gui/MainWindow.cpp" line="281"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="267"/>
+        <location filename="../gui/MainWindow.cpp" line="282"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="268"/>
+        <location filename="../gui/MainWindow.cpp" line="283"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="269"/>
+        <location filename="../gui/MainWindow.cpp" line="284"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="271"/>
+        <location filename="../gui/MainWindow.cpp" line="286"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="272"/>
+        <location filename="../gui/MainWindow.cpp" line="287"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="274"/>
+        <location filename="../gui/MainWindow.cpp" line="289"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="275"/>
+        <location filename="../gui/MainWindow.cpp" line="290"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="277"/>
+        <location filename="../gui/MainWindow.cpp" line="292"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="278"/>
+        <location filename="../gui/MainWindow.cpp" line="293"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="286"/>
+        <location filename="../gui/MainWindow.cpp" line="295"/>
+        <source>Add Joint Se&amp;t...</source>
+        <translation>Klu&amp;ftschar hinzufügen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="297"/>
+        <source>Add a family of parallel joints</source>
+        <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="305"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="293"/>
+        <location filename="../gui/MainWindow.cpp" line="312"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="296"/>
+        <location filename="../gui/MainWindow.cpp" line="315"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="297"/>
+        <location filename="../gui/MainWindow.cpp" line="316"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="298"/>
+        <location filename="../gui/MainWindow.cpp" line="317"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="299"/>
+        <location filename="../gui/MainWindow.cpp" line="318"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="313"/>
+        <location filename="../gui/MainWindow.cpp" line="332"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="314"/>
-        <location filename="../gui/MainWindow.cpp" line="316"/>
+        <location filename="../gui/MainWindow.cpp" line="333"/>
+        <location filename="../gui/MainWindow.cpp" line="335"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="314"/>
+        <location filename="../gui/MainWindow.cpp" line="333"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="315"/>
+        <location filename="../gui/MainWindow.cpp" line="334"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="316"/>
+        <location filename="../gui/MainWindow.cpp" line="335"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="318"/>
+        <location filename="../gui/MainWindow.cpp" line="337"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="319"/>
+        <location filename="../gui/MainWindow.cpp" line="338"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="320"/>
+        <location filename="../gui/MainWindow.cpp" line="339"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="367"/>
+        <location filename="../gui/MainWindow.cpp" line="341"/>
+        <source>Hole</source>
+        <translation>Öffnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="343"/>
+        <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
+        <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="346"/>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="349"/>
+        <source>x, y</source>
+        <translation>x, y</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="350"/>
+        <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
+        <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="369"/>
+        <source>The hole was not added: no region contains it.</source>
+        <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="370"/>
+        <source>No region contains the hole</source>
+        <translation>Kein Bereich enthält die Öffnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="388"/>
+        <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot;</source>
+        <translation>Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="447"/>
         <source>Item</source>
         <translation>Eintrag</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="367"/>
+        <location filename="../gui/MainWindow.cpp" line="447"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="370"/>
+        <location filename="../gui/MainWindow.cpp" line="450"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="388"/>
+        <location filename="../gui/MainWindow.cpp" line="468"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="393"/>
+        <location filename="../gui/MainWindow.cpp" line="473"/>
         <source>no material</source>
         <translation>kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="394"/>
+        <location filename="../gui/MainWindow.cpp" line="474"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="395"/>
+        <location filename="../gui/MainWindow.cpp" line="475"/>
         <source>%1, %n vertices</source>
         <translation>
             <numerusform>%1, %n Ecke</numerusform>
@@ -550,241 +706,241 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="397"/>
+        <location filename="../gui/MainWindow.cpp" line="477"/>
         <source>Joints</source>
         <translation>Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="398"/>
+        <location filename="../gui/MainWindow.cpp" line="478"/>
         <source>Explicit</source>
         <translation>Einzelklüfte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="401"/>
+        <location filename="../gui/MainWindow.cpp" line="481"/>
         <source>Set %1</source>
         <translation>Kluftschar %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="402"/>
+        <location filename="../gui/MainWindow.cpp" line="482"/>
         <source>spacing %1 m</source>
         <translation>Abstand %1 m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="410"/>
+        <location filename="../gui/MainWindow.cpp" line="490"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="411"/>
+        <location filename="../gui/MainWindow.cpp" line="491"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="415"/>
+        <location filename="../gui/MainWindow.cpp" line="495"/>
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="416"/>
+        <location filename="../gui/MainWindow.cpp" line="496"/>
         <source>rock/soil</source>
         <translation>Fels/Boden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="417"/>
-        <location filename="../gui/MainWindow.cpp" line="504"/>
+        <location filename="../gui/MainWindow.cpp" line="497"/>
+        <location filename="../gui/MainWindow.cpp" line="584"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="418"/>
+        <location filename="../gui/MainWindow.cpp" line="498"/>
         <source>Supports</source>
         <translation>Auflager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="420"/>
+        <location filename="../gui/MainWindow.cpp" line="500"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="422"/>
+        <location filename="../gui/MainWindow.cpp" line="502"/>
         <source>roller %1 to %2</source>
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="423"/>
+        <location filename="../gui/MainWindow.cpp" line="503"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="425"/>
+        <location filename="../gui/MainWindow.cpp" line="505"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="427"/>
+        <location filename="../gui/MainWindow.cpp" line="507"/>
         <source>pressure %1 Pa</source>
         <translation>Kantendruck %1 Pa</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="428"/>
+        <location filename="../gui/MainWindow.cpp" line="508"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="455"/>
+        <location filename="../gui/MainWindow.cpp" line="535"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="471"/>
+        <location filename="../gui/MainWindow.cpp" line="551"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="473"/>
-        <location filename="../gui/MainWindow.cpp" line="596"/>
+        <location filename="../gui/MainWindow.cpp" line="553"/>
+        <location filename="../gui/MainWindow.cpp" line="676"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="474"/>
+        <location filename="../gui/MainWindow.cpp" line="554"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="481"/>
+        <location filename="../gui/MainWindow.cpp" line="561"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="482"/>
+        <location filename="../gui/MainWindow.cpp" line="562"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="495"/>
+        <location filename="../gui/MainWindow.cpp" line="575"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="514"/>
+        <location filename="../gui/MainWindow.cpp" line="594"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <location filename="../gui/MainWindow.cpp" line="605"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <location filename="../gui/MainWindow.cpp" line="605"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="544"/>
-        <location filename="../gui/MainWindow.cpp" line="671"/>
-        <location filename="../gui/MainWindow.cpp" line="702"/>
+        <location filename="../gui/MainWindow.cpp" line="624"/>
+        <location filename="../gui/MainWindow.cpp" line="751"/>
+        <location filename="../gui/MainWindow.cpp" line="782"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="566"/>
+        <location filename="../gui/MainWindow.cpp" line="646"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="605"/>
+        <location filename="../gui/MainWindow.cpp" line="685"/>
         <source>Messages about the model appear here.</source>
         <translation>Meldungen zum Modell erscheinen hier.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="606"/>
+        <location filename="../gui/MainWindow.cpp" line="686"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="616"/>
+        <location filename="../gui/MainWindow.cpp" line="696"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="623"/>
+        <location filename="../gui/MainWindow.cpp" line="703"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="632"/>
+        <location filename="../gui/MainWindow.cpp" line="712"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="633"/>
+        <location filename="../gui/MainWindow.cpp" line="713"/>
         <source>&amp;Picture (PNG)...</source>
         <translation>&amp;Bild (PNG)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="634"/>
+        <location filename="../gui/MainWindow.cpp" line="714"/>
         <source>Export picture</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="635"/>
+        <location filename="../gui/MainWindow.cpp" line="715"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="640"/>
+        <location filename="../gui/MainWindow.cpp" line="720"/>
         <source>Save the picture of the view as a PNG file</source>
         <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="641"/>
+        <location filename="../gui/MainWindow.cpp" line="721"/>
         <source>Saved &amp;Steps (PVD/VTU)...</source>
         <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="642"/>
+        <location filename="../gui/MainWindow.cpp" line="722"/>
         <source>Export saved steps to</source>
         <translation>Gespeicherte Zeitschritte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="646"/>
+        <location filename="../gui/MainWindow.cpp" line="726"/>
         <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
         <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="647"/>
+        <location filename="../gui/MainWindow.cpp" line="727"/>
         <source>&amp;History (CSV)...</source>
         <translation>&amp;Verlauf (CSV)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="648"/>
+        <location filename="../gui/MainWindow.cpp" line="728"/>
         <source>Export history</source>
         <translation>Verlauf exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="649"/>
+        <location filename="../gui/MainWindow.cpp" line="729"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="653"/>
+        <location filename="../gui/MainWindow.cpp" line="733"/>
         <source>Copy the run&apos;s history of loads and measured displacements</source>
         <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="659"/>
+        <location filename="../gui/MainWindow.cpp" line="739"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="678"/>
+        <location filename="../gui/MainWindow.cpp" line="758"/>
         <source>There are no saved steps yet: run the model first.</source>
         <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="687"/>
+        <location filename="../gui/MainWindow.cpp" line="767"/>
         <source>Copied %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 kopiert</numerusform>
@@ -792,159 +948,159 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="694"/>
+        <location filename="../gui/MainWindow.cpp" line="774"/>
         <source>There is no history yet: run the model first.</source>
         <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="755"/>
+        <location filename="../gui/MainWindow.cpp" line="835"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="775"/>
+        <location filename="../gui/MainWindow.cpp" line="855"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="776"/>
+        <location filename="../gui/MainWindow.cpp" line="856"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="793"/>
+        <location filename="../gui/MainWindow.cpp" line="873"/>
         <source>Reading %1...</source>
         <translation>%1 wird gelesen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="836"/>
+        <location filename="../gui/MainWindow.cpp" line="916"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="897"/>
-        <location filename="../gui/MainWindow.cpp" line="900"/>
+        <location filename="../gui/MainWindow.cpp" line="977"/>
+        <location filename="../gui/MainWindow.cpp" line="980"/>
         <source>&amp;Run</source>
         <translation>Be&amp;rechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="898"/>
+        <location filename="../gui/MainWindow.cpp" line="978"/>
         <source>Run</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="903"/>
+        <location filename="../gui/MainWindow.cpp" line="984"/>
         <source>Analyse the model; the picture follows the run</source>
         <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="904"/>
-        <location filename="../gui/MainWindow.cpp" line="958"/>
+        <location filename="../gui/MainWindow.cpp" line="985"/>
+        <location filename="../gui/MainWindow.cpp" line="1041"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="906"/>
+        <location filename="../gui/MainWindow.cpp" line="988"/>
         <source>Pause or resume the run</source>
         <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="907"/>
+        <location filename="../gui/MainWindow.cpp" line="989"/>
         <source>&amp;Stop</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="910"/>
+        <location filename="../gui/MainWindow.cpp" line="993"/>
         <source>Stop the run after the current step; the results so far are kept</source>
         <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="912"/>
+        <location filename="../gui/MainWindow.cpp" line="995"/>
         <source>Results &amp;Folder...</source>
         <translation>Ergebnis&amp;ordner...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="914"/>
+        <location filename="../gui/MainWindow.cpp" line="997"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="917"/>
+        <location filename="../gui/MainWindow.cpp" line="1000"/>
         <source>Choose where runs write their files</source>
         <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="923"/>
+        <location filename="../gui/MainWindow.cpp" line="1006"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="925"/>
+        <location filename="../gui/MainWindow.cpp" line="1008"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="926"/>
+        <location filename="../gui/MainWindow.cpp" line="1009"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="927"/>
+        <location filename="../gui/MainWindow.cpp" line="1010"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="928"/>
+        <location filename="../gui/MainWindow.cpp" line="1011"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="929"/>
+        <location filename="../gui/MainWindow.cpp" line="1012"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="930"/>
+        <location filename="../gui/MainWindow.cpp" line="1013"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="931"/>
+        <location filename="../gui/MainWindow.cpp" line="1014"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="932"/>
+        <location filename="../gui/MainWindow.cpp" line="1015"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="933"/>
+        <location filename="../gui/MainWindow.cpp" line="1016"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="934"/>
+        <location filename="../gui/MainWindow.cpp" line="1017"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="937"/>
+        <location filename="../gui/MainWindow.cpp" line="1020"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="942"/>
+        <location filename="../gui/MainWindow.cpp" line="1025"/>
         <source>Scale factor of the drawn displacements (0 = undeformed)</source>
         <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="958"/>
+        <location filename="../gui/MainWindow.cpp" line="1041"/>
         <source>Res&amp;ume</source>
         <translation>&amp;Fortsetzen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1015"/>
+        <location filename="../gui/MainWindow.cpp" line="1098"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -952,27 +1108,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1026"/>
+        <location filename="../gui/MainWindow.cpp" line="1109"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1029"/>
+        <location filename="../gui/MainWindow.cpp" line="1112"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1040"/>
+        <location filename="../gui/MainWindow.cpp" line="1123"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1046"/>
+        <location filename="../gui/MainWindow.cpp" line="1129"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1087"/>
+        <location filename="../gui/MainWindow.cpp" line="1170"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -980,62 +1136,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1088"/>
+        <location filename="../gui/MainWindow.cpp" line="1171"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1089"/>
+        <location filename="../gui/MainWindow.cpp" line="1172"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1090"/>
+        <location filename="../gui/MainWindow.cpp" line="1173"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1093"/>
+        <location filename="../gui/MainWindow.cpp" line="1176"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1100"/>
+        <location filename="../gui/MainWindow.cpp" line="1183"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1100"/>
+        <location filename="../gui/MainWindow.cpp" line="1183"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1102"/>
+        <location filename="../gui/MainWindow.cpp" line="1185"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="847"/>
+        <location filename="../gui/MainWindow.cpp" line="927"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="117"/>
+        <location filename="../gui/MainWindow.cpp" line="125"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="851"/>
+        <location filename="../gui/MainWindow.cpp" line="931"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="857"/>
+        <location filename="../gui/MainWindow.cpp" line="937"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="866"/>
+        <location filename="../gui/MainWindow.cpp" line="946"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -1043,12 +1199,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="879"/>
+        <location filename="../gui/MainWindow.cpp" line="959"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="883"/>
+        <location filename="../gui/MainWindow.cpp" line="963"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -1056,12 +1212,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="886"/>
+        <location filename="../gui/MainWindow.cpp" line="966"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="887"/>
+        <location filename="../gui/MainWindow.cpp" line="967"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -1069,34 +1225,39 @@
 <context>
     <name>mcdda::gui::ModelDocument</name>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="49"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="50"/>
         <source>The model has no file yet; choose one with Save As.</source>
         <translation>Das Modell hat noch keine Datei; wählen Sie eine mit „Speichern unter“.</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="59"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="60"/>
         <source>Cannot save %1: %2</source>
         <translation>%1 kann nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="106"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="107"/>
         <source>Add fixed point &quot;%1&quot;</source>
         <translation>Festpunkt „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="113"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="114"/>
         <source>Add point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="120"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="121"/>
         <source>Add edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="127"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="128"/>
         <source>Add measurement point &quot;%1&quot;</source>
         <translation>Messpunkt „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="149"/>
+        <source>Add joint set &quot;%1&quot;</source>
+        <translation>Kluftschar „%1“ hinzufügen</translation>
     </message>
 </context>
 <context>
@@ -1413,7 +1574,7 @@
 <context>
     <name>mcdda::gui::SetInitialStressCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="130"/>
+        <location filename="../gui/document/Commands.cpp" line="147"/>
         <source>Change in-situ stress</source>
         <translation>Primärspannungszustand ändern</translation>
     </message>
@@ -1421,7 +1582,7 @@
 <context>
     <name>mcdda::gui::SetJointMaterialCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="122"/>
+        <location filename="../gui/document/Commands.cpp" line="139"/>
         <source>Change joint material &quot;%1&quot;</source>
         <translation>Kluftmaterial „%1“ ändern</translation>
     </message>

@@ -112,6 +112,23 @@ std::size_t checked_index(std::size_t size, int index, const char* what) {
 }
 }  // namespace
 
+AddHoleCommand::AddHoleCommand(ModelDocument* document, int region, Ring hole, QUndoCommand* parent)
+    : DocumentCommand(document, parent),
+      region_(checked_index(document->model().regions.size(), region, "AddHoleCommand")),
+      hole_(std::move(hole)) {
+    setText(tr("Add hole to region \"%1\"").arg(QString::fromStdString(document->model().regions[region_].name)));
+}
+
+void AddHoleCommand::redo() {
+    model().regions[region_].holes.push_back(hole_);
+    notify();
+}
+
+void AddHoleCommand::undo() {
+    model().regions[region_].holes.pop_back();
+    notify();
+}
+
 SetJointMaterialCommand::SetJointMaterialCommand(ModelDocument* document, int index, JointMaterial material,
                                                  QUndoCommand* parent)
     : SetValueCommand<JointMaterial>(

@@ -71,6 +71,19 @@ private:
     Roller roller_;
 };
 
+/// Adds a hole (opening) to one region (by index); undo removes it again.
+class AddHoleCommand : public DocumentCommand {
+    Q_DECLARE_TR_FUNCTIONS(mcdda::gui::AddHoleCommand)
+public:
+    AddHoleCommand(ModelDocument* document, int region, Ring hole, QUndoCommand* parent = nullptr);
+    void redo() override;
+    void undo() override;
+
+private:
+    std::size_t region_;
+    Ring hole_;
+};
+
 /// Replaces one material (by index); regions keep referring to it by index.
 class SetMaterialCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(mcdda::gui::SetMaterialCommand)

@@ -1,6 +1,7 @@
 #include "document/ModelDocument.hpp"
 
 #include "document/Commands.hpp"
+#include "geometry/PolygonChecks.hpp"
 #include "io/ModelReader.hpp"
 #include "io/ModelWriter.hpp"
 
@@ -126,6 +127,27 @@ void ModelDocument::addMeasurementPoint(const MeasurementPoint& point) {
     if (p.name.empty()) p.name = unused_name(model_.measurement_points, "point");
     const QString text = tr("Add measurement point \"%1\"").arg(QString::fromStdString(p.name));
     undo_.push(new AddItemCommand<MeasurementPoint>(this, &Model::measurement_points, std::move(p), text));
+}
+
+void ModelDocument::addHole(int region, const Ring& hole) {
+    undo_.push(new AddHoleCommand(this, region, hole));
+}
+
+int ModelDocument::regionContaining(const std::vector<Point2>& ring) const {
+    if (ring.empty()) return -1;
+    for (std::size_t r = 0; r < model_.regions.size(); ++r) {
+        const Region& region = model_.regions[r];
+        if (std::all_of(ring.begin(), ring.end(), [&](const Point2& p) { return region_contains(region, p); }))
+            return static_cast<int>(r);
+    }
+    return -1;
+}
+
+void ModelDocument::addJointSet(const JointSet& set) {
+    JointSet j = set;
+    if (j.name.empty()) j.name = unused_name(model_.joint_sets, "joint set");
+    const QString text = tr("Add joint set \"%1\"").arg(QString::fromStdString(j.name));
+    undo_.push(new AddItemCommand<JointSet>(this, &Model::joint_sets, std::move(j), text));
 }
 
 void ModelDocument::setPath(const QString& path) {

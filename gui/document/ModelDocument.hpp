@@ -66,6 +66,14 @@ public:
     void addEdgePressure(const EdgePressure& pressure);
     void addMeasurementPoint(const MeasurementPoint& point);
 
+    /// Adds `hole` as an opening of region `region` (an index into Model::regions).
+    void addHole(int region, const Ring& hole);
+    /// The region whose area holds every vertex of `ring` (inside its boundary, outside its
+    /// holes); −1 when there is none.
+    int regionContaining(const std::vector<Point2>& ring) const;
+    /// Adds a joint set; an empty name becomes "joint set N".
+    void addJointSet(const JointSet& set);
+
 signals:
     /// The model changed (an edit, undo, redo, open or setModel).
     void changed();

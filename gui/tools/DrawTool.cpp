@@ -40,15 +40,17 @@ Point2 DrawTool::snapped(const QPointF& widget_pos) const
     return snap_point({m.x(), m.y()}, model_(), points_, options);
 }
 
-void DrawTool::pressed(const QPointF& widget_pos)
+void DrawTool::pressed(const QPointF& widget_pos) { addPoint(snapped(widget_pos)); }
+
+void DrawTool::addPoint(const Point2& p)
 {
-    const Point2 p = snapped(widget_pos);
     if (!points_.empty() && same(points_.back(), p)) return;  // the second press of a double-click
     if (shape_ == Shape::Polygon && points_.size() >= 3 && same(points_.front(), p)) {
         finish();  // clicking the first vertex closes the polygon
         return;
     }
     points_.push_back(p);
+    if (points_.size() == 1) emit started();
     cursor_ = p;
     has_cursor_ = true;
     if ((shape_ == Shape::Point || shape_ == Shape::Segment) && points_.size() >= needed()) {

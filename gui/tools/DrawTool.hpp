@@ -38,6 +38,10 @@ public:
     /// Where a click at `widget_pos` would put a vertex.
     Point2 snapped(const QPointF& widget_pos) const;
 
+    /// Places a vertex at `p` (model coordinates, not snapped) as a click there does: a typed
+    /// point. A click goes through here after snapping.
+    void addPoint(const Point2& p);
+
     /// Finishes the shape (as a double-click or Enter); false when it has too few vertices.
     bool finish();
 
@@ -48,6 +52,8 @@ public:
     void cancel() override;
 
 signals:
+    /// The first vertex of a new shape was placed.
+    void started();
     /// A polygon was closed (counter-clockwise, ≥ 3 vertices), a polyline finished (≥ 2), a
     /// point placed (1) or a segment drawn (2).
     void finished(const std::vector<mcdda::Point2>& points);

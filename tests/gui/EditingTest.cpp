@@ -4,11 +4,15 @@
 
 #include "MainWindow.hpp"
 #include "ModelCompare.hpp"
+#include "dialogs/JointSetDialog.hpp"
 #include "document/ModelDocument.hpp"
+#include "tools/DrawTool.hpp"
 #include "view/Palette.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
+#include <QCheckBox>
+#include <QLineEdit>
 #include <QApplication>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -56,6 +60,7 @@ class EditingTest : public QObject {
 private slots:
     void initTestCase();
     void drawUndoRedoSaveOpen();
+    void typedPointsHolesAndJointSets();
 };
 
 void EditingTest::initTestCase()
@@ -172,6 +177,122 @@ void EditingTest::drawUndoRedoSaveOpen()
     QVERIFY2(diff.empty(), diff.c_str());
     QCOMPARE(other.document()->path(), path);
     QVERIFY(!other.document()->isModified());
+}
+
+namespace {
+
+/// Types "x, y" (or nothing: finish) into the Tool Options' coordinate field and presses Enter.
+void type_point(QLineEdit* edit, const QString& text)
+{
+    edit->setText(text);
+    QTest::keyClick(edit, Qt::Key_Return);
+}
+
+}  // namespace
+
+void EditingTest::typedPointsHolesAndJointSets()
+{
+    MainWindow window;
+    window.setAskToSave(false);
+    window.resize(1000, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    gui::ModelDocument* doc = window.document();
+    auto* edit = window.findChild<QLineEdit*>(QStringLiteral("coordinateEdit"));
+    QVERIFY(edit);
+    QVERIFY(!edit->isEnabled());  // Select is active
+
+    // A triangle typed off the grid: the typed points are taken as they are.
+    window.findChild<QAction*>(QStringLiteral("drawRegionAction"))->trigger();
+    QVERIFY(edit->isEnabled());
+    type_point(edit, QStringLiteral("0.1, 0.2"));
+    type_point(edit, QStringLiteral("4.3,0.2"));
+    QVERIFY(edit->text().isEmpty());  // cleared after each accepted point
+    type_point(edit, QStringLiteral("not a point"));
+    QCOMPARE(edit->text(), QStringLiteral("not a point"));  // kept to be corrected
+    QCOMPARE(window.activeTool()->points().size(), std::size_t(2));
+    type_point(edit, QStringLiteral("0.1 3.7"));
+    QCOMPARE(window.modelView()->preview().size(), std::size_t(3));
+    type_point(edit, QString());  // Enter on the empty field closes the polygon
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    const double triangle[3][2] = {{0.1, 0.2}, {4.3, 0.2}, {0.1, 3.7}};
+    const Ring& t = doc->model().regions[0].boundary;
+    QCOMPARE(t.size(), std::size_t(3));
+    for (std::size_t i = 0; i < 3; ++i) {
+        QCOMPARE(t[i].x, triangle[i][0]);
+        QCOMPARE(t[i].y, triangle[i][1]);
+    }
+    doc->undoStack()->undo();
+    QVERIFY(doc->model().regions.empty());
+
+    // A 10 m square with a square hole drawn inside it (Tool Options ▸ Hole).
+    for (const char* p : {"0, 0", "10, 0", "10, 10", "0, 10", ""}) type_point(edit, QString::fromLatin1(p));
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    auto* hole = window.findChild<QCheckBox*>(QStringLiteral("holeBox"));
+    QVERIFY(hole);
+    hole->setChecked(true);
+    for (const char* p : {"4, 4", "6, 4", "6, 6", "4, 6", ""}) type_point(edit, QString::fromLatin1(p));
+    hole->setChecked(false);
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    QCOMPARE(doc->model().regions[0].holes.size(), std::size_t(1));
+    QCOMPARE(doc->model().regions[0].holes[0].size(), std::size_t(4));
+    QVERIFY(doc->undoStack()->undoText().contains(QStringLiteral("hole")));
+    doc->undoStack()->undo();
+    QVERIFY(doc->model().regions[0].holes.empty());
+    doc->undoStack()->redo();
+    QCOMPARE(doc->model().regions[0].holes.size(), std::size_t(1));
+
+    // A hole outside every region is refused.
+    hole->setChecked(true);
+    for (const char* p : {"20, 20", "22, 20", "22, 22", ""}) type_point(edit, QString::fromLatin1(p));
+    hole->setChecked(false);
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    QCOMPARE(doc->model().regions[0].holes.size(), std::size_t(1));
+
+    Roller base;
+    base.from = {0, 0};
+    base.to = {10, 0};
+    base.fix_x = true;
+    base.fix_y = true;
+    doc->addRoller(base);
+    QTRY_VERIFY2(!window.isPreprocessing() && window.modelView()->scene() && window.modelView()->scene()->ok,
+                 qPrintable(window.messages()));
+    const auto blocks_before = window.modelView()->scene()->statistics.blocks;
+
+    // Edit ▸ Add Joint Set: the dialog with preset values, accepted.
+    gui::JointSetDialog dialog(doc->model(), &window);
+    JointSet preset;
+    preset.angle = 0.0;
+    preset.spacing = 3.0;
+    preset.origin = {0.0, 1.5};
+    preset.joint_material = 0;
+    dialog.setJointSet(preset);
+    dialog.accept();
+    QCOMPARE(dialog.result(), int(QDialog::Accepted));
+    const JointSet entered = dialog.jointSet();
+    QCOMPARE(entered.spacing, 3.0);
+    QCOMPARE(entered.origin.y, 1.5);
+    QVERIFY(!entered.extent);
+    doc->addJointSet(entered);
+    QCOMPARE(doc->model().joint_sets.size(), std::size_t(1));
+    QCOMPARE(doc->model().joint_sets[0].name, std::string("joint set 1"));
+    QTRY_VERIFY2(!window.isPreprocessing() && window.modelView()->scene() && window.modelView()->scene()->ok,
+                 qPrintable(window.messages()));
+    QVERIFY2(window.modelView()->scene()->statistics.blocks > blocks_before, qPrintable(window.statisticsText()));
+    QTreeWidgetItem* joints = window.modelTree()->topLevelItem(1);  // Joints ▸ the set
+    bool listed = false;
+    for (int i = 0; i < joints->childCount(); ++i)
+        listed = listed || joints->child(i)->text(0).contains(QStringLiteral("joint set 1"));
+    QVERIFY(listed);
+
+    // A zero spacing is refused by the dialog.
+    gui::JointSetDialog bad(doc->model(), &window);
+    preset.spacing = 0.0;
+    bad.setJointSet(preset);
+    bad.accept();
+    QVERIFY(bad.result() != int(QDialog::Accepted));
+    QVERIFY(!bad.validationError().isEmpty());
 }
 
 QTEST_MAIN(EditingTest)

@@ -1,0 +1,125 @@
+#include "dialogs/JointSetDialog.hpp"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace mcdda::gui {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+}
+
+JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(parent)
+{
+    setWindowTitle(tr("Add Joint Set"));
+    auto spin = [this](const QString& name, double min, double max, double value, const QString& suffix) {
+        auto* box = new QDoubleSpinBox(this);
+        box->setObjectName(name);
+        box->setRange(min, max);
+        box->setDecimals(3);
+        box->setValue(value);
+        box->setSuffix(suffix);
+        return box;
+    };
+    angle_ = spin(QStringLiteral("angleBox"), -180.0, 180.0, 45.0, QStringLiteral(" °"));
+    angle_->setToolTip(tr("Direction of the traces, counter-clockwise from the x axis"));
+    spacing_ = spin(QStringLiteral("spacingBox"), 0.0, 1e6, 1.0, QStringLiteral(" m"));
+    spacing_->setToolTip(tr("Normal distance between neighbouring traces"));
+    origin_x_ = spin(QStringLiteral("originXBox"), -1e9, 1e9, 0.0, QStringLiteral(" m"));
+    origin_y_ = spin(QStringLiteral("originYBox"), -1e9, 1e9, 0.0, QStringLiteral(" m"));
+    use_extent_ = new QCheckBox(tr("Limit to a box"), this);
+    use_extent_->setObjectName(QStringLiteral("extentCheck"));
+    use_extent_->setToolTip(tr("Without a box the traces cross the whole model"));
+    const char* const names[4] = {"xminBox", "yminBox", "xmaxBox", "ymaxBox"};
+    auto* extent_row = new QHBoxLayout;
+    for (int i = 0; i < 4; ++i) {
+        extent_[i] = spin(QString::fromLatin1(names[i]), -1e9, 1e9, i < 2 ? 0.0 : 10.0, QStringLiteral(" m"));
+        extent_[i]->setEnabled(false);
+        extent_row->addWidget(extent_[i]);
+        connect(use_extent_, &QCheckBox::toggled, extent_[i], &QWidget::setEnabled);
+    }
+    extent_[0]->setToolTip(tr("Smallest x of the box"));
+    extent_[1]->setToolTip(tr("Smallest y of the box"));
+    extent_[2]->setToolTip(tr("Largest x of the box"));
+    extent_[3]->setToolTip(tr("Largest y of the box"));
+    material_ = new QComboBox(this);
+    material_->setObjectName(QStringLiteral("jointMaterialBox"));
+    material_->addItem(tr("(default)"), -1);
+    for (std::size_t i = 0; i < model.joint_materials.size(); ++i) {
+        const QString name = QString::fromStdString(model.joint_materials[i].name);
+        material_->addItem(name.isEmpty() ? tr("Joint material %1").arg(i + 1) : name, static_cast<int>(i));
+    }
+    if (!model.joint_materials.empty()) material_->setCurrentIndex(1);
+
+    auto* form = new QFormLayout;
+    form->addRow(tr("Angle"), angle_);
+    form->addRow(tr("Spacing"), spacing_);
+    form->addRow(tr("Origin x"), origin_x_);
+    form->addRow(tr("Origin y"), origin_y_);
+    form->addRow(use_extent_);
+    form->addRow(tr("x min, y min, x max, y max"), extent_row);
+    form->addRow(tr("Joint material"), material_);
+    error_ = new QLabel(this);
+    error_->setObjectName(QStringLiteral("errorLabel"));
+    error_->setStyleSheet(QStringLiteral("color: #b00020"));
+    error_->setWordWrap(true);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &JointSetDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &JointSetDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(error_);
+    layout->addWidget(buttons);
+}
+
+JointSet JointSetDialog::jointSet() const
+{
+    JointSet set;
+    set.angle = angle_->value() * pi / 180.0;
+    set.spacing = spacing_->value();
+    set.origin = {origin_x_->value(), origin_y_->value()};
+    if (use_extent_->isChecked())
+        set.extent = std::array<double, 4>{extent_[0]->value(), extent_[1]->value(), extent_[2]->value(),
+                                           extent_[3]->value()};
+    set.joint_material = material_->currentData().toInt();
+    return set;
+}
+
+void JointSetDialog::setJointSet(const JointSet& set)
+{
+    angle_->setValue(set.angle * 180.0 / pi);
+    spacing_->setValue(set.spacing);
+    origin_x_->setValue(set.origin.x);
+    origin_y_->setValue(set.origin.y);
+    use_extent_->setChecked(set.extent.has_value());
+    if (set.extent)
+        for (int i = 0; i < 4; ++i) extent_[i]->setValue((*set.extent)[static_cast<std::size_t>(i)]);
+    const int index = material_->findData(set.joint_material);
+    if (index >= 0) material_->setCurrentIndex(index);
+}
+
+QString JointSetDialog::validationError() const
+{
+    if (!(spacing_->value() > 0.0)) return tr("The spacing must be positive.");
+    if (use_extent_->isChecked() &&
+        (extent_[0]->value() >= extent_[2]->value() || extent_[1]->value() >= extent_[3]->value()))
+        return tr("The box needs x min < x max and y min < y max.");
+    return {};
+}
+
+void JointSetDialog::accept()
+{
+    const QString error = validationError();
+    error_->setText(error);
+    if (error.isEmpty()) QDialog::accept();
+}
+
+}  // namespace mcdda::gui

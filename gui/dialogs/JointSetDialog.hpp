@@ -1,0 +1,47 @@
+#pragma once
+/// \file JointSetDialog.hpp
+/// Edit ▸ Add Joint Set: a family of parallel joints given by its trace angle (°, counter-
+/// clockwise from +x), spacing (m), a point one trace passes through, an optional extent
+/// (default: the model's box) and its joint material. jointSet() gives the entered set.
+
+#include "model/Model.hpp"
+
+#include <QDialog>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+
+namespace mcdda::gui {
+
+class JointSetDialog : public QDialog {
+    Q_OBJECT
+
+public:
+    /// `model` supplies the joint materials to choose from.
+    explicit JointSetDialog(const Model& model, QWidget* parent = nullptr);
+
+    /// The set entered (angle in radians, as Model stores it).
+    JointSet jointSet() const;
+    /// Fills the fields from `set`.
+    void setJointSet(const JointSet& set);
+    /// Why the entered values are unusable; empty when they are fine.
+    QString validationError() const;
+
+public slots:
+    /// Closes the dialog with Accepted when the values are usable, else shows why.
+    void accept() override;
+
+private:
+    QDoubleSpinBox* angle_ = nullptr;
+    QDoubleSpinBox* spacing_ = nullptr;
+    QDoubleSpinBox* origin_x_ = nullptr;
+    QDoubleSpinBox* origin_y_ = nullptr;
+    QCheckBox* use_extent_ = nullptr;
+    QDoubleSpinBox* extent_[4] = {};
+    QComboBox* material_ = nullptr;
+    QLabel* error_ = nullptr;
+};
+
+}  // namespace mcdda::gui
