@@ -5,6 +5,7 @@
 #include "Progress.hpp"
 
 #include "Preprocess.hpp"
+#include "run/RunLoop.hpp"
 #include "run/RunOutput.hpp"
 #include "run/Simulation.hpp"
 
@@ -63,52 +64,19 @@ int run_run(const Request& r) {
 
     stop_requested = false;
     auto previous_handler = std::signal(SIGINT, request_stop);
-    RunStatus status = RunStatus::Completed;
-    std::string message = "completed";
-    const int steps = p.model.analysis.steps;
-    const int every = p.model.analysis.output_every;
-    int last_saved = -1;
-    Progress progress(steps, !r.quiet);
+    Progress progress(simulation->model().analysis.steps, !r.quiet);
+    RunEnd end;
     try {
-        output->record_history(*simulation);
-        output->save_step(*simulation);
-        last_saved = 0;
-        while (simulation->state().step < steps) {
-            if (stop_requested) {
-                status = RunStatus::Cancelled;
-                message = "cancelled by the user after step " + std::to_string(simulation->state().step);
-                break;
-            }
-            StepReport report;
-            try {
-                report = simulation->advance();
-            } catch (const PlasticCollapse& e) {
-                status = RunStatus::Collapsed;
-                const auto loads = simulation->load_magnitudes();
-                std::string reached;
-                for (const auto& [name, value] : loads) reached += (reached.empty() ? "" : ", ") + name + " = " + std::to_string(value);
-                message = "collapse at step " + std::to_string(simulation->state().step + 1) + ": " + e.what() +
-                          (reached.empty() ? std::string() : "; last converged load: " + reached);
-                break;
-            } catch (const std::exception& e) {
-                status = RunStatus::Failed;
-                message = std::string("step ") + std::to_string(simulation->state().step + 1) + " failed: " + e.what();
-                break;
-            }
-            output->record_history(*simulation);
-            if (report.step % every == 0 || report.step == steps) {
-                output->save_step(*simulation);
-                last_saved = report.step;
-            }
-            progress.update(report);
-        }
-        if (last_saved != simulation->state().step) output->save_step(*simulation);  // the last step, always
+        end = run_steps(*simulation, output.get(), [] { return stop_requested.load(); },
+                        [&](const StepReport& report) { progress.update(report); });
     } catch (const std::exception& e) {  // writing results failed
         progress.finish();
         std::signal(SIGINT, previous_handler);
         std::cerr << "error: " << e.what() << "\n";
         return exit_output_error;
     }
+    const RunStatus status = end.status;
+    const std::string& message = end.message;
     progress.finish();
     std::signal(SIGINT, previous_handler);
     output->write_summary(simulation.get(), status, message);

@@ -1,5 +1,6 @@
 #include "run/RunController.hpp"
 
+#include "run/RunLoop.hpp"
 #include "run/Simulation.hpp"
 
 #include <QElapsedTimer>
@@ -82,10 +83,8 @@ void RunController::start()
     }
 
     const int steps = p.model.analysis.steps;
-    const int every = std::max(1, p.model.analysis.output_every);
     RunStatus status = RunStatus::Completed;
     std::string message;
-    int last_saved = -1;
     QElapsedTimer progress_clock, snapshot_clock;
     std::optional<RunProgress> unsent;  // the latest progress not sent yet (throttled)
     bool snapshot_unsent = false;
@@ -94,62 +93,33 @@ void RunController::start()
         snapshot_clock.restart();
         snapshot_unsent = false;
     };
+    auto on_step = [&](const StepReport& report) {
+        RunProgress info;
+        info.step = report.step;
+        info.total_steps = steps;
+        info.time = report.time;
+        info.time_step = report.time_step;
+        info.open = report.open;
+        info.sliding = report.sliding;
+        info.locked = report.locked;
+        info.plastic_iterations = report.plastic_iterations;
+        info.yielding = report.yielding;
+        unsent = info;
+        snapshot_unsent = true;
+        if (!progress_clock.isValid() || progress_clock.elapsed() >= progress_ms_) {
+            emit progress(*unsent);
+            unsent.reset();
+            progress_clock.restart();
+        }
+        if (snapshot_clock.elapsed() >= snapshot_ms_) send_snapshot();
+    };
     try {
-        if (output) {
-            output->record_history(*simulation);
-            output->save_step(*simulation);
-            last_saved = 0;
-        }
         send_snapshot();
-        while (simulation->state().step < steps) {
-            if (stop_ || (paused_ && !waitWhilePaused())) {
-                status = RunStatus::Cancelled;
-                message = "cancelled after step " + std::to_string(simulation->state().step);
-                break;
-            }
-            StepReport report;
-            try {
-                report = simulation->advance();
-            } catch (const PlasticCollapse& e) {
-                status = RunStatus::Collapsed;
-                std::string reached;
-                for (const auto& [name, value] : simulation->load_magnitudes())
-                    reached += (reached.empty() ? "" : ", ") + name + " = " + std::to_string(value);
-                message = "collapse at step " + std::to_string(simulation->state().step + 1) + ": " + e.what() +
-                          (reached.empty() ? std::string() : "; last converged load: " + reached);
-                break;
-            } catch (const std::exception& e) {
-                status = RunStatus::Failed;
-                message = "step " + std::to_string(simulation->state().step + 1) + " failed: " + e.what();
-                break;
-            }
-            if (output) {
-                output->record_history(*simulation);
-                if (report.step % every == 0 || report.step == steps) {
-                    output->save_step(*simulation);
-                    last_saved = report.step;
-                }
-            }
-            RunProgress info;
-            info.step = report.step;
-            info.total_steps = steps;
-            info.time = report.time;
-            info.time_step = report.time_step;
-            info.open = report.open;
-            info.sliding = report.sliding;
-            info.locked = report.locked;
-            info.plastic_iterations = report.plastic_iterations;
-            info.yielding = report.yielding;
-            unsent = info;
-            snapshot_unsent = true;
-            if (!progress_clock.isValid() || progress_clock.elapsed() >= progress_ms_) {
-                emit progress(*unsent);
-                unsent.reset();
-                progress_clock.restart();
-            }
-            if (snapshot_clock.elapsed() >= snapshot_ms_) send_snapshot();
-        }
-        if (output && last_saved != simulation->state().step) output->save_step(*simulation);
+        const RunEnd end = run_steps(
+            *simulation, output.get(), [this] { return stop_ || (paused_ && !waitWhilePaused()); }, on_step);
+        status = end.status;
+        // finished() carries no message for a completed run.
+        if (status != RunStatus::Completed) message = end.message;
     } catch (const std::exception& e) {  // writing the results failed
         status = RunStatus::Failed;
         message = std::string("cannot write the results: ") + e.what();
