@@ -1,5 +1,6 @@
 #include "view/ModelScene.hpp"
 
+#include "view/FlatActor.hpp"
 #include "view/Palette.hpp"
 #include "view/SceneGeometry.hpp"
 #include "view/SceneLegend.hpp"
@@ -56,19 +57,6 @@ std::array<unsigned char, 3> bytes(const Rgb& c)
     return {b(c[0]), b(c[1]), b(c[2])};
 }
 
-/// A flat, unlit actor: colours come out exactly as in the palette.
-vtkSmartPointer<vtkActor> flat_actor(vtkPolyData* data, const Rgb& color, double line_width)
-{
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(data);
-    mapper->ScalarVisibilityOff();
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
-    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
-    actor->GetProperty()->SetLineWidth(static_cast<float>(line_width));
-    return actor;
-}
 
 void add_shapes(vtkRenderer* renderer, const Shapes& shapes, const Rgb& color, double line_width, double z)
 {

@@ -1,5 +1,6 @@
 #include "view/ResultScene.hpp"
 
+#include "view/FlatActor.hpp"
 #include "view/ModelScene.hpp"
 #include "view/OffscreenRender.hpp"
 #include "view/Palette.hpp"
@@ -211,18 +212,6 @@ double dpi_of(vtkRenderer* renderer)
     return dpi > 0 ? dpi : 72;
 }
 
-vtkSmartPointer<vtkActor> line_actor(vtkPolyData* data, const Rgb& color, double width)
-{
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(data);
-    mapper->ScalarVisibilityOff();
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->LightingOff();
-    actor->GetProperty()->SetColor(color[0], color[1], color[2]);
-    actor->GetProperty()->SetLineWidth(static_cast<float>(width));
-    return actor;
-}
 
 /// Value of the field at entry i (cell or point).
 double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i)
@@ -360,7 +349,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     vtkNew<vtkPolyData> outline;
     outline->SetPoints(line_points);
     outline->SetLines(lines);
-    renderer->AddActor(line_actor(outline, palette::block_outline, 1.5 * pixel));
+    renderer->AddActor(flat_actor(outline, palette::block_outline, 1.5 * pixel));
 
     // Joints of the model where they are in rock; only undeformed (they are not part of the .vtu).
     const bool joints = options.show_joints && options.deform == 0.0 && !model.model.joints.empty();
@@ -378,7 +367,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         vtkNew<vtkPolyData> data;
         data->SetPoints(joint_points);
         data->SetLines(joint_lines);
-        renderer->AddActor(line_actor(data, joint_color, 3.0 * pixel));
+        renderer->AddActor(flat_actor(data, joint_color, 3.0 * pixel));
     }
 
     // Legend.
