@@ -5,9 +5,11 @@
 #include "document/ModelDocument.hpp"
 #include "panels/PropertyEditor.hpp"
 #include "tools/DrawTool.hpp"
+#include "tools/SelectTool.hpp"
 #include "results/HistoryPlot.hpp"
 #include "results/ResultExport.hpp"
 #include "results/StepSlider.hpp"
+#include "widgets/ModelTree.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
@@ -60,8 +62,6 @@ QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 constexpr int max_recent_files = 8;
 const char* const recent_key = "recentFiles";
 
-QString point_text(const Point2& p) { return QStringLiteral("(%1, %2)").arg(p.x, 0, 'g', 6).arg(p.y, 0, 'g', 6); }
-
 bool is_model_file(const QUrl& url)
 {
     return url.isLocalFile() && url.toLocalFile().endsWith(QStringLiteral(".json"), Qt::CaseInsensitive);
@@ -113,6 +113,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         q.point = points.front();
         document_->addMeasurementPoint(q);
     });
+    select_tool_ = new SelectTool(view_, [this]() -> const Model& { return document_->model(); }, this);
+    connect(select_tool_, &SelectTool::moveRequested, document_, &ModelDocument::moveItem);
+    connect(select_tool_, &SelectTool::deleteRequested, this, &MainWindow::deleteSelection);
     connect(region_tool_, &DrawTool::started, this, [this] {
         hole_shift_ = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
     });
@@ -141,8 +144,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(document_, &ModelDocument::changed, this, &MainWindow::onDocumentChanged);
     connect(document_, &ModelDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(document_, &ModelDocument::pathChanged, this, &MainWindow::updateTitle);
+    connect(select_tool_, &SelectTool::selectionChanged, this, &MainWindow::onSelectionChanged);
     applySnap();
     refreshModelTree();
+    view_->setTool(select_tool_);
 }
 
 MainWindow::~MainWindow()
@@ -270,7 +275,9 @@ void MainWindow::createEditActions()
         return action;
     };
     select_action_ = tool(tr("&Select"), QStringLiteral("selectToolAction"), QStringLiteral("select"),
-                          tr("Navigate: drag to pan, turn the wheel to zoom"), &MainWindow::selectTool);
+                          tr("Click an item or a vertex to select it, drag it to move it, Delete removes it; "
+                             "drag empty space to pan"),
+                          &MainWindow::selectTool);
     region_action_ = tool(tr("Draw &Region"), QStringLiteral("drawRegionAction"), QStringLiteral("draw-region"),
                           tr("Click the corners of a new region; double-click or Enter closes it, Escape cancels"),
                           &MainWindow::drawRegionTool);
@@ -292,6 +299,15 @@ void MainWindow::createEditActions()
     QAction* point = tool(tr("&Measurement Point"), QStringLiteral("measurementPointAction"), QStringLiteral("measurement-point"),
                           tr("Click where displacements are recorded"), &MainWindow::measurementPointTool);
     edit->addSeparator();
+    delete_action_ = edit->addAction(tr("&Delete"), this, [this] { deleteSelection(select_tool_->selection()); });
+    delete_action_->setObjectName(QStringLiteral("deleteAction"));
+    delete_action_->setShortcut(QKeySequence::Delete);
+    // Only in the view and the tree: Delete keeps deleting characters in the forms.
+    delete_action_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    delete_action_->setStatusTip(tr("Delete the selected item or vertex"));
+    delete_action_->setEnabled(false);
+    view_->addAction(delete_action_);
+    tree_->addAction(delete_action_);
     QAction* joint_set = edit->addAction(tr("Add Joint Se&t..."), this, &MainWindow::addJointSetDialog);
     joint_set->setObjectName(QStringLiteral("addJointSetAction"));
     joint_set->setStatusTip(tr("Add a family of parallel joints"));
@@ -373,22 +389,44 @@ void MainWindow::applyRegion(const std::vector<Point2>& points)
     document_->addHole(region, points);
 }
 
+namespace {
+
+/// A number typed with a decimal point or a decimal comma ("2.5" or "2,5").
+bool parse_number(QString text, double* value)
+{
+    text.replace(QLatin1Char(','), QLatin1Char('.'));
+    bool ok = false;
+    *value = text.toDouble(&ok);
+    return ok && std::isfinite(*value);
+}
+
+/// "x, y", "x y" or "x; y" — the last two also with decimal commas ("2,5; -1" or "2,5 -1").
+bool parse_point(const QString& text, Point2* p)
+{
+    QStringList parts = text.split(QLatin1Char(';'));
+    if (parts.size() != 2) parts = text.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    if (parts.size() != 2) parts = text.split(QLatin1Char(','));
+    if (parts.size() != 2) return false;
+    return parse_number(parts[0].trimmed(), &p->x) && parse_number(parts[1].trimmed(), &p->y);
+}
+
+}  // namespace
+
 bool MainWindow::enterCoordinates(const QString& text)
 {
     DrawTool* tool = activeTool();
     if (!tool) return false;
     const QString trimmed = text.trimmed();
     if (trimmed.isEmpty()) return tool->finish();
-    const QStringList parts =
-        trimmed.split(QRegularExpression(QStringLiteral("\\s*[,;]\\s*|\\s+")), Qt::SkipEmptyParts);
-    bool ok_x = false, ok_y = false;
-    const double x = parts.size() == 2 ? parts[0].toDouble(&ok_x) : 0.0;
-    const double y = parts.size() == 2 ? parts[1].toDouble(&ok_y) : 0.0;
-    if (!ok_x || !ok_y || !std::isfinite(x) || !std::isfinite(y)) {
-        statusBar()->showMessage(tr("Type a point as \"x, y\" in metres, e.g. \"2.5, -1\""), 5000);
+    Point2 p;
+    // "x, y" with a space after the comma splits on the space first: drop the separator's comma.
+    QString cleaned = trimmed;
+    cleaned.replace(QRegularExpression(QStringLiteral("\\s*,\\s+")), QStringLiteral(";"));
+    if (!parse_point(cleaned, &p)) {
+        statusBar()->showMessage(tr("Type a point as \"x, y\" in metres, e.g. \"2.5, -1\" (or \"2,5; -1\")"), 5000);
         return false;
     }
-    tool->addPoint({x, y});
+    tool->addPoint(p);
     return true;
 }
 
@@ -402,7 +440,8 @@ DrawTool* MainWindow::activeTool() const { return dynamic_cast<DrawTool*>(view_-
 
 void MainWindow::setTool(DrawTool* tool)
 {
-    view_->setTool(tool);
+    if (view_->tool() == select_tool_ && tool) select_tool_->cancel();
+    view_->setTool(tool ? static_cast<ViewTool*>(tool) : select_tool_);
     QAction* action = select_action_;
     for (const auto& [t, a] : tool_actions_)
         if (t == tool) action = a;
@@ -416,6 +455,34 @@ void MainWindow::setTool(DrawTool* tool)
 }
 
 void MainWindow::selectTool() { setTool(nullptr); }
+
+void MainWindow::selectItem(const ItemRef& ref)
+{
+    if (view_->tool() != select_tool_) selectTool();
+    select_tool_->select(ref);
+}
+
+ItemRef MainWindow::selection() const { return select_tool_->selection(); }
+
+void MainWindow::onSelectionChanged(const ItemRef& ref)
+{
+    tree_->selectItem(ref);
+    delete_action_->setEnabled(ref.valid());
+    if (ref.valid())
+        statusBar()->showMessage(tr("Selected %1: drag to move, Delete removes").arg(document_->itemName(ref)), 5000);
+}
+
+bool MainWindow::deleteSelection(const ItemRef& ref)
+{
+    const QString name = document_->itemName(ref);
+    if (document_->deleteItem(ref)) return true;
+    if (ref.valid()) {
+        const QString why = tr("%1 was not deleted: a region or hole keeps at least three vertices.").arg(name);
+        log(why);
+        statusBar()->showMessage(why, 5000);
+    }
+    return false;
+}
 void MainWindow::drawRegionTool() { setTool(region_tool_); }
 void MainWindow::drawJointTool() { setTool(joint_tool_); }
 void MainWindow::fixedPointTool() { setTool(fixed_tool_); }
@@ -437,78 +504,23 @@ void MainWindow::applySnap()
     options.spacing = grid_spacing_;
     for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_})
         tool->setSnapOptions(options);
+    select_tool_->setSnapOptions(options);
 }
 
 void MainWindow::createModelDock()
 {
-    tree_ = new QTreeWidget(this);
+    tree_ = new ModelTree(this);
     tree_->setObjectName(QStringLiteral("modelTree"));
-    tree_->setColumnCount(2);
-    tree_->setHeaderLabels({tr("Item"), tr("Details")});
-    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    tree_->setSelectionMode(QAbstractItemView::SingleSelection);
+    connect(tree_, &ModelTree::itemChosen, this, [this](const ItemRef& ref) {
+        if (ref.valid()) selectItem(ref);
+    });
     model_dock_ = new QDockWidget(tr("Model"), this);
     model_dock_->setObjectName(QStringLiteral("model"));
     model_dock_->setWidget(tree_);
     addDockWidget(Qt::RightDockWidgetArea, model_dock_);
 }
 
-void MainWindow::refreshModelTree()
-{
-    const Model& m = document_->model();
-    tree_->clear();
-    auto group = [&](const QString& title, std::size_t count) {
-        auto* item = new QTreeWidgetItem(tree_, {title, QString::number(count)});
-        item->setExpanded(true);
-        return item;
-    };
-    auto name_or = [](const std::string& name, const QString& fallback) {
-        return name.empty() ? fallback : to_qt(name);
-    };
-    QTreeWidgetItem* regions = group(tr("Regions"), m.regions.size());
-    for (std::size_t i = 0; i < m.regions.size(); ++i) {
-        const Region& r = m.regions[i];
-        const QString material = r.material >= 0 && static_cast<std::size_t>(r.material) < m.materials.size()
-                                     ? to_qt(m.materials[static_cast<std::size_t>(r.material)].name)
-                                     : tr("no material");
-        new QTreeWidgetItem(regions, {name_or(r.name, tr("region %1").arg(i + 1)),
-                                      tr("%1, %n vertices", "", static_cast<int>(r.boundary.size())).arg(material)});
-    }
-    QTreeWidgetItem* joints = group(tr("Joints"), m.joints.size());
-    QTreeWidgetItem* explicit_joints = new QTreeWidgetItem(joints, {tr("Explicit")});
-    std::vector<QTreeWidgetItem*> sets;
-    for (std::size_t i = 0; i < m.joint_sets.size(); ++i)
-        sets.push_back(new QTreeWidgetItem(joints, {tr("Set %1").arg(name_or(m.joint_sets[i].name, QString::number(i + 1))),
-                                                    tr("spacing %1 m").arg(m.joint_sets[i].spacing)}));
-    int explicit_count = 0;
-    for (std::size_t i = 0; i < m.joints.size(); ++i) {
-        const Joint& j = m.joints[i];
-        QTreeWidgetItem* parent = j.joint_set >= 0 && static_cast<std::size_t>(j.joint_set) < sets.size()
-                                      ? sets[static_cast<std::size_t>(j.joint_set)] : explicit_joints;
-        if (parent == explicit_joints) ++explicit_count;
-        const QString details = j.points.empty() ? QString()
-                                                 : tr("%1 to %2").arg(point_text(j.points.front()), point_text(j.points.back()));
-        new QTreeWidgetItem(parent, {name_or(j.name, tr("joint %1").arg(i + 1)), details});
-    }
-    explicit_joints->setText(1, QString::number(explicit_count));
-    explicit_joints->setExpanded(true);
-    QTreeWidgetItem* materials = group(tr("Materials"), m.materials.size() + m.joint_materials.size());
-    for (const Material& x : m.materials) new QTreeWidgetItem(materials, {to_qt(x.name), tr("rock/soil")});
-    for (const JointMaterial& x : m.joint_materials) new QTreeWidgetItem(materials, {to_qt(x.name), tr("joint")});
-    QTreeWidgetItem* supports = group(tr("Supports"), m.fixed_points.size() + m.rollers.size());
-    for (const FixedPoint& f : m.fixed_points)
-        new QTreeWidgetItem(supports, {to_qt(f.name), tr("fixed point %1").arg(point_text(f.point))});
-    for (const Roller& r : m.rollers)
-        new QTreeWidgetItem(supports, {to_qt(r.name), tr("roller %1 to %2").arg(point_text(r.from), point_text(r.to))});
-    QTreeWidgetItem* loads = group(tr("Loads"), m.point_loads.size() + m.edge_pressures.size());
-    for (const PointLoad& l : m.point_loads)
-        new QTreeWidgetItem(loads, {to_qt(l.name), tr("point load at %1").arg(point_text(l.point))});
-    for (const EdgePressure& e : m.edge_pressures)
-        new QTreeWidgetItem(loads, {to_qt(e.name), tr("pressure %1 Pa").arg(e.pressure)});
-    QTreeWidgetItem* points = group(tr("Measurement points"), m.measurement_points.size());
-    for (const MeasurementPoint& q : m.measurement_points)
-        new QTreeWidgetItem(points, {to_qt(q.name), point_text(q.point)});
-}
+void MainWindow::refreshModelTree() { tree_->refresh(document_->model(), view_->scene().get()); }
 
 QStringList MainWindow::recentFiles() const
 {
@@ -627,6 +639,7 @@ bool MainWindow::saveModelAs(const QString& path)
 
 void MainWindow::onDocumentChanged()
 {
+    select_tool_->refresh();
     refreshModelTree();
     updateTitle();
     ++generation_;
@@ -947,6 +960,7 @@ void MainWindow::showScene(std::shared_ptr<const Preprocessed> p, const QString&
     }
     messages_->setPlainText(lines.join(QLatin1Char('\n')));
     view_->setScene(std::move(p), keep_camera);
+    refreshModelTree();  // its blocks
     updateRunActions();
     if (!view_->scene()->ok && interactive) reportFailure(*view_->scene(), source);
 }

@@ -8,6 +8,7 @@
 /// dock plots the history, and File ▸ Export writes the picture, the steps or the history.
 
 #include "Preprocess.hpp"
+#include "document/ModelItems.hpp"
 #include "run/ResultSnapshot.hpp"
 #include "run/RunController.hpp"
 #include "run/RunOutput.hpp"
@@ -44,6 +45,8 @@ class HistoryPlot;
 class ModelDocument;
 class DrawTool;
 class PropertyEditor;
+class SelectTool;
+class ModelTree;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -66,13 +69,17 @@ public:
     /// The model being edited (what the view shows).
     ModelDocument* document() const { return document_; }
     /// The Model dock's tree.
-    QTreeWidget* modelTree() const { return tree_; }
+    ModelTree* modelTree() const { return tree_; }
+    /// The Select tool (always there; active when no drawing tool is).
+    SelectTool* selectionTool() const { return select_tool_; }
+    /// The selected item or vertex (invalid when none).
+    ItemRef selection() const;
     /// The Properties dock's forms.
     PropertyEditor* propertyEditor() const { return property_editor_; }
     /// Whether the document is being pre-processed again after an edit (on the thread pool;
     /// the view shows the previous picture meanwhile).
     bool isPreprocessing() const { return requested_ != 0; }
-    /// The drawing tools (null for Select).
+    /// The active drawing tool (null for Select).
     DrawTool* activeTool() const;
     /// Grid snapping of the drawing tools (View ▸ Snap to Grid) and its spacing (m).
     void setGridSpacing(double metres);
@@ -125,8 +132,12 @@ public slots:
     bool save();
     /// File ▸ Save As: asks for a file.
     bool saveAsDialog();
-    /// Edit ▸ tools: the navigation tool, drawing regions, drawing joints.
+    /// Edit ▸ tools: select/move (and navigate), drawing regions, drawing joints.
     void selectTool();
+    /// Makes Select the tool and selects `ref` in the view and the tree.
+    void selectItem(const ItemRef& ref);
+    /// Edit ▸ Delete: deletes `ref` (undoable); false with a message when it cannot go.
+    bool deleteSelection(const ItemRef& ref);
     void drawRegionTool();
     void drawJointTool();
     /// Edit ▸ tools for supports, loads and measurement points: Fixed Point (click), Roller
@@ -187,7 +198,9 @@ private:
                    bool interactive);
     /// Asks whether to save unsaved changes; false when the user cancelled.
     bool maybeSave();
+    /// Makes `tool` active; null = the Select tool.
     void setTool(DrawTool* tool);
+    void onSelectionChanged(const ItemRef& ref);
     /// A drawn polygon: a new region, or a hole of the region holding it (Hole / Shift).
     void applyRegion(const std::vector<Point2>& points);
     void applySnap();
@@ -249,7 +262,9 @@ private:
     ModelDocument* document_ = nullptr;
     bool syncing_ = false;  ///< the document is being set from an already pre-processed model
     bool ask_to_save_ = true;
-    QTreeWidget* tree_ = nullptr;
+    ModelTree* tree_ = nullptr;
+    SelectTool* select_tool_ = nullptr;
+    QAction* delete_action_ = nullptr;
     QDockWidget* model_dock_ = nullptr;
     QMenu* recent_menu_ = nullptr;
     QAction* snap_action_ = nullptr;

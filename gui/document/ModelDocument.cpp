@@ -150,6 +150,47 @@ void ModelDocument::addJointSet(const JointSet& set) {
     undo_.push(new AddItemCommand<JointSet>(this, &Model::joint_sets, std::move(j), text));
 }
 
+bool ModelDocument::moveItem(const ItemRef& ref, const Point2& delta) {
+    Model moved = model_;
+    if (!move_item(moved, ref, delta)) return false;
+    // The whole model is swapped: exact undo whatever the edit touched.
+    undo_.push(new SetValueCommand<Model>(this, [](Model& m) -> Model& { return m; }, std::move(moved),
+                                          tr("Move %1").arg(itemName(ref))));
+    return true;
+}
+
+bool ModelDocument::deleteItem(const ItemRef& ref) {
+    Model reduced = model_;
+    const QString name = itemName(ref);
+    if (!delete_item(reduced, ref)) return false;
+    undo_.push(new SetValueCommand<Model>(this, [](Model& m) -> Model& { return m; }, std::move(reduced),
+                                          tr("Delete %1").arg(name)));
+    return true;
+}
+
+QString ModelDocument::itemName(const ItemRef& ref) const {
+    if (!item_exists(model_, ref)) return QString();
+    using Kind = ItemRef::Kind;
+    const auto i = static_cast<std::size_t>(ref.index);
+    auto named = [&](const std::string& name, const QString& fallback) {
+        return name.empty() ? fallback.arg(ref.index + 1) : QStringLiteral("\"%1\"").arg(QString::fromStdString(name));
+    };
+    QString item;
+    switch (ref.kind) {
+    case Kind::Region: item = named(model_.regions[i].name, tr("region %1")); break;
+    case Kind::Joint: item = named(model_.joints[i].name, tr("joint %1")); break;
+    case Kind::FixedPoint: item = named(model_.fixed_points[i].name, tr("fixed point %1")); break;
+    case Kind::Roller: item = named(model_.rollers[i].name, tr("roller %1")); break;
+    case Kind::PointLoad: item = named(model_.point_loads[i].name, tr("load %1")); break;
+    case Kind::EdgePressure: item = named(model_.edge_pressures[i].name, tr("pressure %1")); break;
+    case Kind::MeasurementPoint: item = named(model_.measurement_points[i].name, tr("point %1")); break;
+    case Kind::None: break;
+    }
+    if (ref.kind == Kind::Region && ref.ring > 0) item = tr("hole %1 of %2").arg(ref.ring).arg(item);
+    if (ref.vertex >= 0) item = tr("vertex %1 of %2").arg(ref.vertex + 1).arg(item);
+    return item;
+}
+
 void ModelDocument::setPath(const QString& path) {
     if (path == path_) return;
     path_ = path;

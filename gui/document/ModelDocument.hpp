@@ -7,6 +7,7 @@
 /// Every edit goes through a QUndoCommand (Commands.hpp) pushed onto undoStack(); the commands
 /// change the model through DocumentCommand, which emits changed().
 
+#include "document/ModelItems.hpp"
 #include "model/Diagnostic.hpp"
 #include "model/Model.hpp"
 
@@ -73,6 +74,14 @@ public:
     int regionContaining(const std::vector<Point2>& ring) const;
     /// Adds a joint set; an empty name becomes "joint set N".
     void addJointSet(const JointSet& set);
+
+    /// Moves an item, a hole or a vertex by `delta` (m); false when `ref` does not exist.
+    bool moveItem(const ItemRef& ref, const Point2& delta);
+    /// Deletes an item, a hole or a vertex (see delete_item()); false when it cannot go.
+    bool deleteItem(const ItemRef& ref);
+    /// How the item is called in menus and messages: its name, or its kind and number, and
+    /// "vertex N of ..." for a vertex.
+    QString itemName(const ItemRef& ref) const;
 
 signals:
     /// The model changed (an edit, undo, redo, open or setModel).

@@ -40,7 +40,11 @@ Point2 DrawTool::snapped(const QPointF& widget_pos) const
     return snap_point({m.x(), m.y()}, model_(), points_, options);
 }
 
-void DrawTool::pressed(const QPointF& widget_pos) { addPoint(snapped(widget_pos)); }
+bool DrawTool::pressed(const QPointF& widget_pos)
+{
+    addPoint(snapped(widget_pos));
+    return true;
+}
 
 void DrawTool::addPoint(const Point2& p)
 {

@@ -45,7 +45,7 @@ public:
     /// Finishes the shape (as a double-click or Enter); false when it has too few vertices.
     bool finish();
 
-    void pressed(const QPointF& widget_pos) override;
+    bool pressed(const QPointF& widget_pos) override;
     void moved(const QPointF& widget_pos) override;
     void doubleClicked(const QPointF& widget_pos) override;
     bool keyPressed(int key) override;

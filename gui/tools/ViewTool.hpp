@@ -5,14 +5,17 @@
 /// (logical) pixels; the tool converts them with ModelView::toModel().
 
 #include <QPointF>
+#include <Qt>
 
 namespace mcdda::gui {
 
 class ViewTool {
 public:
     virtual ~ViewTool() = default;
-    /// The left button went down.
-    virtual void pressed(const QPointF& widget_pos) = 0;
+    /// The left button went down; false leaves it to the view (which pans).
+    virtual bool pressed(const QPointF& widget_pos) = 0;
+    /// The left button went up.
+    virtual void released(const QPointF& /*widget_pos*/) {}
     /// The cursor moved (with or without a button).
     virtual void moved(const QPointF& /*widget_pos*/) {}
     /// A left double-click (its first press came through pressed()).
@@ -21,6 +24,8 @@ public:
     virtual bool keyPressed(int /*key*/) { return false; }
     /// Drop whatever is half done (e.g. when another tool is chosen).
     virtual void cancel() {}
+    /// The cursor over the view while the tool is active.
+    virtual Qt::CursorShape cursorShape() const { return Qt::CrossCursor; }
 };
 
 }  // namespace mcdda::gui

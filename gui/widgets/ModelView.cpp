@@ -273,7 +273,7 @@ void ModelView::setTool(ViewTool* tool)
     if (impl_->tool) impl_->tool->cancel();
     impl_->tool = tool;
     impl_->panning = false;
-    if (tool) setCursor(Qt::CrossCursor); else unsetCursor();
+    if (tool) setCursor(tool->cursorShape()); else unsetCursor();
 }
 
 ViewTool* ModelView::tool() const { return impl_->tool; }
@@ -382,13 +382,16 @@ void ModelView::resizeEvent(QResizeEvent* event)
 
 void ModelView::mousePressEvent(QMouseEvent* event)
 {
+    bool left_free = event->button() == Qt::LeftButton;
     if (impl_->tool && event->button() == Qt::LeftButton) {
         setFocus(Qt::MouseFocusReason);
-        impl_->tool->pressed(event->position());
-        event->accept();
-        return;
+        left_free = !impl_->tool->pressed(event->position());
+        if (!left_free) {
+            event->accept();
+            return;
+        }
     }
-    if ((event->button() == Qt::LeftButton && !impl_->tool) || event->button() == Qt::MiddleButton) {
+    if (left_free || event->button() == Qt::MiddleButton) {
         impl_->panning = true;
         impl_->last_pos = event->position();
         setCursor(Qt::ClosedHandCursor);
@@ -414,7 +417,9 @@ void ModelView::mouseReleaseEvent(QMouseEvent* event)
 {
     if (impl_->panning && !(event->buttons() & (Qt::LeftButton | Qt::MiddleButton))) {
         impl_->panning = false;
-        if (impl_->tool) setCursor(Qt::CrossCursor); else unsetCursor();
+        if (impl_->tool) setCursor(impl_->tool->cursorShape()); else unsetCursor();
+    } else if (impl_->tool && event->button() == Qt::LeftButton) {
+        impl_->tool->released(event->position());
     }
     event->accept();
 }

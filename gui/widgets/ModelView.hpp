@@ -68,7 +68,8 @@ public:
     double metresPerPixel() const;
 
     /// The editing tool that gets left clicks and keys (not owned); null = navigation only
-    /// (left or middle drag pans). With a tool the middle button pans.
+    /// (left or middle drag pans). With a tool the middle button pans, and so does the left one
+    /// where the tool does not take the press (Select on empty space).
     void setTool(ViewTool* tool);
     ViewTool* tool() const;
     /// A rubber band drawn over the picture (model coordinates), e.g. a shape being drawn;

@@ -37,6 +37,29 @@ QString messages(const std::vector<Diagnostic>& diagnostics) {
         QVERIFY2(differences.empty(), differences.c_str());                    \
     } while (false)
 
+/// A 10 m square with a 2 m hole, an explicit joint at y = 2, a generated one at y = 8 and a
+/// fixed point on a corner.
+Model picking_model() {
+    Model m;
+    m.materials.push_back({});
+    Region r;
+    r.material = 0;
+    r.boundary = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+    r.holes = {{{4, 4}, {6, 4}, {6, 6}, {4, 6}}};
+    m.regions.push_back(r);
+    Joint j;
+    j.points = {{-1, 2}, {11, 2}};
+    m.joints.push_back(j);
+    Joint g;
+    g.points = {{-1, 8}, {11, 8}};
+    g.joint_set = 0;
+    m.joints.push_back(g);
+    FixedPoint f;
+    f.point = {0, 0};
+    m.fixed_points.push_back(f);
+    return m;
+}
+
 }  // namespace
 
 class DocumentTest : public QObject {
@@ -57,6 +80,80 @@ private:
     }
 
 private slots:
+    void picksVerticesLinesAndAreas() {
+        using Kind = gui::ItemRef::Kind;
+        const Model m = picking_model();
+        // A vertex wins over the region around it; the nearest one within the tolerance.
+        gui::ItemRef r = gui::pick_item(m, {10.05, 9.98}, 0.1);
+        QCOMPARE(int(r.kind), int(Kind::Region));
+        QCOMPARE(r.index, 0);
+        QCOMPARE(r.ring, 0);
+        QCOMPARE(r.vertex, 2);
+        // A hole's vertex names the hole ring.
+        r = gui::pick_item(m, {6.0, 6.0}, 0.1);
+        QCOMPARE(r.ring, 1);
+        QCOMPARE(r.vertex, 2);
+        // A point item on a region corner wins at equal distance.
+        r = gui::pick_item(m, {0.0, 0.0}, 0.1);
+        QCOMPARE(int(r.kind), int(Kind::FixedPoint));
+        // The middle of a joint picks the joint as a whole; a set's joint is not picked.
+        r = gui::pick_item(m, {5.0, 2.04}, 0.1);
+        QCOMPARE(int(r.kind), int(Kind::Joint));
+        QCOMPARE(r.index, 0);
+        QCOMPARE(r.vertex, -1);
+        r = gui::pick_item(m, {5.0, 8.0}, 0.1);
+        QCOMPARE(int(r.kind), int(Kind::Region));  // the area under the generated joint
+        QCOMPARE(r.vertex, -1);
+        // A hole's edge names the hole; the area of the hole is nothing.
+        r = gui::pick_item(m, {5.0, 4.03}, 0.1);
+        QCOMPARE(r.ring, 1);
+        QCOMPARE(r.vertex, -1);
+        QVERIFY(!gui::pick_item(m, {5.0, 5.0}, 0.1).valid());
+        QVERIFY(!gui::pick_item(m, {20.0, 20.0}, 0.1).valid());
+    }
+
+    void movesAndDeletesItemsUndoably() {
+        using Kind = gui::ItemRef::Kind;
+        ModelDocument document;
+        document.setModel(picking_model());
+        const Model original = document.model();
+        // A whole region moves with its hole.
+        QVERIFY(document.moveItem({Kind::Region, 0}, {2.0, -1.0}));
+        QCOMPARE(document.model().regions[0].boundary[2].x, 12.0);
+        QCOMPARE(document.model().regions[0].holes[0][0].y, 3.0);
+        QVERIFY(document.undoStack()->undoText().contains(QStringLiteral("region")));
+        document.undoStack()->undo();
+        COMPARE_MODELS(document.model(), original);
+        // One vertex; one hole alone.
+        QVERIFY(document.moveItem({Kind::Region, 0, 0, 2}, {1.5, 0.5}));
+        QCOMPARE(document.model().regions[0].boundary[2].x, 11.5);
+        QCOMPARE(document.model().regions[0].boundary[1].x, 10.0);
+        QVERIFY(document.undoStack()->undoText().contains(QStringLiteral("vertex 3")));
+        QVERIFY(document.moveItem({Kind::Region, 0, 1, -1}, {0.5, 0.0}));
+        QCOMPARE(document.model().regions[0].holes[0][0].x, 4.5);
+        QCOMPARE(document.model().regions[0].boundary[0].x, 0.0);
+        document.undoStack()->undo();
+        document.undoStack()->undo();
+        COMPARE_MODELS(document.model(), original);
+        // Deleting: a vertex of the square leaves a triangle, whose vertices then stay.
+        QVERIFY(document.deleteItem({Kind::Region, 0, 0, 3}));
+        QCOMPARE(document.model().regions[0].boundary.size(), std::size_t(3));
+        QVERIFY(!document.deleteItem({Kind::Region, 0, 0, 0}));
+        // A hole, a joint, a point; a missing item is refused.
+        QVERIFY(document.deleteItem({Kind::Region, 0, 1, -1}));
+        QVERIFY(document.model().regions[0].holes.empty());
+        QVERIFY(document.deleteItem({Kind::FixedPoint, 0}));
+        QVERIFY(document.model().fixed_points.empty());
+        QVERIFY(!document.deleteItem({Kind::FixedPoint, 0}));
+        QVERIFY(document.deleteItem({Kind::Joint, 0, 0, 1}));  // a two-point joint goes whole
+        QCOMPARE(document.model().joints.size(), std::size_t(1));
+        QCOMPARE(document.model().joints[0].joint_set, 0);
+        for (int i = 0; i < 4; ++i) document.undoStack()->undo();
+        COMPARE_MODELS(document.model(), original);
+        QVERIFY(!document.isModified());
+        QVERIFY(!document.moveItem({Kind::Roller, 3}, {1.0, 0.0}));
+    }
+
     void opensAFileClean() {
         ModelDocument document;
         QSignalSpy path_spy(&document, &ModelDocument::pathChanged);

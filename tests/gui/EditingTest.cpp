@@ -8,6 +8,7 @@
 #include "document/ModelDocument.hpp"
 #include "tools/DrawTool.hpp"
 #include "view/Palette.hpp"
+#include "widgets/ModelTree.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
@@ -157,7 +158,7 @@ void EditingTest::drawUndoRedoSaveOpen()
     base.fix_y = true;
     doc->addRoller(base);
     QTRY_VERIFY2(!window.isPreprocessing() && view->scene() && view->scene()->ok, qPrintable(window.messages()));
-    QVERIFY(window.modelTree()->topLevelItem(3)->childCount() == 1);  // Supports
+    QVERIFY(window.modelTree()->topLevelItem(4)->childCount() == 1);  // Supports
 
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
@@ -280,7 +281,7 @@ void EditingTest::typedPointsHolesAndJointSets()
     QTRY_VERIFY2(!window.isPreprocessing() && window.modelView()->scene() && window.modelView()->scene()->ok,
                  qPrintable(window.messages()));
     QVERIFY2(window.modelView()->scene()->statistics.blocks > blocks_before, qPrintable(window.statisticsText()));
-    QTreeWidgetItem* joints = window.modelTree()->topLevelItem(1);  // Joints ▸ the set
+    QTreeWidgetItem* joints = window.modelTree()->topLevelItem(2);  // Joints ▸ the set
     bool listed = false;
     for (int i = 0; i < joints->childCount(); ++i)
         listed = listed || joints->child(i)->text(0).contains(QStringLiteral("joint set 1"));

@@ -1,0 +1,170 @@
+#include "widgets/ModelTree.hpp"
+
+#include <QHeaderView>
+#include <QTreeWidgetItemIterator>
+
+#include <cstddef>
+
+namespace mcdda::gui {
+
+namespace {
+
+constexpr int kind_role = Qt::UserRole;
+constexpr int index_role = Qt::UserRole + 1;
+constexpr int ring_role = Qt::UserRole + 2;
+
+QString to_qt(const std::string& s) { return QString::fromStdString(s); }
+
+QString point_text(const Point2& p) { return QStringLiteral("(%1, %2)").arg(p.x, 0, 'g', 6).arg(p.y, 0, 'g', 6); }
+
+QString name_or(const std::string& name, const QString& fallback) { return name.empty() ? fallback : to_qt(name); }
+
+QTreeWidgetItem* row(QTreeWidgetItem* parent, const QString& name, const QString& details, const ItemRef& ref = {})
+{
+    auto* item = new QTreeWidgetItem(parent, {name, details});
+    if (ref.valid()) {
+        item->setData(0, kind_role, static_cast<int>(ref.kind));
+        item->setData(0, index_role, ref.index);
+        item->setData(0, ring_role, ref.ring);
+    }
+    return item;
+}
+
+ItemRef ref_of(const QTreeWidgetItem* item)
+{
+    if (!item || !item->data(0, kind_role).isValid()) return {};
+    return {static_cast<ItemRef::Kind>(item->data(0, kind_role).toInt()), item->data(0, index_role).toInt(),
+            item->data(0, ring_role).toInt(), -1};
+}
+
+}  // namespace
+
+ModelTree::ModelTree(QWidget* parent) : QTreeWidget(parent)
+{
+    setColumnCount(2);
+    setHeaderLabels({tr("Item"), tr("Details")});
+    header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    setSelectionMode(QAbstractItemView::SingleSelection);
+    connect(this, &QTreeWidget::itemSelectionChanged, this, [this] {
+        if (!quiet_) emit itemChosen(selectedItem());
+    });
+    connect(this, &QTreeWidget::itemExpanded, this, [this](QTreeWidgetItem* item) {
+        if (item == blocks_) blocks_expanded_ = true;
+    });
+    connect(this, &QTreeWidget::itemCollapsed, this, [this](QTreeWidgetItem* item) {
+        if (item == blocks_) blocks_expanded_ = false;
+    });
+}
+
+void ModelTree::refresh(const Model& m, const Preprocessed* p)
+{
+    using Kind = ItemRef::Kind;
+    const ItemRef selected = selectedItem();
+    quiet_ = true;
+    clear();
+    auto group = [&](const QString& title, std::size_t count) {
+        auto* item = new QTreeWidgetItem(this, {title, QString::number(count)});
+        item->setExpanded(true);
+        return item;
+    };
+    QTreeWidgetItem* regions = group(tr("Regions"), m.regions.size());
+    for (std::size_t i = 0; i < m.regions.size(); ++i) {
+        const Region& r = m.regions[i];
+        const QString material = r.material >= 0 && static_cast<std::size_t>(r.material) < m.materials.size()
+                                     ? to_qt(m.materials[static_cast<std::size_t>(r.material)].name)
+                                     : tr("no material");
+        QTreeWidgetItem* region = row(regions, name_or(r.name, tr("region %1").arg(i + 1)),
+                                      tr("%1, %n vertices", "", static_cast<int>(r.boundary.size())).arg(material),
+                                      {Kind::Region, static_cast<int>(i)});
+        for (std::size_t h = 0; h < r.holes.size(); ++h)
+            row(region, tr("hole %1").arg(h + 1), tr("%n vertices", "", static_cast<int>(r.holes[h].size())),
+                {Kind::Region, static_cast<int>(i), static_cast<int>(h + 1)});
+        region->setExpanded(true);
+    }
+
+    // Blocks come from pre-processing, which may lag behind the model by one edit.
+    const std::size_t block_count = p ? p->blocks.size() : 0;
+    blocks_ = group(tr("Blocks"), block_count);
+    for (std::size_t b = 0; b < block_count; ++b) {
+        const Block& block = p->blocks[b];
+        const QString material = block.material >= 0 && static_cast<std::size_t>(block.material) < p->model.materials.size()
+                                     ? to_qt(p->model.materials[static_cast<std::size_t>(block.material)].name)
+                                     : tr("no material");
+        const auto& begin = p->mesh.block_triangle_begin;
+        const int elements = b + 1 < begin.size() ? begin[b + 1] - begin[b] : 0;
+        row(blocks_, tr("block %1").arg(b + 1),
+            tr("%1, %2 m², %n elements", "", elements).arg(material).arg(block.area, 0, 'g', 4));
+    }
+    blocks_->setExpanded(blocks_expanded_);
+
+    QTreeWidgetItem* joints = group(tr("Joints"), m.joints.size());
+    QTreeWidgetItem* explicit_joints = new QTreeWidgetItem(joints, {tr("Explicit")});
+    std::vector<QTreeWidgetItem*> sets;
+    for (std::size_t i = 0; i < m.joint_sets.size(); ++i)
+        sets.push_back(new QTreeWidgetItem(joints, {tr("Set %1").arg(name_or(m.joint_sets[i].name, QString::number(i + 1))),
+                                                    tr("spacing %1 m").arg(m.joint_sets[i].spacing)}));
+    int explicit_count = 0;
+    for (std::size_t i = 0; i < m.joints.size(); ++i) {
+        const Joint& j = m.joints[i];
+        const bool generated = j.joint_set >= 0 && static_cast<std::size_t>(j.joint_set) < sets.size();
+        QTreeWidgetItem* parent = generated ? sets[static_cast<std::size_t>(j.joint_set)] : explicit_joints;
+        if (!generated) ++explicit_count;
+        const QString details = j.points.empty() ? QString()
+                                                 : tr("%1 to %2").arg(point_text(j.points.front()), point_text(j.points.back()));
+        row(parent, name_or(j.name, tr("joint %1").arg(i + 1)), details,
+            generated ? ItemRef{} : ItemRef{Kind::Joint, static_cast<int>(i)});
+    }
+    explicit_joints->setText(1, QString::number(explicit_count));
+    explicit_joints->setExpanded(true);
+    QTreeWidgetItem* materials = group(tr("Materials"), m.materials.size() + m.joint_materials.size());
+    for (const Material& x : m.materials) row(materials, to_qt(x.name), tr("rock/soil"));
+    for (const JointMaterial& x : m.joint_materials) row(materials, to_qt(x.name), tr("joint"));
+    QTreeWidgetItem* supports = group(tr("Supports"), m.fixed_points.size() + m.rollers.size());
+    for (std::size_t i = 0; i < m.fixed_points.size(); ++i)
+        row(supports, to_qt(m.fixed_points[i].name), tr("fixed point %1").arg(point_text(m.fixed_points[i].point)),
+            {Kind::FixedPoint, static_cast<int>(i)});
+    for (std::size_t i = 0; i < m.rollers.size(); ++i)
+        row(supports, to_qt(m.rollers[i].name),
+            tr("roller %1 to %2").arg(point_text(m.rollers[i].from), point_text(m.rollers[i].to)),
+            {Kind::Roller, static_cast<int>(i)});
+    QTreeWidgetItem* loads = group(tr("Loads"), m.point_loads.size() + m.edge_pressures.size());
+    for (std::size_t i = 0; i < m.point_loads.size(); ++i)
+        row(loads, to_qt(m.point_loads[i].name), tr("point load at %1").arg(point_text(m.point_loads[i].point)),
+            {Kind::PointLoad, static_cast<int>(i)});
+    for (std::size_t i = 0; i < m.edge_pressures.size(); ++i)
+        row(loads, to_qt(m.edge_pressures[i].name), tr("pressure %1 Pa").arg(m.edge_pressures[i].pressure),
+            {Kind::EdgePressure, static_cast<int>(i)});
+    QTreeWidgetItem* points = group(tr("Measurement points"), m.measurement_points.size());
+    for (std::size_t i = 0; i < m.measurement_points.size(); ++i)
+        row(points, to_qt(m.measurement_points[i].name), point_text(m.measurement_points[i].point),
+            {Kind::MeasurementPoint, static_cast<int>(i)});
+    quiet_ = false;
+    if (item_exists(m, selected)) selectItem(selected);
+}
+
+void ModelTree::selectItem(const ItemRef& ref)
+{
+    const ItemRef wanted = ref.valid() ? ref.whole() : ItemRef{};
+    quiet_ = true;
+    clearSelection();
+    if (wanted.valid()) {
+        for (QTreeWidgetItemIterator it(this); *it; ++it) {
+            if (ref_of(*it) == wanted) {
+                (*it)->setSelected(true);
+                scrollToItem(*it);
+                break;
+            }
+        }
+    }
+    quiet_ = false;
+}
+
+ItemRef ModelTree::selectedItem() const
+{
+    const QList<QTreeWidgetItem*> items = selectedItems();
+    return items.isEmpty() ? ItemRef{} : ref_of(items.front());
+}
+
+int ModelTree::blockCount() const { return blocks_ ? blocks_->childCount() : 0; }
+
+}  // namespace mcdda::gui
