@@ -44,6 +44,8 @@
 #include <QStatusBar>
 #include <QStringList>
 #include <QThread>
+#include <QTimer>
+#include <QEventLoop>
 #include <QToolBar>
 #include <QUrl>
 #include <QFutureWatcher>
@@ -880,27 +882,43 @@ bool MainWindow::openModel(const QString& path) { return load(path, false); }
 
 bool MainWindow::load(const QString& path, bool keep_camera)
 {
-    auto result = std::make_shared<Preprocessed>();
-    QString failure;
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    statusBar()->showMessage(tr("Reading %1...").arg(QFileInfo(path).fileName()));
-    try {
-        *result = preprocess_file(path.toStdString(), {}, PreprocessStage::Mesh);
-    } catch (const std::exception& e) {  // preprocess_file reports bad input as diagnostics;
-        failure = to_qt(e.what());        // this is for anything unforeseen
-    }
+    if (loading_) return false;  // one file at a time
+    loading_ = true;
+    updateRunActions();
+    QApplication::setOverrideCursor(Qt::BusyCursor);
+    statusBar()->showMessage(tr("Reading and meshing %1...").arg(QFileInfo(path).fileName()));
+    progress_bar_->setRange(0, 0);  // busy: the pipeline reports no fraction
+    progress_bar_->setVisible(true);
+
+    // Reading, cutting and meshing run on the thread pool; this loop keeps the window painted
+    // meanwhile. Input waits (as under a progress dialog), so nothing changes the model under
+    // the reader's feet.
+    QFutureWatcher<std::shared_ptr<Preprocessed>> watcher;
+    QEventLoop loop;
+    connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
+    watcher.setFuture(QtConcurrent::run([file = path.toStdString()] {
+        auto p = std::make_shared<Preprocessed>();
+        try {
+            *p = preprocess_file(file, {}, PreprocessStage::Mesh);
+        } catch (const std::exception& e) {  // bad input comes as diagnostics; this is for
+            Diagnostic d;                    // anything unforeseen
+            d.message = e.what();
+            p->diagnostics.push_back(d);
+            p->ok = false;
+        }
+        return p;
+    }));
+    if (!watcher.isFinished()) loop.exec(QEventLoop::ExcludeUserInputEvents);
+    const std::shared_ptr<Preprocessed> result = watcher.result();
+
+    progress_bar_->setVisible(false);
     QApplication::restoreOverrideCursor();
     statusBar()->clearMessage();
+    loading_ = false;
 
     path_ = path;
     last_folder_ = QFileInfo(path).absolutePath();
     reload_action_->setEnabled(true);
-    if (!failure.isEmpty()) {
-        Diagnostic d;
-        d.message = failure.toStdString();
-        result->diagnostics.push_back(d);
-        result->ok = false;
-    }
     syncing_ = true;
     const std::vector<Diagnostic> read = document_->open(path);
     if (std::any_of(read.begin(), read.end(), [](const Diagnostic& d) { return d.severity == Diagnostic::Severity::Error; }))
@@ -908,6 +926,7 @@ bool MainWindow::load(const QString& path, bool keep_camera)
     syncing_ = false;
     if (document_->path() == path) addRecentFile(path);
     showScene(result, path, keep_camera, true);
+    if (close_after_load_) QTimer::singleShot(0, this, &QWidget::close);
     return result->ok;
 }
 
@@ -1050,7 +1069,7 @@ void MainWindow::updateRunActions()
 {
     const bool running = isRunning();
     const auto scene = view_->scene();
-    run_action_->setEnabled(!running && scene && scene->ok && !isPreprocessing());  // not a stale picture
+    run_action_->setEnabled(!running && !loading_ && scene && scene->ok && !isPreprocessing());  // not a stale picture
     pause_action_->setEnabled(running);
     pause_action_->setText(running && controller_->isPaused() ? tr("Res&ume") : tr("&Pause"));
     stop_action_->setEnabled(running);
@@ -1219,6 +1238,11 @@ void MainWindow::joinRun()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (loading_) {  // the window goes once the file is read (load() is on the stack)
+        close_after_load_ = true;
+        event->ignore();
+        return;
+    }
     if (!maybeSave()) {
         event->ignore();
         return;

@@ -57,8 +57,11 @@ public:
 
     /// Pre-processes the model file at `path` and shows it. Returns false when that reported
     /// errors: they are listed in the Messages dock and summarised in a (non-blocking) message
-    /// box; whatever could be read is still drawn.
+    /// box; whatever could be read is still drawn. The work runs on the thread pool; the window
+    /// keeps painting (input waits) until it is done. False at once while another file loads.
     bool openModel(const QString& path);
+    /// Whether a model file is being read and meshed (openModel on the stack).
+    bool isLoading() const { return loading_; }
 
     /// Shows an already pre-processed model; `source` names it in the title and messages.
     /// The camera is fitted unless `keep_camera` is set.
@@ -262,6 +265,8 @@ private:
     ModelDocument* document_ = nullptr;
     bool syncing_ = false;  ///< the document is being set from an already pre-processed model
     bool ask_to_save_ = true;
+    bool loading_ = false;
+    bool close_after_load_ = false;
     ModelTree* tree_ = nullptr;
     SelectTool* select_tool_ = nullptr;
     QAction* delete_action_ = nullptr;

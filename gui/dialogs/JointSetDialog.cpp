@@ -58,6 +58,22 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
         material_->addItem(name.isEmpty() ? tr("Joint material %1").arg(i + 1) : name, static_cast<int>(i));
     }
     if (!model.joint_materials.empty()) material_->setCurrentIndex(1);
+    persistence_ = spin(QStringLiteral("persistenceBox"), 0.0, 100.0, 100.0, QStringLiteral(" %"));
+    persistence_->setToolTip(tr("Share of each trace that is joint; below 100 % the traces are cut "
+                                "into segments separated by rock bridges"));
+    trace_length_ = spin(QStringLiteral("traceLengthBox"), 0.0, 1e6, 1.0, QStringLiteral(" m"));
+    trace_length_->setToolTip(tr("Length of each joint segment along a trace"));
+    // Stagger 100 % would be the same pattern as 0 %, so the range stops short of it.
+    stagger_ = spin(QStringLiteral("staggerBox"), 0.0, 99.999, 50.0, QStringLiteral(" %"));
+    stagger_->setToolTip(tr("Shift of the segment pattern from one trace to the next, in % of the "
+                            "period (segment plus bridge), so that the bridges do not line up"));
+    // Fully persistent traces have no segments: trace length and stagger mean nothing then.
+    auto enable_segment_fields = [this](double persistence) {
+        trace_length_->setEnabled(persistence < 100.0);
+        stagger_->setEnabled(persistence < 100.0);
+    };
+    connect(persistence_, &QDoubleSpinBox::valueChanged, this, enable_segment_fields);
+    enable_segment_fields(persistence_->value());
 
     auto* form = new QFormLayout;
     form->addRow(tr("Angle"), angle_);
@@ -67,6 +83,9 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
     form->addRow(use_extent_);
     form->addRow(tr("x min, y min, x max, y max"), extent_row);
     form->addRow(tr("Joint material"), material_);
+    form->addRow(tr("Persistence"), persistence_);
+    form->addRow(tr("Trace length"), trace_length_);
+    form->addRow(tr("Stagger"), stagger_);
     error_ = new QLabel(this);
     error_->setObjectName(QStringLiteral("errorLabel"));
     error_->setStyleSheet(QStringLiteral("color: #b00020"));
@@ -90,6 +109,11 @@ JointSet JointSetDialog::jointSet() const
         set.extent = std::array<double, 4>{extent_[0]->value(), extent_[1]->value(), extent_[2]->value(),
                                            extent_[3]->value()};
     set.joint_material = material_->currentData().toInt();
+    if (persistence_->value() < 100.0) {
+        set.persistence = persistence_->value() / 100.0;
+        set.trace_length = trace_length_->value();
+        set.stagger = stagger_->value() / 100.0;
+    }
     return set;
 }
 
@@ -104,6 +128,9 @@ void JointSetDialog::setJointSet(const JointSet& set)
         for (int i = 0; i < 4; ++i) extent_[i]->setValue((*set.extent)[static_cast<std::size_t>(i)]);
     const int index = material_->findData(set.joint_material);
     if (index >= 0) material_->setCurrentIndex(index);
+    persistence_->setValue(set.persistence * 100.0);
+    trace_length_->setValue(set.trace_length);
+    stagger_->setValue(set.stagger * 100.0);
 }
 
 QString JointSetDialog::validationError() const
@@ -112,6 +139,9 @@ QString JointSetDialog::validationError() const
     if (use_extent_->isChecked() &&
         (extent_[0]->value() >= extent_[2]->value() || extent_[1]->value() >= extent_[3]->value()))
         return tr("The box needs x min < x max and y min < y max.");
+    if (!(persistence_->value() > 0.0)) return tr("The persistence must be above 0 %.");
+    if (persistence_->value() < 100.0 && !(trace_length_->value() > 0.0))
+        return tr("A persistence below 100 % needs a positive trace length.");
     return {};
 }
 

@@ -2,7 +2,9 @@
 /// \file JointSetDialog.hpp
 /// Edit ▸ Add Joint Set: a family of parallel joints given by its trace angle (°, counter-
 /// clockwise from +x), spacing (m), a point one trace passes through, an optional extent
-/// (default: the model's box) and its joint material. jointSet() gives the entered set.
+/// (default: the model's box), its joint material and its persistence (%): below 100 % each
+/// trace is cut into segments of the trace length (m), the pattern shifted from trace to trace by
+/// the stagger (% of the period). jointSet() gives the entered set.
 
 #include "model/Model.hpp"
 
@@ -22,7 +24,8 @@ public:
     /// `model` supplies the joint materials to choose from.
     explicit JointSetDialog(const Model& model, QWidget* parent = nullptr);
 
-    /// The set entered (angle in radians, as Model stores it).
+    /// The set entered (angle in radians, fractions instead of %, as Model stores it). At 100 %
+    /// persistence the disabled trace length and stagger are left at their defaults.
     JointSet jointSet() const;
     /// Fills the fields from `set`.
     void setJointSet(const JointSet& set);
@@ -41,6 +44,9 @@ private:
     QCheckBox* use_extent_ = nullptr;
     QDoubleSpinBox* extent_[4] = {};
     QComboBox* material_ = nullptr;
+    QDoubleSpinBox* persistence_ = nullptr;
+    QDoubleSpinBox* trace_length_ = nullptr;
+    QDoubleSpinBox* stagger_ = nullptr;
     QLabel* error_ = nullptr;
 };
 

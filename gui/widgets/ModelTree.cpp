@@ -100,9 +100,13 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
     QTreeWidgetItem* joints = group(tr("Joints"), m.joints.size());
     QTreeWidgetItem* explicit_joints = new QTreeWidgetItem(joints, {tr("Explicit")});
     std::vector<QTreeWidgetItem*> sets;
-    for (std::size_t i = 0; i < m.joint_sets.size(); ++i)
-        sets.push_back(new QTreeWidgetItem(joints, {tr("Set %1").arg(name_or(m.joint_sets[i].name, QString::number(i + 1))),
-                                                    tr("spacing %1 m").arg(m.joint_sets[i].spacing)}));
+    for (std::size_t i = 0; i < m.joint_sets.size(); ++i) {
+        const JointSet& set = m.joint_sets[i];
+        QString details = tr("spacing %1 m").arg(set.spacing);
+        if (set.persistence < 1.0)
+            details += tr(", persistence %1 %, joints %2 m long").arg(100.0 * set.persistence).arg(set.trace_length);
+        sets.push_back(new QTreeWidgetItem(joints, {tr("Set %1").arg(name_or(set.name, QString::number(i + 1))), details}));
+    }
     int explicit_count = 0;
     for (std::size_t i = 0; i < m.joints.size(); ++i) {
         const Joint& j = m.joints[i];

@@ -187,12 +187,16 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
                                        (cutting[j] == 0.0 ? " (all of it)" : "")});
         }
     }
-    for (std::size_t s = 0; s < model.joint_sets.size(); ++s)
-        if (set_dangling[s] > 0.0)
-            diagnostics.push_back({Diagnostic::Severity::Warning, "/joint_sets/" + std::to_string(s),
-                                   "joint set \"" + model.joint_sets[s].name + "\": " + length_text(set_dangling[s]) +
-                                       " of " + std::to_string(set_pieces[s]) +
-                                       " traces separates no blocks and was dropped"});
+    for (std::size_t s = 0; s < model.joint_sets.size(); ++s) {
+        if (!(set_dangling[s] > 0.0)) continue;
+        // A set with persistence < 1 generates segments of traces, not whole traces.
+        const bool segments = model.joint_sets[s].persistence < 1.0;
+        const char* pieces = set_pieces[s] == 1 ? (segments ? " segment" : " trace") : (segments ? " segments" : " traces");
+        diagnostics.push_back({Diagnostic::Severity::Warning, "/joint_sets/" + std::to_string(s),
+                               "joint set \"" + model.joint_sets[s].name + "\": " + length_text(set_dangling[s]) +
+                                   " of " + std::to_string(set_pieces[s]) + pieces +
+                                   " separates no blocks and was dropped"});
+    }
 
     std::vector<Block> blocks;
     for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {

@@ -393,7 +393,8 @@ void parse_geometry(Parser& p, const json& root, Model& m, const std::map<std::s
         const json& o = sets[i];
         JointSet s;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, {"name", "angle", "spacing", "origin", "extent", "joint_material"});
+            p.check_keys(o, path, {"name", "angle", "spacing", "origin", "extent", "joint_material", "persistence",
+                                   "trace_length", "stagger"});
             s.name = p.string(o, path, "name", "set " + std::to_string(i + 1));
             s.angle = p.angle(o, path, "angle", std::nullopt);
             s.spacing = p.number(o, path, "spacing", std::nullopt);
@@ -409,6 +410,10 @@ void parse_geometry(Parser& p, const json& root, Model& m, const std::map<std::s
                 }
             }
             s.joint_material = optional_reference(p, o, path, "joint_material", joint_material_names, "joint material");
+            const JointSet defaults;
+            s.persistence = p.number(o, path, "persistence", defaults.persistence);
+            s.trace_length = p.number(o, path, "trace_length", defaults.trace_length);
+            s.stagger = p.number(o, path, "stagger", defaults.stagger);
         }
         m.joint_sets.push_back(s);
     }

@@ -130,6 +130,11 @@ json to_json(const Model& m) {
             if (s.extent) o["extent"] = json::array({(*s.extent)[0], (*s.extent)[1], (*s.extent)[2], (*s.extent)[3]});
             if (s.joint_material >= 0)
                 o["joint_material"] = name_of(m.joint_materials, s.joint_material, "joint material");
+            // Only what differs from a fully persistent set, so older files are written as they were.
+            const JointSet defaults;
+            if (s.persistence != defaults.persistence) o["persistence"] = s.persistence;
+            if (s.trace_length != defaults.trace_length) o["trace_length"] = s.trace_length;
+            if (s.stagger != defaults.stagger) o["stagger"] = s.stagger;
             list.push_back(std::move(o));
         }
         root["joint_sets"] = std::move(list);

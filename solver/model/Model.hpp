@@ -65,15 +65,25 @@ struct Joint {
     int joint_set = -1;          ///< index of the joint set that generated it, −1 = explicit
 };
 
-/// A family of parallel, fully persistent joints.
+/// A family of parallel joints. Fully persistent (persistence 1) each trace is one joint;
+/// otherwise each trace is cut into joint segments of `trace_length` separated by rock bridges,
+/// repeating with period trace_length / persistence along the trace (UDEC's jset trace/gap).
 struct JointSet {
     std::string name;
     double angle = 0.0;      ///< trace direction, counter-clockwise from +x (rad)
     double spacing = 0.0;    ///< normal distance between traces (m), > 0
-    Point2 origin;           ///< one trace passes through this point
+    Point2 origin;           ///< one trace passes through this point; its segment pattern starts here
     std::optional<std::array<double, 4>> extent;  ///< xmin, ymin, xmax, ymax; default: model box
     int joint_material = -1;
+    double persistence = 1.0;   ///< fraction of each trace that is joint, in (0, 1]
+    double trace_length = 0.0;  ///< length of one joint segment (m); > 0 when persistence < 1
+    double stagger = 0.5;       ///< shift of the pattern from one trace to the next, fraction of the period, [0, 1)
 };
+
+/// What one joint set may generate: the validator refuses more, the expander skips such a set.
+/// Short segments cost the block cutter far less than traces across the model, hence the two limits.
+constexpr long max_joint_set_traces = 5000;
+constexpr long max_joint_set_segments = 50000;
 
 /// A table of (abscissa, factor) pairs, linearly interpolated; abscissa is the step number or
 /// the time. Beyond the last point the factor is either held or extrapolated linearly.

@@ -100,19 +100,44 @@ void check_geometry(Checker& c, const Model& m) {
                 c.error(path + "/points/" + std::to_string(k), "repeats the previous point (zero-length joint segment)");
         }
     }
-    const auto box = m.bounds();
-    const double diagonal = std::hypot(box[2] - box[0], box[3] - box[1]);
+    const auto model_box = m.bounds();
     for (std::size_t i = 0; i < m.joint_sets.size(); ++i) {
         const JointSet& s = m.joint_sets[i];
         const std::string path = "/joint_sets/" + std::to_string(i);
         c.point(s.origin, path + "/origin");
+        // The box the set is generated in (as in expand_joint_sets) bounds what it can generate.
+        const auto box = s.extent.value_or(model_box);
+        const double diagonal = std::hypot(box[2] - box[0], box[3] - box[1]);
+        const bool spacing_ok = s.spacing > 0.0 && diagonal / s.spacing <= max_joint_set_traces;
         if (!(s.spacing > 0.0)) {
             c.error(path + "/spacing", "spacing must be positive (got " + num(s.spacing) + " m)");
-        } else if (diagonal / s.spacing > 5000.0) {
-            c.error(path + "/spacing", "spacing " + num(s.spacing) + " m would generate more than 5000 joints");
+        } else if (!spacing_ok) {
+            c.error(path + "/spacing", "spacing " + num(s.spacing) + " m would generate more than " +
+                                           std::to_string(max_joint_set_traces) + " joints");
         }
         if (s.extent && !((*s.extent)[2] > (*s.extent)[0] && (*s.extent)[3] > (*s.extent)[1]))
             c.error(path + "/extent", "extent must be [xmin, ymin, xmax, ymax] with xmax > xmin and ymax > ymin");
+
+        const bool persistence_ok = s.persistence > 0.0 && s.persistence <= 1.0;
+        if (!persistence_ok)
+            c.error(path + "/persistence", "persistence must lie in (0, 1] (got " + num(s.persistence) + ")");
+        if (!(s.stagger >= 0.0 && s.stagger < 1.0))
+            c.error(path + "/stagger", "stagger must lie in [0, 1) (got " + num(s.stagger) + ")");
+        if (!(s.trace_length >= 0.0)) {
+            c.error(path + "/trace_length", "trace length must not be negative (got " + num(s.trace_length) + " m)");
+        } else if (persistence_ok && s.persistence < 1.0) {
+            if (!(s.trace_length > 0.0)) {
+                c.error(path + "/trace_length", "a joint set with persistence below 1 needs a positive trace length");
+            } else if (spacing_ok) {
+                // Each trace crossing the box holds at most chord / period + 2 segments.
+                const double period = s.trace_length / s.persistence;
+                const double segments = (diagonal / s.spacing + 1.0) * (diagonal / period + 2.0);
+                if (segments > static_cast<double>(max_joint_set_segments))
+                    c.error(path + "/trace_length", "trace length " + num(s.trace_length) + " m with persistence " +
+                                                        num(s.persistence) + " would generate more than " +
+                                                        std::to_string(max_joint_set_segments) + " joint segments");
+            }
+        }
     }
 }
 
@@ -182,11 +207,16 @@ void check_controls(Checker& c, const Model& m) {
 
 }  // namespace
 
+namespace {
+void check_load_tables(Checker& c, const Model& m);  // defined at the end of the file
+}  // namespace
+
 void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics) {
     Checker c(diagnostics);
     check_materials(c, model);
     check_geometry(c, model);
     check_boundary_conditions(c, model);
+    check_load_tables(c, model);
     check_controls(c, model);
 }
 
@@ -196,5 +226,42 @@ std::string joint_path(const Model& model, int joint) {
     if (j.joint_set >= 0) return "/joint_sets/" + std::to_string(j.joint_set);
     return "/joints/" + std::to_string(joint);
 }
+
+namespace {
+
+// What the model reader already refuses in a file but an editor (the desktop program's Loads
+// tab) can produce: a table without a name or points, two tables of one name (the file refers
+// to tables by name), a load referring to a table that is not there.
+void check_load_tables(Checker& c, const Model& m) {
+    const auto& tables = m.load_tables;
+    for (std::size_t i = 0; i < tables.size(); ++i) {
+        const LoadTable& t = tables[i];
+        const std::string path = "/load_tables/" + std::to_string(i);
+        if (t.name.empty()) {
+            c.error(path + "/name", "a load table needs a name");
+        } else {
+            // Reported at both tables, so the error concerns whichever one was just renamed.
+            for (std::size_t k = 0; k < tables.size(); ++k)
+                if (k != i && tables[k].name == t.name) {
+                    c.error(path + "/name", "another load table is named \"" + t.name + "\"");
+                    break;
+                }
+        }
+        if (t.points.empty()) c.error(path + "/points", "a load table needs at least one [abscissa, factor] pair");
+        for (std::size_t k = 0; k < t.points.size(); ++k)
+            if (!std::isfinite(t.points[k][0]) || !std::isfinite(t.points[k][1]))
+                c.error(path + "/points/" + std::to_string(k), "abscissa and factor must be finite numbers");
+    }
+    const auto reference = [&](int table, const std::string& path) {
+        if (table < -1 || table >= static_cast<int>(tables.size()))
+            c.error(path + "/table", "refers to a missing load table (index " + std::to_string(table) + ")");
+    };
+    for (std::size_t i = 0; i < m.point_loads.size(); ++i)
+        reference(m.point_loads[i].table, "/point_loads/" + std::to_string(i));
+    for (std::size_t i = 0; i < m.edge_pressures.size(); ++i)
+        reference(m.edge_pressures[i].table, "/edge_pressures/" + std::to_string(i));
+}
+
+}  // namespace
 
 }  // namespace mcdda

@@ -18,6 +18,7 @@
 #include <QScreen>
 #include <QTemporaryDir>
 #include <QWheelEvent>
+#include <QTimer>
 #include <QtTest>
 
 #include <cmath>
@@ -352,7 +353,17 @@ void ModelViewTest::mainWindowOpensExample()
     window.resize(1000, 700);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    // The file is read and meshed off the GUI thread: timers (and painting) go on meanwhile,
+    // and a second file is refused until the first is shown.
+    bool loading_seen = false, second_refused = false;
+    QTimer::singleShot(0, &window, [&] {
+        loading_seen = window.isLoading();
+        second_refused = loading_seen && !window.openModel(path);
+    });
     QVERIFY2(window.openModel(path), qPrintable(window.messages()));
+    QVERIFY(loading_seen);
+    QVERIFY(second_refused);
+    QVERIFY(!window.isLoading());
     QCOMPARE(window.modelPath(), path);
     const QImage frame = window.modelView()->grabFrame();
     QTest::qWait(50);  // let the dock and status bar repaint for the screenshot

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace mcdda;
@@ -67,6 +68,35 @@ TEST(BlockCutter, DanglingJointPiecesAreDroppedWithAWarning) {
     // The dropped pieces leave no trace in the block's boundary.
     EXPECT_EQ(p.blocks[0].outer.size(), 5u);  // 4 corners + where "partial" met the boundary
     EXPECT_TRUE(p.blocks[0].holes.empty());
+}
+
+TEST(BlockCutter, NonPersistentSetCrossingAPersistentOneCutsWhereItRunsJointToJoint) {
+    // Vertical persistent traces at x = 3 and 7. Horizontal segments (period 12 m, 6 m long,
+    // stagger 0.5) at y = 1, 5, 9: on y = 5 the segment [2, 8] crosses both traces and cuts the
+    // middle block in two; its ends (1 m each) and the segments [0, 2] and [8, 10] on y = 1 and
+    // y = 9 end inside blocks and are dropped: 2 + 4 · 2 = 10 m of 5 segments.
+    const Preprocessed p = cut({"/joint_sets=[{\"name\": \"vertical\", \"angle\": 90, \"spacing\": 4, \"origin\": [3, 0]},"
+                                " {\"name\": \"bridged\", \"angle\": 0, \"spacing\": 4, \"origin\": [2, 5],"
+                                "  \"persistence\": 0.5, \"trace_length\": 6, \"stagger\": 0.5}]"});
+    ASSERT_TRUE(p.ok) << all_messages(p.diagnostics);
+    int bridged_segments = 0;
+    for (const Joint& j : p.model.joints) bridged_segments += j.joint_set == 1;
+    EXPECT_EQ(bridged_segments, 5);
+    ASSERT_EQ(p.blocks.size(), 4u);
+    EXPECT_NEAR(total_area(p.blocks), 100.0, 1e-9);
+    std::vector<double> areas;
+    for (const Block& b : p.blocks) areas.push_back(b.area);
+    std::sort(areas.begin(), areas.end());
+    EXPECT_NEAR(areas[0], 20.0, 1e-9);  // middle strip below y = 5
+    EXPECT_NEAR(areas[1], 20.0, 1e-9);  // and above
+    EXPECT_NEAR(areas[2], 30.0, 1e-9);
+    EXPECT_NEAR(areas[3], 30.0, 1e-9);
+    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Warning, "/joint_sets/1",
+                               "joint set \"bridged\": 10 m of 5 segments separates no blocks"))
+        << all_messages(p.diagnostics);
+    // The persistent set cuts along its whole length: nothing of it is dropped.
+    EXPECT_FALSE(has_diagnostic(p.diagnostics, Severity::Warning, "/joint_sets/0", "separates no blocks"))
+        << all_messages(p.diagnostics);
 }
 
 TEST(BlockCutter, RegionHoleSurvivesWhenNoJointReachesIt) {

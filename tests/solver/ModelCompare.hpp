@@ -64,6 +64,9 @@ public:
             if (x.extent && y.extent)
                 for (int k = 0; k < 4; ++k) eq(p + "/extent/" + std::to_string(k), (*x.extent)[k], (*y.extent)[k]);
             eq(p + "/joint_material", x.joint_material, y.joint_material);
+            eq(p + "/persistence", x.persistence, y.persistence);
+            eq(p + "/trace_length", x.trace_length, y.trace_length);
+            eq(p + "/stagger", x.stagger, y.stagger);
         });
         list("/load_tables", a.load_tables, b.load_tables, [this](const std::string& p, const LoadTable& x, const LoadTable& y) {
             eq(p + "/name", x.name, y.name);

@@ -73,6 +73,31 @@ TEST(ModelReader, UnknownKeysMissingFieldsAndWrongTypesAreNamed) {
     EXPECT_TRUE(has_diagnostic(missing.diagnostics, Severity::Error, "/materials/0/poisson_ratio", "missing"));
 }
 
+TEST(ModelReader, JointSetPersistenceFields) {
+    const ReadResult r = read_model_text(square_model_json(),
+                                         {"/joint_sets=[{\"angle\": 10, \"spacing\": 1},"
+                                          " {\"angle\": 20, \"spacing\": 2, \"persistence\": 0.6, \"trace_length\": 3.5,"
+                                          "  \"stagger\": 0.125}]"});
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    const JointSet& plain = r.model->joint_sets[0];
+    EXPECT_EQ(plain.persistence, 1.0);  // fully persistent unless told otherwise
+    EXPECT_EQ(plain.trace_length, 0.0);
+    EXPECT_EQ(plain.stagger, 0.5);
+    const JointSet& bridged = r.model->joint_sets[1];
+    EXPECT_EQ(bridged.persistence, 0.6);
+    EXPECT_EQ(bridged.trace_length, 3.5);
+    EXPECT_EQ(bridged.stagger, 0.125);
+
+    const ReadResult bad = read_model_text(square_model_json(),
+                                           {"/joint_sets=[{\"angle\": 0, \"spacing\": 1, \"persistence\": \"half\","
+                                            " \"trace_length\": [1], \"persistance\": 0.5}]"});
+    EXPECT_FALSE(bad.model);
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/joint_sets/0/persistence", "must be a number, got a string"))
+        << all_messages(bad.diagnostics);
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/joint_sets/0/trace_length", "must be a number, got an array"));
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/joint_sets/0/persistance", "unknown key"));
+}
+
 TEST(ModelReader, FormatAndVersionAreChecked) {
     const ReadResult wrong = read_model_text(square_model_json(), {"/version=2", "/format=\"dda\""});
     EXPECT_TRUE(has_diagnostic(wrong.diagnostics, Severity::Error, "/version", "version 2"));

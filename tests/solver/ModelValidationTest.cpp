@@ -2,6 +2,7 @@
 // outside every region, nothing fixed. Every problem must name the item by its JSON pointer.
 
 #include "TestModels.hpp"
+#include "model/ModelValidator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -93,6 +94,33 @@ TEST(ModelValidation, JointOutsideEveryRegion) {
                  "/joints/0/joint_material", "no joint material named \"glue\"");
 }
 
+TEST(ModelValidation, JointSetPersistenceTraceLengthAndStagger) {
+    const std::string set = "/joint_sets=[{\"angle\": 30, \"spacing\": 2, ";
+    expect_error({set + "\"persistence\": 0, \"trace_length\": 1}]"}, "/joint_sets/0/persistence", "(0, 1] (got 0)");
+    expect_error({set + "\"persistence\": -0.5, \"trace_length\": 1}]"}, "/joint_sets/0/persistence", "(0, 1]");
+    expect_error({set + "\"persistence\": 1.5}]"}, "/joint_sets/0/persistence", "(0, 1] (got 1.5)");
+    expect_error({set + "\"persistence\": 0.5}]"}, "/joint_sets/0/trace_length", "needs a positive trace length");
+    expect_error({set + "\"persistence\": 0.5, \"trace_length\": 0}]"}, "/joint_sets/0/trace_length",
+                 "needs a positive trace length");
+    expect_error({set + "\"trace_length\": -2}]"}, "/joint_sets/0/trace_length", "must not be negative");
+    expect_error({set + "\"persistence\": 0.5, \"trace_length\": 1, \"stagger\": 1}]"}, "/joint_sets/0/stagger",
+                 "[0, 1) (got 1)");
+    expect_error({set + "\"persistence\": 0.5, \"trace_length\": 1, \"stagger\": -0.1}]"}, "/joint_sets/0/stagger",
+                 "[0, 1)");
+    // 71 traces of 7071 segments each: far beyond the limit, refused before any is generated.
+    expect_error({"/joint_sets=[{\"angle\": 0, \"spacing\": 0.2, \"persistence\": 0.5, \"trace_length\": 0.001}]"},
+                 "/joint_sets/0/trace_length", "would generate more than 50000 joint segments");
+    // The trace guard still applies to persistent sets.
+    expect_error({"/joint_sets=[{\"angle\": 0, \"spacing\": 0.001}]"}, "/joint_sets/0/spacing",
+                 "would generate more than 5000 joints");
+    // Valid non-persistent sets pass: fully persistent with a trace length is fine too.
+    for (const std::string& ok : {set + "\"persistence\": 0.5, \"trace_length\": 1, \"stagger\": 0}]",
+                                  set + "\"persistence\": 1, \"trace_length\": 3}]"}) {
+        const Preprocessed p = preprocess_text(square_model_json(), {ok}, PreprocessStage::Validate);
+        EXPECT_TRUE(p.ok) << ok << "\n" << all_messages(p.diagnostics);
+    }
+}
+
 TEST(ModelValidation, ControlsOutOfRange) {
     expect_error({"/mesh/min_angle=40"}, "/mesh/min_angle", "34°");
     expect_error({"/mesh/size=-1"}, "/mesh/size", "positive");
@@ -112,4 +140,31 @@ TEST(ModelValidation, TooFineAMeshIsRefusedBeforeMeshing) {
     EXPECT_FALSE(p.ok);
     EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Error, "/mesh", "above the limit")) << all_messages(p.diagnostics);
     EXPECT_TRUE(p.mesh.triangles.empty());
+}
+
+// Load tables as an editor can leave them in memory (the reader refuses them in a file first).
+TEST(ModelValidation, LoadTablesNeedNamesPointsAndExistingReferences) {
+    Model m;
+    m.load_tables.resize(3);
+    m.load_tables[0].name = "ramp";
+    m.load_tables[0].points = {{0.0, 0.0}, {1.0, 1.0}};
+    m.load_tables[1].name = "ramp";
+    m.load_tables[1].points = {{0.0, 1.0}};
+    m.load_tables[2].points = {};
+    m.point_loads.resize(2);
+    m.point_loads[0].table = 2;
+    m.point_loads[1].table = 3;
+    m.edge_pressures.resize(1);
+    m.edge_pressures[0].from = {0.0, 0.0};
+    m.edge_pressures[0].to = {1.0, 0.0};
+    m.edge_pressures[0].table = -2;
+    std::vector<Diagnostic> d;
+    validate_model(m, d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/load_tables/0/name", "another load table")) << all_messages(d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/load_tables/1/name", "another load table")) << all_messages(d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/load_tables/2/name", "needs a name")) << all_messages(d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/load_tables/2/points", "at least one")) << all_messages(d);
+    EXPECT_FALSE(has_diagnostic(d, Severity::Error, "/point_loads/0/table", "")) << all_messages(d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/point_loads/1/table", "missing load table")) << all_messages(d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/edge_pressures/0/table", "missing load table")) << all_messages(d);
 }

@@ -55,7 +55,8 @@ Model everything_model() {
       "joints": [{"name": "fault", "points": [[-10, 0.1], [0.3, 5], [10, 7.77]], "joint_material": "smooth"},
                  {"points": [[-5, -10], [-5, 10]]}],
       "joint_sets": [{"name": "bedding", "angle": 12.5, "spacing": 0.7, "origin": [1, 2],
-                      "extent": [-10, -10, 0, 0], "joint_material": "smooth"},
+                      "extent": [-10, -10, 0, 0], "joint_material": "smooth",
+                      "persistence": 0.65, "trace_length": 2.5, "stagger": 0.3},
                      {"angle": 100, "spacing": 3}],
       "load_tables": [{"name": "ramp", "variable": "time", "points": [[0, 0], [1, 0.5], [2, 1]], "extrapolate": true},
                       {"name": "hold", "points": [[0, 1]]}],
@@ -137,6 +138,27 @@ TEST(ModelWriter, JointsGeneratedFromSetsAreNotWritten) {
     ASSERT_TRUE(again.model) << all_messages(again.diagnostics);
     EXPECT_EQ(again.model->joints.size(), explicit_joints);
     EXPECT_EQ(again.model->joint_sets.size(), m.joint_sets.size());
+}
+
+TEST(ModelWriter, JointSetPersistenceIsWrittenOnlyWhenNotTheDefault) {
+    Model m = everything_model();
+    ASSERT_EQ(m.joint_sets.size(), 2u);
+    const std::string text = write_model_text(m);
+    EXPECT_NE(text.find("\"persistence\": 0.65"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"trace_length\": 2.5"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"stagger\": 0.3"), std::string::npos) << text;
+    // The second set is fully persistent: written as files were before persistence existed.
+    m.joint_sets.erase(m.joint_sets.begin());
+    const std::string persistent = write_model_text(m);
+    EXPECT_EQ(persistent.find("persistence"), std::string::npos) << persistent;
+    EXPECT_EQ(persistent.find("trace_length"), std::string::npos) << persistent;
+    EXPECT_EQ(persistent.find("stagger"), std::string::npos) << persistent;
+    // A single field off its default is written alone, and read back.
+    m.joint_sets[0].stagger = 0.0;
+    const std::string staggered = write_model_text(m);
+    EXPECT_NE(staggered.find("\"stagger\": 0"), std::string::npos) << staggered;
+    EXPECT_EQ(staggered.find("persistence"), std::string::npos) << staggered;
+    expect_round_trip(m, "stagger only");
 }
 
 TEST(ModelWriter, AnglesAreDegreesInTheFile) {
