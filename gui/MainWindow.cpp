@@ -45,6 +45,7 @@
 #include <QStringList>
 #include <QThread>
 #include <QTimer>
+#include <QElapsedTimer>
 #include <QEventLoop>
 #include <QToolBar>
 #include <QUrl>
@@ -1124,6 +1125,7 @@ bool MainWindow::startRun()
 
     last_snapshot_.reset();
     shown_step_.clear();
+    plot_clock_.invalidate();
     results_stem_ = stem;
     progress_bar_->setRange(0, std::max(1, scene->model.analysis.steps));
     progress_bar_->setValue(0);
@@ -1179,6 +1181,12 @@ void MainWindow::onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot)
     last_snapshot_ = std::move(snapshot);
     shown_step_.clear();
     showResult();
+    // The history grows a flushed row per step: re-read it now and then for a live plot
+    // (about once a second, whatever the snapshot rate, so long histories stay cheap).
+    if (!plot_clock_.isValid() || plot_clock_.elapsed() >= 1000) {
+        plot_->load(QDir(running_folder_).absoluteFilePath(QStringLiteral("history.csv")));
+        plot_clock_.restart();
+    }
 }
 
 void MainWindow::showResult()

@@ -13,6 +13,7 @@
 #include "run/RunController.hpp"
 #include "run/RunOutput.hpp"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QString>
 
@@ -257,6 +258,7 @@ private:
     QThread* run_thread_ = nullptr;
     RunController* controller_ = nullptr;
     std::shared_ptr<const ResultSnapshot> last_snapshot_;
+    QElapsedTimer plot_clock_;  ///< since the plot last re-read the running history
     QString output_folder_;  ///< chosen by the user; empty = default
     QString running_folder_;  ///< of the current run
     int progress_ms_ = 100, snapshot_ms_ = 250;

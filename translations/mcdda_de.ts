@@ -229,718 +229,915 @@
         <translation>Kluftmaterial %1</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="63"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="62"/>
+        <source>Share of each trace that is joint; below 100 % the traces are cut into segments separated by rock bridges</source>
+        <translation>Anteil jeder Spur, der Kluft ist; unter 100 % wird jede Spur in Abschnitte zerlegt, getrennt durch Felsbrücken</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="65"/>
+        <source>Length of each joint segment along a trace</source>
+        <translation>Länge jedes Kluftabschnitts entlang einer Spur</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="68"/>
+        <source>Shift of the segment pattern from one trace to the next, in % of the period (segment plus bridge), so that the bridges do not line up</source>
+        <translation>Verschiebung des Abschnittsmusters von einer Spur zur nächsten, in % der Periode (Abschnitt plus Brücke), damit die Brücken nicht in einer Linie liegen</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="79"/>
         <source>Angle</source>
         <translation>Winkel</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="64"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="80"/>
         <source>Spacing</source>
         <translation>Abstand</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="65"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="81"/>
         <source>Origin x</source>
         <translation>Ursprung x</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="66"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="82"/>
         <source>Origin y</source>
         <translation>Ursprung y</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="68"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="84"/>
         <source>x min, y min, x max, y max</source>
         <translation>x min, y min, x max, y max</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="69"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="85"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="111"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="86"/>
+        <source>Persistence</source>
+        <translation>Durchtrennungsgrad</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="87"/>
+        <source>Trace length</source>
+        <translation>Spurlänge</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="88"/>
+        <source>Stagger</source>
+        <translation>Versatz</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="138"/>
         <source>The spacing must be positive.</source>
         <translation>Der Abstand muss positiv sein.</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="114"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="141"/>
         <source>The box needs x min &lt; x max and y min &lt; y max.</source>
         <translation>Das Rechteck braucht x min &lt; x max und y min &lt; y max.</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="142"/>
+        <source>The persistence must be above 0 %.</source>
+        <translation>Der Durchtrennungsgrad muss über 0 % liegen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="144"/>
+        <source>A persistence below 100 % needs a positive trace length.</source>
+        <translation>Ein Durchtrennungsgrad unter 100 % braucht eine positive Spurlänge.</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::LoadForm</name>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="73"/>
+        <source>Load tables</source>
+        <translation>Lasttabellen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="82"/>
+        <source>New</source>
+        <translation>Neu</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="85"/>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="92"/>
+        <source>Table</source>
+        <translation>Tabelle</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="97"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="100"/>
+        <source>Step number</source>
+        <translation>Schrittnummer</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="101"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="103"/>
+        <source>Variable</source>
+        <translation>Veränderliche</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="104"/>
+        <source>Extrapolate (else hold the last factor)</source>
+        <translation>Extrapolieren (sonst letzten Faktor halten)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="106"/>
+        <source>Beyond the last point, continue the last segment&apos;s slope</source>
+        <translation>Nach dem letzten Punkt die Steigung des letzten Abschnitts fortsetzen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="116"/>
+        <source>Add Row</source>
+        <translation>Zeile hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="119"/>
+        <source>Remove Row</source>
+        <translation>Zeile entfernen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="128"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="164"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="186"/>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="141"/>
+        <source>Point loads and edge pressures</source>
+        <translation>Punktlasten und Kantendrücke</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="150"/>
+        <source>Load</source>
+        <translation>Last</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="151"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="153"/>
+        <source>kN/m</source>
+        <translation>kN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="152"/>
+        <source>Force fx</source>
+        <translation>Kraft fx</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="154"/>
+        <source>Force fy</source>
+        <translation>Kraft fy</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="155"/>
+        <source>kPa</source>
+        <translation>kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="156"/>
+        <source>Normal pressure; positive pushes into the material</source>
+        <translation>Normaldruck; positiv drückt in das Material</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="157"/>
+        <source>Pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="162"/>
+        <source>The table whose factor multiplies the load; constant = factor 1</source>
+        <translation>Die Tabelle, deren Faktor die Last multipliziert; konstant = Faktor 1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="163"/>
+        <source>Load table</source>
+        <translation>Lasttabelle</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="177"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="179"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="181"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="180"/>
+        <source>gx</source>
+        <translation>gx</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="182"/>
+        <source>gy</source>
+        <translation>gy</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="183"/>
+        <source>Standard (0, −9.81)</source>
+        <translation>Standard (0, −9,81)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="205"/>
+        <source>Time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="205"/>
+        <source>Step [–]</source>
+        <translation>Schritt [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="205"/>
+        <source>Factor [–]</source>
+        <translation>Faktor [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="217"/>
+        <source>constant</source>
+        <translation>konstant</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="219"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="226"/>
+        <source>Point load &quot;%1&quot;</source>
+        <translation>Punktlast „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="227"/>
+        <source>Edge pressure &quot;%1&quot;</source>
+        <translation>Kantendruck „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="360"/>
+        <source>Not applied: row %1: %2 &quot;%3&quot; is not a number</source>
+        <translation>Nicht übernommen: Zeile %1: %2 „%3“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="362"/>
+        <source>abscissa</source>
+        <translation>Abszisse</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="362"/>
+        <source>factor</source>
+        <translation>Faktor</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="374"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="485"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="501"/>
+        <source>Not applied: %1</source>
+        <translation>Nicht übernommen: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="380"/>
+        <source>Change load table &quot;%1&quot;</source>
+        <translation>Lasttabelle „%1“ ändern</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="381"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="488"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="506"/>
+        <source>Applied.</source>
+        <translation>Übernommen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="401"/>
+        <source>Not added: %1</source>
+        <translation>Nicht hinzugefügt: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="406"/>
+        <source>Add load table &quot;%1&quot;</source>
+        <translation>Lasttabelle „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="408"/>
+        <source>Added &quot;%1&quot;.</source>
+        <translation>„%1“ hinzugefügt.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="421"/>
+        <source>Not deleted: load table &quot;%1&quot; is used by point load &quot;%2&quot;</source>
+        <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Punktlast „%2“ verwendet</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="428"/>
+        <source>Not deleted: load table &quot;%1&quot; is used by edge pressure &quot;%2&quot;</source>
+        <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Kantendruck „%2“ verwendet</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="441"/>
+        <source>Delete load table &quot;%1&quot;</source>
+        <translation>Lasttabelle „%1“ löschen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="442"/>
+        <source>Deleted &quot;%1&quot;.</source>
+        <translation>„%1“ gelöscht.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="469"/>
+        <source>Change point load &quot;%1&quot;</source>
+        <translation>Punktlast „%1“ ändern</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="482"/>
+        <source>Change edge pressure &quot;%1&quot;</source>
+        <translation>Kantendruck „%1“ ändern</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="505"/>
+        <source>Change gravity</source>
+        <translation>Schwerkraft ändern</translation>
     </message>
 </context>
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="137"/>
+        <location filename="../gui/MainWindow.cpp" line="143"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="166"/>
+        <location filename="../gui/MainWindow.cpp" line="174"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="169"/>
+        <location filename="../gui/MainWindow.cpp" line="177"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="170"/>
+        <location filename="../gui/MainWindow.cpp" line="178"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="173"/>
+        <location filename="../gui/MainWindow.cpp" line="181"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="174"/>
+        <location filename="../gui/MainWindow.cpp" line="182"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="176"/>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="178"/>
+        <location filename="../gui/MainWindow.cpp" line="186"/>
         <source>Recent &amp;Files</source>
         <translation>&amp;Zuletzt geöffnete Dateien</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
+        <location filename="../gui/MainWindow.cpp" line="190"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="186"/>
+        <location filename="../gui/MainWindow.cpp" line="194"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="187"/>
+        <location filename="../gui/MainWindow.cpp" line="195"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="190"/>
+        <location filename="../gui/MainWindow.cpp" line="198"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="194"/>
+        <location filename="../gui/MainWindow.cpp" line="202"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="197"/>
+        <location filename="../gui/MainWindow.cpp" line="205"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="198"/>
+        <location filename="../gui/MainWindow.cpp" line="206"/>
         <source>&amp;Fit</source>
         <translation>&amp;Einpassen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="201"/>
+        <location filename="../gui/MainWindow.cpp" line="209"/>
         <source>Show the whole model</source>
         <translation>Das ganze Modell zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="211"/>
+        <location filename="../gui/MainWindow.cpp" line="219"/>
         <source>&amp;Mesh</source>
         <translation>&amp;Netz</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="211"/>
+        <location filename="../gui/MainWindow.cpp" line="219"/>
         <source>Show the element edges</source>
         <translation>Die Elementkanten zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="212"/>
+        <location filename="../gui/MainWindow.cpp" line="220"/>
         <source>&amp;Joints</source>
         <translation>&amp;Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="212"/>
+        <location filename="../gui/MainWindow.cpp" line="220"/>
         <source>Show the joint traces</source>
         <translation>Die Kluftspuren zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="213"/>
+        <location filename="../gui/MainWindow.cpp" line="221"/>
         <source>&amp;Supports</source>
         <translation>A&amp;uflager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="213"/>
+        <location filename="../gui/MainWindow.cpp" line="221"/>
         <source>Show fixed points and rollers</source>
         <translation>Festpunkte und Rollenlager zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="214"/>
+        <location filename="../gui/MainWindow.cpp" line="222"/>
         <source>&amp;Loads</source>
         <translation>&amp;Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="214"/>
+        <location filename="../gui/MainWindow.cpp" line="222"/>
         <source>Show point loads and edge pressures</source>
         <translation>Punktlasten und Kantendrücke zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="215"/>
+        <location filename="../gui/MainWindow.cpp" line="223"/>
         <source>Measurement &amp;points</source>
         <translation>&amp;Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="215"/>
+        <location filename="../gui/MainWindow.cpp" line="223"/>
         <source>Show the measurement points</source>
         <translation>Die Messpunkte zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="216"/>
+        <location filename="../gui/MainWindow.cpp" line="224"/>
         <source>Le&amp;gend</source>
         <translation>Le&amp;gende</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="216"/>
+        <location filename="../gui/MainWindow.cpp" line="224"/>
         <source>Show the legend</source>
         <translation>Die Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="218"/>
+        <location filename="../gui/MainWindow.cpp" line="226"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster fangen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="222"/>
+        <location filename="../gui/MainWindow.cpp" line="230"/>
         <source>Drawn points snap to a grid (0.5 m) and to nearby region vertices</source>
         <translation>Gezeichnete Punkte rasten auf einem Raster (0,5 m) und an nahen Bereichsecken ein</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="230"/>
+        <location filename="../gui/MainWindow.cpp" line="238"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="231"/>
+        <location filename="../gui/MainWindow.cpp" line="239"/>
         <source>&amp;About mcdda</source>
         <translation>Ü&amp;ber mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="232"/>
+        <location filename="../gui/MainWindow.cpp" line="240"/>
         <source>About mcdda</source>
         <translation>Über mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="233"/>
+        <location filename="../gui/MainWindow.cpp" line="241"/>
         <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
         <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="244"/>
+        <location filename="../gui/MainWindow.cpp" line="252"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="246"/>
+        <location filename="../gui/MainWindow.cpp" line="254"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="250"/>
+        <location filename="../gui/MainWindow.cpp" line="258"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="258"/>
+        <location filename="../gui/MainWindow.cpp" line="266"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="272"/>
+        <location filename="../gui/MainWindow.cpp" line="280"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="273"/>
-        <source>Navigate: drag to pan, turn the wheel to zoom</source>
-        <translation>Navigieren: zum Verschieben ziehen, zum Zoomen das Mausrad drehen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="274"/>
+        <location filename="../gui/MainWindow.cpp" line="284"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="275"/>
+        <location filename="../gui/MainWindow.cpp" line="285"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="277"/>
+        <location filename="../gui/MainWindow.cpp" line="287"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="278"/>
+        <location filename="../gui/MainWindow.cpp" line="288"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="281"/>
+        <location filename="../gui/MainWindow.cpp" line="291"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="282"/>
+        <location filename="../gui/MainWindow.cpp" line="292"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="283"/>
+        <location filename="../gui/MainWindow.cpp" line="293"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="284"/>
+        <location filename="../gui/MainWindow.cpp" line="294"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="286"/>
+        <location filename="../gui/MainWindow.cpp" line="296"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="287"/>
+        <location filename="../gui/MainWindow.cpp" line="297"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="289"/>
+        <location filename="../gui/MainWindow.cpp" line="299"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="290"/>
+        <location filename="../gui/MainWindow.cpp" line="300"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="292"/>
+        <location filename="../gui/MainWindow.cpp" line="302"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="293"/>
+        <location filename="../gui/MainWindow.cpp" line="303"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="295"/>
+        <location filename="../gui/MainWindow.cpp" line="305"/>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="310"/>
+        <source>Delete the selected item or vertex</source>
+        <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="314"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Klu&amp;ftschar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="297"/>
+        <location filename="../gui/MainWindow.cpp" line="316"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="305"/>
+        <location filename="../gui/MainWindow.cpp" line="324"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="312"/>
+        <location filename="../gui/MainWindow.cpp" line="331"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="315"/>
+        <location filename="../gui/MainWindow.cpp" line="334"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="316"/>
+        <location filename="../gui/MainWindow.cpp" line="335"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="317"/>
+        <location filename="../gui/MainWindow.cpp" line="336"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="318"/>
+        <location filename="../gui/MainWindow.cpp" line="337"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="332"/>
+        <location filename="../gui/MainWindow.cpp" line="351"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="333"/>
-        <location filename="../gui/MainWindow.cpp" line="335"/>
+        <location filename="../gui/MainWindow.cpp" line="352"/>
+        <location filename="../gui/MainWindow.cpp" line="354"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="333"/>
+        <location filename="../gui/MainWindow.cpp" line="352"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="334"/>
+        <location filename="../gui/MainWindow.cpp" line="353"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="335"/>
+        <location filename="../gui/MainWindow.cpp" line="354"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="337"/>
+        <location filename="../gui/MainWindow.cpp" line="356"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="338"/>
+        <location filename="../gui/MainWindow.cpp" line="357"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="339"/>
+        <location filename="../gui/MainWindow.cpp" line="358"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="341"/>
+        <location filename="../gui/MainWindow.cpp" line="360"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="343"/>
+        <location filename="../gui/MainWindow.cpp" line="362"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="346"/>
+        <location filename="../gui/MainWindow.cpp" line="365"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="349"/>
+        <location filename="../gui/MainWindow.cpp" line="368"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="350"/>
+        <location filename="../gui/MainWindow.cpp" line="369"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="369"/>
+        <location filename="../gui/MainWindow.cpp" line="388"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="370"/>
+        <location filename="../gui/MainWindow.cpp" line="389"/>
         <source>No region contains the hole</source>
         <translation>Kein Bereich enthält die Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="388"/>
-        <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot;</source>
-        <translation>Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="447"/>
-        <source>Item</source>
-        <translation>Eintrag</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="447"/>
-        <source>Details</source>
-        <translation>Details</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="450"/>
+        <location filename="../gui/MainWindow.cpp" line="520"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="468"/>
-        <source>Regions</source>
-        <translation>Bereiche</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="473"/>
-        <source>no material</source>
-        <translation>kein Material</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="474"/>
-        <source>region %1</source>
-        <translation>Bereich %1</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="475"/>
-        <source>%1, %n vertices</source>
-        <translation>
-            <numerusform>%1, %n Ecke</numerusform>
-            <numerusform>%1, %n Ecken</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="477"/>
-        <source>Joints</source>
-        <translation>Klüfte</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="478"/>
-        <source>Explicit</source>
-        <translation>Einzelklüfte</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="481"/>
-        <source>Set %1</source>
-        <translation>Kluftschar %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="482"/>
-        <source>spacing %1 m</source>
-        <translation>Abstand %1 m</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="490"/>
-        <source>%1 to %2</source>
-        <translation>%1 bis %2</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="491"/>
-        <source>joint %1</source>
-        <translation>Kluft %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="495"/>
-        <source>Materials</source>
-        <translation>Materialien</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="496"/>
-        <source>rock/soil</source>
-        <translation>Fels/Boden</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="497"/>
-        <location filename="../gui/MainWindow.cpp" line="584"/>
+        <location filename="../gui/MainWindow.cpp" line="599"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="498"/>
-        <source>Supports</source>
-        <translation>Auflager</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="500"/>
-        <source>fixed point %1</source>
-        <translation>Festpunkt %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="502"/>
-        <source>roller %1 to %2</source>
-        <translation>Rollenlager %1 bis %2</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="503"/>
-        <source>Loads</source>
-        <translation>Lasten</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="505"/>
-        <source>point load at %1</source>
-        <translation>Punktlast bei %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="507"/>
-        <source>pressure %1 Pa</source>
-        <translation>Kantendruck %1 Pa</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="508"/>
-        <source>Measurement points</source>
-        <translation>Messpunkte</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="535"/>
+        <location filename="../gui/MainWindow.cpp" line="550"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="551"/>
+        <location filename="../gui/MainWindow.cpp" line="566"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="553"/>
-        <location filename="../gui/MainWindow.cpp" line="676"/>
+        <location filename="../gui/MainWindow.cpp" line="568"/>
+        <location filename="../gui/MainWindow.cpp" line="692"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="554"/>
+        <location filename="../gui/MainWindow.cpp" line="569"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="561"/>
+        <location filename="../gui/MainWindow.cpp" line="576"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="562"/>
+        <location filename="../gui/MainWindow.cpp" line="577"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="575"/>
+        <location filename="../gui/MainWindow.cpp" line="590"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="594"/>
+        <location filename="../gui/MainWindow.cpp" line="609"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="605"/>
+        <location filename="../gui/MainWindow.cpp" line="620"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="605"/>
+        <location filename="../gui/MainWindow.cpp" line="620"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="624"/>
-        <location filename="../gui/MainWindow.cpp" line="751"/>
-        <location filename="../gui/MainWindow.cpp" line="782"/>
+        <location filename="../gui/MainWindow.cpp" line="639"/>
+        <location filename="../gui/MainWindow.cpp" line="767"/>
+        <location filename="../gui/MainWindow.cpp" line="798"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="646"/>
+        <location filename="../gui/MainWindow.cpp" line="662"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="685"/>
+        <location filename="../gui/MainWindow.cpp" line="701"/>
         <source>Messages about the model appear here.</source>
         <translation>Meldungen zum Modell erscheinen hier.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="686"/>
+        <location filename="../gui/MainWindow.cpp" line="702"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="696"/>
+        <location filename="../gui/MainWindow.cpp" line="712"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="703"/>
+        <location filename="../gui/MainWindow.cpp" line="719"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="712"/>
+        <location filename="../gui/MainWindow.cpp" line="728"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="713"/>
+        <location filename="../gui/MainWindow.cpp" line="729"/>
         <source>&amp;Picture (PNG)...</source>
         <translation>&amp;Bild (PNG)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="714"/>
+        <location filename="../gui/MainWindow.cpp" line="730"/>
         <source>Export picture</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="715"/>
+        <location filename="../gui/MainWindow.cpp" line="731"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="720"/>
+        <location filename="../gui/MainWindow.cpp" line="736"/>
         <source>Save the picture of the view as a PNG file</source>
         <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="721"/>
+        <location filename="../gui/MainWindow.cpp" line="737"/>
         <source>Saved &amp;Steps (PVD/VTU)...</source>
         <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="722"/>
+        <location filename="../gui/MainWindow.cpp" line="738"/>
         <source>Export saved steps to</source>
         <translation>Gespeicherte Zeitschritte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="726"/>
+        <location filename="../gui/MainWindow.cpp" line="742"/>
         <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
         <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="727"/>
+        <location filename="../gui/MainWindow.cpp" line="743"/>
         <source>&amp;History (CSV)...</source>
         <translation>&amp;Verlauf (CSV)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="728"/>
+        <location filename="../gui/MainWindow.cpp" line="744"/>
         <source>Export history</source>
         <translation>Verlauf exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="729"/>
+        <location filename="../gui/MainWindow.cpp" line="745"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="733"/>
+        <location filename="../gui/MainWindow.cpp" line="749"/>
         <source>Copy the run&apos;s history of loads and measured displacements</source>
         <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="739"/>
+        <location filename="../gui/MainWindow.cpp" line="755"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="758"/>
+        <location filename="../gui/MainWindow.cpp" line="774"/>
         <source>There are no saved steps yet: run the model first.</source>
         <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="767"/>
+        <location filename="../gui/MainWindow.cpp" line="783"/>
         <source>Copied %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 kopiert</numerusform>
@@ -948,159 +1145,154 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="774"/>
+        <location filename="../gui/MainWindow.cpp" line="790"/>
         <source>There is no history yet: run the model first.</source>
         <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="835"/>
+        <location filename="../gui/MainWindow.cpp" line="851"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="855"/>
+        <location filename="../gui/MainWindow.cpp" line="871"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="856"/>
+        <location filename="../gui/MainWindow.cpp" line="872"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="873"/>
-        <source>Reading %1...</source>
-        <translation>%1 wird gelesen...</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="916"/>
+        <location filename="../gui/MainWindow.cpp" line="949"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="977"/>
-        <location filename="../gui/MainWindow.cpp" line="980"/>
+        <location filename="../gui/MainWindow.cpp" line="1011"/>
+        <location filename="../gui/MainWindow.cpp" line="1014"/>
         <source>&amp;Run</source>
         <translation>Be&amp;rechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="978"/>
+        <location filename="../gui/MainWindow.cpp" line="1012"/>
         <source>Run</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="984"/>
+        <location filename="../gui/MainWindow.cpp" line="1018"/>
         <source>Analyse the model; the picture follows the run</source>
         <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="985"/>
-        <location filename="../gui/MainWindow.cpp" line="1041"/>
+        <location filename="../gui/MainWindow.cpp" line="1019"/>
+        <location filename="../gui/MainWindow.cpp" line="1075"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="988"/>
+        <location filename="../gui/MainWindow.cpp" line="1022"/>
         <source>Pause or resume the run</source>
         <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="989"/>
+        <location filename="../gui/MainWindow.cpp" line="1023"/>
         <source>&amp;Stop</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="993"/>
+        <location filename="../gui/MainWindow.cpp" line="1027"/>
         <source>Stop the run after the current step; the results so far are kept</source>
         <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="995"/>
+        <location filename="../gui/MainWindow.cpp" line="1029"/>
         <source>Results &amp;Folder...</source>
         <translation>Ergebnis&amp;ordner...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="997"/>
+        <location filename="../gui/MainWindow.cpp" line="1031"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1000"/>
+        <location filename="../gui/MainWindow.cpp" line="1034"/>
         <source>Choose where runs write their files</source>
         <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1006"/>
+        <location filename="../gui/MainWindow.cpp" line="1040"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1008"/>
+        <location filename="../gui/MainWindow.cpp" line="1042"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1009"/>
+        <location filename="../gui/MainWindow.cpp" line="1043"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1010"/>
+        <location filename="../gui/MainWindow.cpp" line="1044"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1011"/>
+        <location filename="../gui/MainWindow.cpp" line="1045"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1012"/>
+        <location filename="../gui/MainWindow.cpp" line="1046"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1013"/>
+        <location filename="../gui/MainWindow.cpp" line="1047"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1014"/>
+        <location filename="../gui/MainWindow.cpp" line="1048"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1015"/>
+        <location filename="../gui/MainWindow.cpp" line="1049"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1016"/>
+        <location filename="../gui/MainWindow.cpp" line="1050"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1017"/>
+        <location filename="../gui/MainWindow.cpp" line="1051"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1020"/>
+        <location filename="../gui/MainWindow.cpp" line="1054"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1025"/>
+        <location filename="../gui/MainWindow.cpp" line="1059"/>
         <source>Scale factor of the drawn displacements (0 = undeformed)</source>
         <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1041"/>
+        <location filename="../gui/MainWindow.cpp" line="1075"/>
         <source>Res&amp;ume</source>
         <translation>&amp;Fortsetzen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1098"/>
+        <location filename="../gui/MainWindow.cpp" line="1133"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1108,27 +1300,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1109"/>
+        <location filename="../gui/MainWindow.cpp" line="1144"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1112"/>
+        <location filename="../gui/MainWindow.cpp" line="1147"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1123"/>
+        <location filename="../gui/MainWindow.cpp" line="1158"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1129"/>
+        <location filename="../gui/MainWindow.cpp" line="1164"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1170"/>
+        <location filename="../gui/MainWindow.cpp" line="1211"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -1136,62 +1328,87 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1171"/>
+        <location filename="../gui/MainWindow.cpp" line="1212"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1172"/>
+        <location filename="../gui/MainWindow.cpp" line="1213"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1173"/>
+        <location filename="../gui/MainWindow.cpp" line="1214"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1176"/>
+        <location filename="../gui/MainWindow.cpp" line="1217"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1183"/>
+        <location filename="../gui/MainWindow.cpp" line="1224"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1183"/>
+        <location filename="../gui/MainWindow.cpp" line="1224"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1185"/>
+        <location filename="../gui/MainWindow.cpp" line="1226"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="927"/>
+        <location filename="../gui/MainWindow.cpp" line="960"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="125"/>
+        <location filename="../gui/MainWindow.cpp" line="131"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="931"/>
+        <location filename="../gui/MainWindow.cpp" line="281"/>
+        <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
+        <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="429"/>
+        <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
+        <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="475"/>
+        <source>Selected %1: drag to move, Delete removes</source>
+        <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="483"/>
+        <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
+        <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="890"/>
+        <source>Reading and meshing %1...</source>
+        <translation>%1 wird gelesen und vernetzt...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="964"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="937"/>
+        <location filename="../gui/MainWindow.cpp" line="970"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="946"/>
+        <location filename="../gui/MainWindow.cpp" line="979"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -1199,12 +1416,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="959"/>
+        <location filename="../gui/MainWindow.cpp" line="993"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="963"/>
+        <location filename="../gui/MainWindow.cpp" line="997"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -1212,14 +1429,142 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="966"/>
+        <location filename="../gui/MainWindow.cpp" line="1000"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="967"/>
+        <location filename="../gui/MainWindow.cpp" line="1001"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::MeshForm</name>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="53"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="54"/>
+        <source>automatic</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="55"/>
+        <source>Target longest edge of a triangle; 0 = automatic (1/20 of the model&apos;s diagonal)</source>
+        <translation>Angestrebte längste Dreieckskante; 0 = automatisch (1/20 der Modelldiagonale)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="56"/>
+        <source>Element size</source>
+        <translation>Elementgröße</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="57"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="58"/>
+        <source>Smallest angle a triangle may have, (0°, 34°]</source>
+        <translation>Kleinster zulässiger Dreieckswinkel, (0°, 34°]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="59"/>
+        <source>Minimum angle</source>
+        <translation>Mindestwinkel</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="62"/>
+        <source>Growth of the size away from a local refinement: size = local size + grading × (distance − radius)</source>
+        <translation>Zunahme der Größe außerhalb einer lokalen Verfeinerung: Größe = lokale Größe + Gradierung × (Abstand − Radius)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="64"/>
+        <source>Grading [–]</source>
+        <translation>Gradierung [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="65"/>
+        <source>elements</source>
+        <translation>Elemente</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="68"/>
+        <source>The mesher refuses a model whose size field asks for more triangles</source>
+        <translation>Der Vernetzer lehnt ein Modell ab, dessen Größenfeld mehr Dreiecke verlangt</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="69"/>
+        <source>Element limit</source>
+        <translation>Elementgrenze</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="73"/>
+        <source>At [m]</source>
+        <translation>Bei [m]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="73"/>
+        <source>Size [m]</source>
+        <translation>Größe [m]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="73"/>
+        <source>Radius [m]</source>
+        <translation>Radius [m]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="79"/>
+        <source>Local refinements</source>
+        <translation>Lokale Verfeinerungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="82"/>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="109"/>
+        <source>(%1, %2)</source>
+        <translation>(%1, %2)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="110"/>
+        <source>(%1, %2) – (%3, %4)</source>
+        <translation>(%1, %2) – (%3, %4)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="139"/>
+        <source>Not applied: local refinement %1: %2 &quot;%3&quot; is not a number</source>
+        <translation>Nicht übernommen: lokale Verfeinerung %1: %2 „%3“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="141"/>
+        <source>size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="141"/>
+        <source>radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="152"/>
+        <source>Not applied: %1</source>
+        <translation>Nicht übernommen: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="156"/>
+        <source>Change mesh controls</source>
+        <translation>Vernetzungsvorgaben ändern</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/MeshForm.cpp" line="157"/>
+        <source>Applied.</source>
+        <translation>Übernommen.</translation>
     </message>
 </context>
 <context>
@@ -1259,306 +1604,524 @@
         <source>Add joint set &quot;%1&quot;</source>
         <translation>Kluftschar „%1“ hinzufügen</translation>
     </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="158"/>
+        <source>Move %1</source>
+        <translation>%1 verschieben</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="167"/>
+        <source>Delete %1</source>
+        <translation>%1 löschen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="180"/>
+        <source>region %1</source>
+        <translation>Bereich %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="181"/>
+        <source>joint %1</source>
+        <translation>Kluft %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="182"/>
+        <source>fixed point %1</source>
+        <translation>Festpunkt %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="183"/>
+        <source>roller %1</source>
+        <translation>Rollenlager %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="184"/>
+        <source>load %1</source>
+        <translation>Last %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="185"/>
+        <source>pressure %1</source>
+        <translation>Kantendruck %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="186"/>
+        <source>point %1</source>
+        <translation>Punkt %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="189"/>
+        <source>hole %1 of %2</source>
+        <translation>Loch %1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="190"/>
+        <source>vertex %1 of %2</source>
+        <translation>Eckpunkt %1 von %2</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::ModelTree</name>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="45"/>
+        <source>Item</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="45"/>
+        <source>Details</source>
+        <translation>Details</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="70"/>
+        <source>Regions</source>
+        <translation>Bereiche</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="75"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="92"/>
+        <source>no material</source>
+        <translation>kein Material</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="76"/>
+        <source>region %1</source>
+        <translation>Bereich %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/widgets/ModelTree.cpp" line="77"/>
+        <source>%1, %n vertices</source>
+        <translation>
+            <numerusform>%1, %n Eckpunkt</numerusform>
+            <numerusform>%1, %n Eckpunkte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
+        <source>hole %1</source>
+        <translation>Loch %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
+        <source>%n vertices</source>
+        <translation>
+            <numerusform>%n Eckpunkt</numerusform>
+            <numerusform>%n Eckpunkte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="87"/>
+        <source>Blocks</source>
+        <translation>Blöcke</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="95"/>
+        <source>block %1</source>
+        <translation>Block %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/widgets/ModelTree.cpp" line="96"/>
+        <source>%1, %2 m², %n elements</source>
+        <translation>
+            <numerusform>%1, %2 m², %n Element</numerusform>
+            <numerusform>%1, %2 m², %n Elemente</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="100"/>
+        <source>Joints</source>
+        <translation>Klüfte</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="101"/>
+        <source>Explicit</source>
+        <translation>Einzelklüfte</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="105"/>
+        <source>spacing %1 m</source>
+        <translation>Abstand %1 m</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
+        <source>, persistence %1 %, joints %2 m long</source>
+        <translation>, Durchtrennungsgrad %1 %, Klüfte %2 m lang</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="108"/>
+        <source>Set %1</source>
+        <translation>Kluftschar %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="117"/>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="118"/>
+        <source>joint %1</source>
+        <translation>Kluft %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="123"/>
+        <source>Materials</source>
+        <translation>Materialien</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="124"/>
+        <source>rock/soil</source>
+        <translation>Fels/Boden</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="125"/>
+        <source>joint</source>
+        <translation>Kluft</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="126"/>
+        <source>Supports</source>
+        <translation>Auflager</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
+        <source>fixed point %1</source>
+        <translation>Festpunkt %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
+        <source>roller %1 to %2</source>
+        <translation>Rollenlager %1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="134"/>
+        <source>Loads</source>
+        <translation>Lasten</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="136"/>
+        <source>point load at %1</source>
+        <translation>Punktlast bei %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="139"/>
+        <source>pressure %1 Pa</source>
+        <translation>Kantendruck %1 Pa</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="141"/>
+        <source>Measurement points</source>
+        <translation>Messpunkte</translation>
+    </message>
 </context>
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="103"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="70"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="111"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="104"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="71"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="105"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="72"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="106"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="73"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="122"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="76"/>
+        <source>Loads</source>
+        <translation>Lasten</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="79"/>
+        <source>Mesh</source>
+        <translation>Netz</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="95"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="114"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="157"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="115"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="116"/>
         <source>Young&apos;s modulus E</source>
         <translation>Elastizitätsmodul E</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="119"/>
         <source>Poisson&apos;s ratio ν [–]</source>
         <translation>Querdehnzahl ν [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="153"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="120"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="121"/>
         <source>Unit weight γ</source>
         <translation>Wichte γ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="161"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="122"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="160"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="162"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="156"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="123"/>
         <source>Cohesion c</source>
         <translation>Kohäsion c</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="157"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="159"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="191"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="124"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="158"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="158"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="125"/>
         <source>Friction angle φ</source>
         <translation>Reibungswinkel φ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="160"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
         <source>Dilation angle ψ</source>
         <translation>Dilatanzwinkel ψ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="162"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
         <source>Tensile strength</source>
         <translation>Zugfestigkeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="163"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
         <source>Plastic (Mohr–Coulomb)</source>
         <translation>Plastisch (Mohr-Coulomb)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="291"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="170"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="214"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="159"/>
         <source>Friction angle φj</source>
         <translation>Reibungswinkel φj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="161"/>
         <source>Cohesion cj</source>
         <translation>Kohäsion cj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="163"/>
         <source>Tensile strength tj</source>
         <translation>Zugfestigkeit tj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="164"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="167"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="198"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="165"/>
         <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
         <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
         <source>Normal stiffness kn</source>
         <translation>Normalsteifigkeit kn</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="168"/>
         <source>Shear stiffness; 0 = automatic</source>
         <translation>Schubsteifigkeit; 0 = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="169"/>
         <source>Shear stiffness ks</source>
         <translation>Schubsteifigkeit ks</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="221"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="223"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="237"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
         <source>Max displacement ratio [–]</source>
         <translation>Max. Verschiebungsverhältnis [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="236"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="237"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
         <source>Penalty</source>
         <translation>Penalty</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="242"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="210"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="242"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="286"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="290"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="322"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="327"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="294"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="439"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="465"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="516"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="406"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="432"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="457"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="483"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="443"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="469"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="494"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="520"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="410"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="436"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="461"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="487"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>

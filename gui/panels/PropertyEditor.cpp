@@ -2,6 +2,9 @@
 
 #include "document/ModelDocument.hpp"
 #include "model/ModelValidator.hpp"
+#include "panels/FormFields.hpp"
+#include "panels/LoadForm.hpp"
+#include "panels/MeshForm.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -22,41 +25,14 @@ namespace mcdda::gui {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi / 180.0;
+using form::deg;
+using form::display;
+using form::number;
+using form::si;
+using form::status_label;
+using form::to_qt;
+
 constexpr double standard_gravity = 9.81;  // as the model reader: unit weight = ρ g
-
-QString to_qt(const std::string& s) { return QString::fromStdString(s); }
-
-/// A number field with its unit shown after the value.
-QDoubleSpinBox* number(const QString& name, const QString& unit, double min, double max, int decimals,
-                       QWidget* parent)
-{
-    auto* box = new QDoubleSpinBox(parent);
-    box->setObjectName(name);
-    box->setRange(min, max);
-    box->setDecimals(decimals);
-    box->setKeyboardTracking(false);
-    box->setAccelerated(true);
-    if (!unit.isEmpty()) box->setSuffix(QLatin1Char(' ') + unit);
-    return box;
-}
-
-/// Shows `value` (already in the field's unit) and remembers what was shown, so an untouched
-/// field gives back the exact SI value instead of a rounded one.
-void display(QDoubleSpinBox* box, double value)
-{
-    box->setValue(value);
-    box->setProperty("shown", box->value());
-}
-
-/// The field's value converted to SI by `factor`, or `original` when the field is untouched.
-double si(const QDoubleSpinBox* box, double original, double factor)
-{
-    const QVariant shown = box->property("shown");
-    if (shown.isValid() && shown.toDouble() == box->value()) return original;
-    return box->value() * factor;
-}
 
 bool same(const Material& a, const Material& b)
 {
@@ -85,15 +61,6 @@ bool same(const InitialStress& a, const InitialStress& b)
            a.k0 == b.k0;
 }
 
-QLabel* status_label(const QString& name, QWidget* parent)
-{
-    auto* label = new QLabel(parent);
-    label->setObjectName(name);
-    label->setWordWrap(true);
-    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    return label;
-}
-
 }  // namespace
 
 PropertyEditor::PropertyEditor(ModelDocument* document, QWidget* parent) : QWidget(parent), document_(document)
@@ -104,6 +71,12 @@ PropertyEditor::PropertyEditor(ModelDocument* document, QWidget* parent) : QWidg
     tabs_->addTab(createJointMaterialForm(), tr("Joint material"));
     tabs_->addTab(createAnalysisForm(), tr("Analysis"));
     tabs_->addTab(createInitialStressForm(), tr("In-situ stress"));
+    load_form_ = new LoadForm(document_, this);
+    load_form_->setObjectName(QStringLiteral("loadForm"));
+    tabs_->addTab(load_form_, tr("Loads"));
+    mesh_form_ = new MeshForm(document_, this);
+    mesh_form_->setObjectName(QStringLiteral("meshForm"));
+    tabs_->addTab(mesh_form_, tr("Mesh"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(tabs_);
@@ -122,12 +95,6 @@ QString PropertyEditor::refusal(const Model& candidate, const std::string& prefi
         if (concerns) return tr("%1 (%2)").arg(to_qt(d.message), to_qt(d.path));
     }
     return {};
-}
-
-void PropertyEditor::setStatus(QLabel* label, const QString& text, bool error)
-{
-    label->setStyleSheet(error ? QStringLiteral("color: #b00020;") : QString());
-    label->setText(text);
 }
 
 // --- forms -------------------------------------------------------------------------------
@@ -436,11 +403,11 @@ bool PropertyEditor::applyMaterial()
     candidate.materials[static_cast<std::size_t>(i)] = x;
     const QString reason = refusal(candidate, "/materials/" + std::to_string(i));
     if (!reason.isEmpty()) {
-        setStatus(mat_status_, tr("Not applied: %1").arg(reason), true);
+        form::set_status(mat_status_, tr("Not applied: %1").arg(reason), true);
         return false;
     }
     document_->setMaterial(i, x);  // → changed() → refresh()
-    setStatus(mat_status_, tr("Applied."), false);
+    form::set_status(mat_status_, tr("Applied."), false);
     return true;
 }
 
@@ -462,11 +429,11 @@ bool PropertyEditor::applyJointMaterial()
     candidate.joint_materials[static_cast<std::size_t>(i)] = x;
     const QString reason = refusal(candidate, "/joint_materials/" + std::to_string(i));
     if (!reason.isEmpty()) {
-        setStatus(jm_status_, tr("Not applied: %1").arg(reason), true);
+        form::set_status(jm_status_, tr("Not applied: %1").arg(reason), true);
         return false;
     }
     document_->setJointMaterial(i, x);
-    setStatus(jm_status_, tr("Applied."), false);
+    form::set_status(jm_status_, tr("Applied."), false);
     return true;
 }
 
@@ -487,11 +454,11 @@ bool PropertyEditor::applyAnalysis()
     candidate.analysis = a;
     const QString reason = refusal(candidate, "/analysis");
     if (!reason.isEmpty()) {
-        setStatus(an_status_, tr("Not applied: %1").arg(reason), true);
+        form::set_status(an_status_, tr("Not applied: %1").arg(reason), true);
         return false;
     }
     document_->setAnalysisSettings(a);
-    setStatus(an_status_, tr("Applied."), false);
+    form::set_status(an_status_, tr("Applied."), false);
     return true;
 }
 
@@ -513,11 +480,11 @@ bool PropertyEditor::applyInitialStress()
     candidate.initial_stress = s;
     const QString reason = refusal(candidate, "/initial_stress");
     if (!reason.isEmpty()) {
-        setStatus(is_status_, tr("Not applied: %1").arg(reason), true);
+        form::set_status(is_status_, tr("Not applied: %1").arg(reason), true);
         return false;
     }
     document_->setInitialStress(s);
-    setStatus(is_status_, tr("Applied."), false);
+    form::set_status(is_status_, tr("Applied."), false);
     return true;
 }
 

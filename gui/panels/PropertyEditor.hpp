@@ -1,7 +1,8 @@
 #pragma once
 /// \file PropertyEditor.hpp
 /// The Properties dock: forms for the materials, the joint materials, the analysis settings
-/// and the in-situ stress of the document's model. Values are shown in the units of the model
+/// and the in-situ stress of the document's model, plus the Loads (LoadForm.hpp) and Mesh
+/// (MeshForm.hpp) tabs, which follow the same rules. Values are shown in the units of the model
 /// file (MPa, kPa, kN/m³, degrees; in-situ stress compression positive) with the unit next to
 /// every field. Apply (or Enter in a field) converts them to SI, checks the changed model with
 /// validate_model() and either refuses — the first error about the edited item is shown in the
@@ -26,6 +27,8 @@ class QTabWidget;
 
 namespace mcdda::gui {
 
+class LoadForm;
+class MeshForm;
 class ModelDocument;
 
 class PropertyEditor : public QWidget {
@@ -51,6 +54,10 @@ public:
     QString analysisStatus() const;
     QString initialStressStatus() const;
 
+    /// The Loads and Mesh tabs.
+    LoadForm* loadForm() const { return load_form_; }
+    MeshForm* meshForm() const { return mesh_form_; }
+
 public slots:
     /// Apply the form: true when the change was applied (or there was nothing to change).
     bool applyMaterial();
@@ -70,12 +77,12 @@ private:
     void loadAnalysis();
     void loadInitialStress();
     void updateStressFields();
-    /// Shows `text` in `label`, red when it is a refusal.
-    static void setStatus(QLabel* label, const QString& text, bool error);
 
     ModelDocument* document_;
     bool loading_ = false;
     QTabWidget* tabs_ = nullptr;
+    LoadForm* load_form_ = nullptr;
+    MeshForm* mesh_form_ = nullptr;
 
     QComboBox* material_box_ = nullptr;
     QLineEdit* mat_name_ = nullptr;

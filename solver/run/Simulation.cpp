@@ -21,6 +21,8 @@ double seconds_since(Clock::time_point start) {
 }
 
 constexpr int max_time_step_cuts = 30;
+/// A plastic step of a model with contacts is a collapse only below this fraction of the set Δt.
+constexpr double plastic_collapse_time_step = 1e-4;
 
 // Time integration: Newmark with γ = 0.7, β = (γ + ½)²/4. Shi's DDA scheme (β = ½, γ = 1) does
 // not damp the highest frequencies at all: the velocity of a stiff contact spring flips sign every
@@ -439,6 +441,16 @@ StepReport Simulation::advance() {
         Eigen::VectorXd d;
         try {
             d = solve_increments(external, dt, contacts, iterations);
+        } catch (const PlasticCollapse&) {
+            // Between blocks, rock asked to carry too much is often a wrong contact guess at this
+            // Δt (a joint that should open or slide); a smaller Δt adds inertia and lets the
+            // contacts sort themselves out, as for unsettled contacts. Without contacts, or once
+            // Δt is tiny, it is a collapse.
+            const bool any_contact = std::any_of(contacts.begin(), contacts.end(),
+                                                 [](const Contact& c) { return c.state != ContactState::Open; });
+            if (!any_contact || dt < plastic_collapse_time_step * largest_step) throw;
+            d = Eigen::VectorXd::Zero(state_.displacement.size());
+            iterations = 0;  // not settled: Δt is halved below
         } catch (const SingularSystem& e) {
             // A block that lost its contacts is free: only inertia holds it, and at this Δt too
             // little of it. A smaller Δt adds inertia (M/βΔt²); give up only when Δt is tiny.

@@ -3,6 +3,7 @@
 // results while the GUI stays responsive.
 
 #include "MainWindow.hpp"
+#include "results/HistoryPlot.hpp"
 #include "run/RunController.hpp"
 #include "widgets/ModelView.hpp"
 
@@ -15,6 +16,7 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QtTest>
+#include <QLineSeries>
 
 #include <memory>
 
@@ -183,6 +185,12 @@ void RunTest::stopKeepsResultsAndGuiResponsive()
     QTest::qWait(300);  // the solver keeps running; the event loop must too
     QVERIFY2(ticks > ticks_at_progress + 5, qPrintable(QStringLiteral("%1 -> %2").arg(ticks_at_progress).arg(ticks)));
     QVERIFY(window.isRunning());
+
+    // The plot follows the history while the run goes on (re-read about once a second).
+    QTRY_VERIFY_WITH_TIMEOUT(window.historyPlot()->series()->count() > 0, 5000);
+    QVERIFY(window.isRunning());
+    const int rows_seen = window.historyPlot()->series()->count();
+    QTRY_VERIFY_WITH_TIMEOUT(window.historyPlot()->series()->count() > rows_seen, 5000);
 
     // Paused: no more progress; Stop still ends it.
     QAction* pause = window.findChild<QAction*>(QStringLiteral("pauseAction"));

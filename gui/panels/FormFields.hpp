@@ -1,0 +1,45 @@
+#pragma once
+/// \file FormFields.hpp
+/// Small helpers shared by the Properties dock's forms (PropertyEditor, LoadForm, MeshForm):
+/// number fields with their unit, exact round trips of untouched values, status lines.
+
+#include <QString>
+
+#include <string>
+
+class QDoubleSpinBox;
+class QLabel;
+class QWidget;
+
+namespace mcdda::gui::form {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double deg = pi / 180.0;
+
+inline QString to_qt(const std::string& s) { return QString::fromStdString(s); }
+
+/// A number field with its unit shown after the value.
+QDoubleSpinBox* number(const QString& name, const QString& unit, double min, double max, int decimals,
+                       QWidget* parent);
+
+/// Shows `value` (already in the field's unit) and remembers what was shown, so an untouched
+/// field gives back the exact SI value instead of a rounded one.
+void display(QDoubleSpinBox* box, double value);
+
+/// The field's value converted to SI by `factor`, or `original` when the field is untouched.
+double si(const QDoubleSpinBox* box, double original, double factor);
+
+/// A word-wrapped, selectable status line under a form.
+QLabel* status_label(const QString& name, QWidget* parent);
+
+/// Shows `text` in `label`, red when it is a refusal.
+void set_status(QLabel* label, const QString& text, bool error);
+
+/// A number as text for a table cell: the shortest form that reads back to the same double.
+QString cell_text(double value);
+
+/// Reads a table cell: the user's locale first (without group separators, so "1.500" is never
+/// 1500 in a German locale), then the C locale. False when the text is not a finite number.
+bool cell_value(const QString& text, double* value);
+
+}  // namespace mcdda::gui::form
