@@ -656,6 +656,17 @@ void MainWindow::onDocumentChanged()
     updateRunActions();
 }
 
+bool MainWindow::meshModel()
+{
+    if (isRunning() || loading_) return false;
+    show_mesh_->setChecked(true);  // what was asked for is seen
+    if (isPreprocessing()) return true;  // a newer picture is on its way already
+    requested_ = ++generation_;
+    startPreprocess();
+    updateRunActions();
+    return true;
+}
+
 void MainWindow::startPreprocess()
 {
     running_ = requested_;
@@ -1011,6 +1022,13 @@ void MainWindow::createRunActions()
     QMenu* run = menuBar()->addMenu(tr("&Run"));
     QToolBar* bar = addToolBar(tr("Run"));
     bar->setObjectName(QStringLiteral("run"));
+    mesh_action_ = run->addAction(tr("&Mesh"), this, &MainWindow::meshModel);
+    mesh_action_->setObjectName(QStringLiteral("meshAction"));
+    mesh_action_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+    mesh_action_->setIcon(QIcon(QStringLiteral(":/icons/mesh.svg")));
+    mesh_action_->setStatusTip(tr("Cut the blocks and mesh them in the background (edits do this by "
+                                  "themselves); the statistics go to the status bar and the Messages dock"));
+    bar->addAction(mesh_action_);
     run_action_ = run->addAction(tr("&Run"), this, &MainWindow::startRun);
     run_action_->setObjectName(QStringLiteral("runAction"));
     run_action_->setShortcut(QKeySequence(Qt::Key_F5));
@@ -1071,6 +1089,7 @@ void MainWindow::updateRunActions()
     const bool running = isRunning();
     const auto scene = view_->scene();
     run_action_->setEnabled(!running && !loading_ && scene && scene->ok && !isPreprocessing());  // not a stale picture
+    mesh_action_->setEnabled(!running && !loading_);
     pause_action_->setEnabled(running);
     pause_action_->setText(running && controller_->isPaused() ? tr("Res&ume") : tr("&Pause"));
     stop_action_->setEnabled(running);

@@ -159,6 +159,9 @@ public slots:
     /// does; empty text finishes the shape (as Enter in the view). False when no drawing tool
     /// is active or the text is not two numbers.
     bool enterCoordinates(const QString& text);
+    /// Run ▸ Mesh: cuts and meshes the document on the thread pool (as an edit does) and shows
+    /// the mesh; false while a run or a file load is going on.
+    bool meshModel();
     /// Run ▸ Run: analyses the shown model on a worker thread. False when there is no usable
     /// model or a run is going on.
     bool startRun();
@@ -243,6 +246,7 @@ private:
     QAction* show_points_ = nullptr;
     QAction* show_legend_ = nullptr;
     QAction* run_action_ = nullptr;
+    QAction* mesh_action_ = nullptr;
     QAction* pause_action_ = nullptr;
     QAction* stop_action_ = nullptr;
     QComboBox* field_box_ = nullptr;

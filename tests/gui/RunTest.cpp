@@ -3,6 +3,7 @@
 // results while the GUI stays responsive.
 
 #include "MainWindow.hpp"
+#include "document/ModelDocument.hpp"
 #include "results/HistoryPlot.hpp"
 #include "run/RunController.hpp"
 #include "widgets/ModelView.hpp"
@@ -58,6 +59,7 @@ private slots:
     void runShowsResultColours();
     void stopKeepsResultsAndGuiResponsive();
     void closingStopsTheRun();
+    void salenconOpenMeshRunShowsPlasticZone();
 };
 
 void RunTest::initTestCase()
@@ -236,6 +238,58 @@ void RunTest::closingStopsTheRun()
     QFile summary(out.filePath(QStringLiteral("summary.json")));
     QVERIFY(summary.open(QIODevice::ReadOnly));
     QVERIFY(summary.readAll().contains("cancelled"));
+}
+
+// The path through the window: File ▸ Open an example, Run ▸ Mesh, a few steps of Run,
+// and the plastic zone around the tunnel in the picture (yellow/red cells near the wall, grey
+// ones far away).
+void RunTest::salenconOpenMeshRunShowsPlasticZone()
+{
+    const QString path = QStringLiteral(MCDDA_EXAMPLES_DIR "/salencon-tunnel.json");
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    MainWindow window;
+    window.setAskToSave(false);
+    window.setRunOutputFolder(out.path());
+    window.resize(1100, 800);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY2(window.openModel(path), qPrintable(window.messages()));
+
+    // Fewer steps for the test (an edit: undoable, re-meshed in the background).
+    AnalysisSettings settings = window.document()->model().analysis;
+    settings.steps = 2;
+    settings.output_every = 1;
+    window.document()->setAnalysisSettings(settings);
+    QAction* mesh = find_action(&window, QStringLiteral("meshAction"));
+    QVERIFY(mesh && mesh->isEnabled());
+    mesh->trigger();
+    QVERIFY(window.isPreprocessing());
+    QTRY_VERIFY_WITH_TIMEOUT(!window.isPreprocessing(), 60000);
+    QVERIFY2(window.statisticsText().contains(QStringLiteral("13415 elements")), qPrintable(window.statisticsText()));
+    QVERIFY(window.messages().contains(QStringLiteral("13415")));
+
+    window.setResultField(QStringLiteral("plastic_state"));
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 240000);
+    QCOMPARE(finished.at(0).at(0).value<RunStatus>(), RunStatus::Completed);
+    window.modelView()->showBox(0, 0, 6, 6);  // the tunnel's quarter and the plastic ring
+    const QImage frame = window.modelView()->grabFrame();
+    keep(frame, QStringLiteral("salencon_plastic_zone"));
+    auto yielded = [](QColor c) {  // the yellow or red categories, not grey
+        return c.hsvSaturation() > 120 && c.value() > 120 && (c.hsvHue() < 65 || c.hsvHue() > 340);
+    };
+    auto share = [&](double x, double y) {
+        const QPointF centre = window.modelView()->toWidget(QPointF(x, y)) * window.modelView()->devicePixelRatioF();
+        int n = 0;
+        for (int dy = -3; dy <= 3; ++dy)
+            for (int dx = -3; dx <= 3; ++dx) n += yielded(frame.pixelColor(qRound(centre.x()) + dx, qRound(centre.y()) + dy));
+        return n / 49.0;
+    };
+    // Closed form: plastic radius 2.505 m. Inside it (r = 1.8 m) yielded, outside (r = 3.5 m) not.
+    QVERIFY2(share(1.8 * 0.7071, 1.8 * 0.7071) > 0.6, qPrintable(QString::number(share(1.27, 1.27))));
+    QVERIFY2(share(3.5 * 0.7071, 3.5 * 0.7071) < 0.2, qPrintable(QString::number(share(2.47, 2.47))));
 }
 
 QTEST_MAIN(RunTest)
