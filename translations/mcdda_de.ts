@@ -1184,7 +1184,7 @@
     <message>
         <location filename="../gui/MainWindow.cpp" line="1029"/>
         <source>Cut the blocks and mesh them in the background (edits do this by themselves); the statistics go to the status bar and the Messages dock</source>
-        <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und im Meldungsfenster</translation>
+        <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und unter Meldungen</translation>
     </message>
     <message>
         <location filename="../gui/MainWindow.cpp" line="1036"/>
@@ -2185,6 +2185,144 @@
         <location filename="../gui/results/StepSlider.cpp" line="70"/>
         <source>%1 of %2, t = %3 s</source>
         <translation>%1 von %2, t = %3 s</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::view</name>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="47"/>
+        <source>elastic</source>
+        <translation>elastisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="47"/>
+        <source>yielded before</source>
+        <translation>früher plastifiziert</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="47"/>
+        <source>yielding now</source>
+        <translation>plastifiziert jetzt</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="67"/>
+        <source>plastic state</source>
+        <translation>plastischer Zustand</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="68"/>
+        <source>plastic strain</source>
+        <translation>plastische Dehnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="69"/>
+        <source>displacement</source>
+        <translation>Verschiebung</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="70"/>
+        <source>x displacement</source>
+        <translation>Verschiebung x</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="71"/>
+        <source>y displacement</source>
+        <translation>Verschiebung y</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="72"/>
+        <source>stress xx</source>
+        <translation>Spannung xx</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="73"/>
+        <source>stress yy</source>
+        <translation>Spannung yy</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="74"/>
+        <source>shear stress xy</source>
+        <translation>Schubspannung xy</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="75"/>
+        <source>principal stress 1</source>
+        <translation>Hauptspannung 1</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="76"/>
+        <source>principal stress 3</source>
+        <translation>Hauptspannung 3</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="384"/>
+        <source>block boundary</source>
+        <translation>Blockrand</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="386"/>
+        <source>joint</source>
+        <translation>Kluft</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="144"/>
+        <source>Unassigned material</source>
+        <translation>Kein Material</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="146"/>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="153"/>
+        <source>Legend</source>
+        <translation>Legende</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="178"/>
+        <source>Region boundary</source>
+        <translation>Bereichsrand</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="179"/>
+        <source>Block boundary</source>
+        <translation>Blockrand</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="181"/>
+        <source>Joint</source>
+        <translation>Kluft</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="183"/>
+        <source>Fixed point</source>
+        <translation>Festpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="190"/>
+        <source>Fixed line (x and y)</source>
+        <translation>Feste Linie (x und y)</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="192"/>
+        <source>Roller</source>
+        <translation>Rollenlager</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="194"/>
+        <source>Point load</source>
+        <translation>Punktlast</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="196"/>
+        <source>Edge pressure</source>
+        <translation>Kantendruck</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="198"/>
+        <source>Measurement point</source>
+        <translation>Messpunkt</translation>
     </message>
 </context>
 </TS>

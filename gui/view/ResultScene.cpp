@@ -3,6 +3,7 @@
 #include "view/FlatActor.hpp"
 #include "view/ModelScene.hpp"
 #include "view/OffscreenRender.hpp"
+#include "view/PictureText.hpp"
 #include "view/Palette.hpp"
 #include "view/SceneGeometry.hpp"
 #include "view/SceneLegend.hpp"
@@ -43,7 +44,7 @@ namespace {
 
 const Rgb white{1.0, 1.0, 1.0};
 const Rgb state_colors[3] = {{0.82, 0.82, 0.82}, {1.0, 0.84, 0.0}, {0.86, 0.06, 0.06}};
-const char* const state_labels[3] = {"elastic", "yielded before", "yielding now"};
+const char* const state_labels[3] = {QT_TRANSLATE_NOOP("mcdda::view", "elastic"), QT_TRANSLATE_NOOP("mcdda::view", "yielded before"), QT_TRANSLATE_NOOP("mcdda::view", "yielding now")};
 const Rgb joint_color{0.55, 0.0, 0.60};  // purple: not in the rainbow nor the state colours
 
 /// How a field's value comes out of its array.
@@ -59,19 +60,20 @@ struct FieldInfo {
     bool point_data;
     int component;       ///< a Derived value, otherwise the component
     const char* units;   ///< "Pa": shown in kPa or MPa, whichever suits the range
+    const char* title;   ///< over the legend (translated by picture_text)
 };
 
 const FieldInfo field_table[] = {
-    {"plastic_state", "plastic_state", false, 0, "-"},
-    {"plastic_strain", "plastic_strain", false, 0, "-"},
-    {"displacement", "displacement", true, magnitude, "m"},
-    {"ux", "displacement", true, 0, "m"},
-    {"uy", "displacement", true, 1, "m"},
-    {"stress_xx", "stress", false, 0, "Pa"},
-    {"stress_yy", "stress", false, 1, "Pa"},
-    {"stress_xy", "stress", false, 3, "Pa"},
-    {"stress_1", "stress", false, principal_1, "Pa"},
-    {"stress_3", "stress", false, principal_3, "Pa"},
+    {"plastic_state", "plastic_state", false, 0, "-", QT_TRANSLATE_NOOP("mcdda::view", "plastic state")},
+    {"plastic_strain", "plastic_strain", false, 0, "-", QT_TRANSLATE_NOOP("mcdda::view", "plastic strain")},
+    {"displacement", "displacement", true, magnitude, "m", QT_TRANSLATE_NOOP("mcdda::view", "displacement")},
+    {"ux", "displacement", true, 0, "m", QT_TRANSLATE_NOOP("mcdda::view", "x displacement")},
+    {"uy", "displacement", true, 1, "m", QT_TRANSLATE_NOOP("mcdda::view", "y displacement")},
+    {"stress_xx", "stress", false, 0, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "stress xx")},
+    {"stress_yy", "stress", false, 1, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "stress yy")},
+    {"stress_xy", "stress", false, 3, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "shear stress xy")},
+    {"stress_1", "stress", false, principal_1, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "principal stress 1")},
+    {"stress_3", "stress", false, principal_3, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "principal stress 3")},
 };
 
 vtkDataArray* find_array(vtkUnstructuredGrid* grid, const FieldInfo& f)
@@ -377,16 +379,18 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     const double dpi = dpi_of(renderer);
     if (categorical) {
         std::vector<LegendEntry> entries;
-        for (int s = 0; s < 3; ++s) entries.push_back({LegendEntry::Icon::Swatch, state_colors[s], state_labels[s]});
-        entries.push_back({LegendEntry::Icon::Line, palette::block_outline, "block boundary"});
-        if (joints) entries.push_back({LegendEntry::Icon::Line, joint_color, "joint"});
-        const std::string title = "plastic_state";
+        for (int s = 0; s < 3; ++s) entries.push_back({LegendEntry::Icon::Swatch, state_colors[s], picture_text(state_labels[s])});
+        entries.push_back({LegendEntry::Icon::Line, palette::block_outline,
+                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "block boundary"))});
+        if (joints)
+            entries.push_back({LegendEntry::Icon::Line, joint_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint"))});
+        const std::string title = picture_text(field.title);
         add_legend(renderer, title, entries, dpi);
         reserved = legend_width(title, entries, dpi) + 2.0 * legend_margin(dpi);
     } else {
         vtkNew<vtkScalarBarActor> bar;
         bar->SetLookupTable(table);
-        const std::string title = std::string(field.name) + " (" + units + ")";
+        const std::string title = picture_text(field.title) + " (" + units + ")";
         bar->SetTitle(title.c_str());
         bar->SetNumberOfLabels(6);
         bar->SetLabelFormat("%-#8.3g");

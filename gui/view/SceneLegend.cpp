@@ -1,5 +1,6 @@
 #include "view/SceneLegend.hpp"
 
+#include "view/PictureText.hpp"
 #include "view/Symbols.hpp"
 
 #include <vtkActor2D.h>
@@ -140,16 +141,16 @@ Shapes icon_shapes(const LegendEntry& e, Point2 c, const Metrics& m)
 
 std::string material_label(const Model& model, int index)
 {
-    if (index < 0 || index >= static_cast<int>(model.materials.size())) return "Unassigned material";
+    if (index < 0 || index >= static_cast<int>(model.materials.size())) return picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Unassigned material"));
     const std::string& name = model.materials[static_cast<std::size_t>(index)].name;
-    return name.empty() ? "Material " + std::to_string(index + 1) : name;
+    return name.empty() ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Material")) + " " + std::to_string(index + 1) : name;
 }
 
 }  // namespace
 
 std::string legend_title(const Preprocessed& p)
 {
-    std::string title = p.model.name.empty() ? std::string("Legend") : p.model.name;
+    std::string title = p.model.name.empty() ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Legend")) : p.model.name;
     if (title.size() > 48) title = title.substr(0, 45) + "...";
     return title;
 }
@@ -174,26 +175,27 @@ std::vector<LegendEntry> legend_entries(const Preprocessed& p, const SceneOption
     }
     if (!m.regions.empty() || !p.blocks.empty())
         entries.push_back({LegendEntry::Icon::Line, palette::block_outline,
-                           p.blocks.empty() ? "Region boundary" : "Block boundary"});
+                           p.blocks.empty() ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Region boundary"))
+                                            : picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Block boundary"))});
     if (options.show_joints && !m.joints.empty())
-        entries.push_back({LegendEntry::Icon::Line, palette::joint, "Joint"});
+        entries.push_back({LegendEntry::Icon::Line, palette::joint, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Joint"))});
     if (options.show_supports && !m.fixed_points.empty())
-        entries.push_back({LegendEntry::Icon::Pin, palette::support, "Fixed point"});
+        entries.push_back({LegendEntry::Icon::Pin, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Fixed point"))});
     // Rollers fixing both directions are drawn as pins (see roller_shapes).
     const bool fixed_lines = std::any_of(m.rollers.begin(), m.rollers.end(),
                                          [](const Roller& r) { return r.fix_x && r.fix_y; });
     const bool rollers = std::any_of(m.rollers.begin(), m.rollers.end(),
                                      [](const Roller& r) { return r.fix_x != r.fix_y; });
     if (options.show_supports && fixed_lines)
-        entries.push_back({LegendEntry::Icon::Pin, palette::support, "Fixed line (x and y)"});
+        entries.push_back({LegendEntry::Icon::Pin, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Fixed line (x and y)"))});
     if (options.show_supports && rollers)
-        entries.push_back({LegendEntry::Icon::Roller, palette::support, "Roller"});
+        entries.push_back({LegendEntry::Icon::Roller, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Roller"))});
     if (options.show_loads && !m.point_loads.empty())
-        entries.push_back({LegendEntry::Icon::Arrow, palette::point_load, "Point load"});
+        entries.push_back({LegendEntry::Icon::Arrow, palette::point_load, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Point load"))});
     if (options.show_loads && !m.edge_pressures.empty())
-        entries.push_back({LegendEntry::Icon::Pressure, palette::pressure, "Edge pressure"});
+        entries.push_back({LegendEntry::Icon::Pressure, palette::pressure, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Edge pressure"))});
     if (options.show_points && !m.measurement_points.empty())
-        entries.push_back({LegendEntry::Icon::Diamond, palette::measurement, "Measurement point"});
+        entries.push_back({LegendEntry::Icon::Diamond, palette::measurement, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Measurement point"))});
     return entries;
 }
 

@@ -2,9 +2,11 @@
 
 #include "tools/ViewTool.hpp"
 #include "view/Palette.hpp"
+#include "view/PictureText.hpp"
 
 #include <QEvent>
 #include <QGuiApplication>
+#include <QCoreApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QResizeEvent>
@@ -52,6 +54,10 @@ struct ModelView::Impl {
 
 ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<Impl>())
 {
+    // Legend texts in the language of the window (the view library itself knows no Qt).
+    view::set_picture_translator([](const char* english) {
+        return QCoreApplication::translate("mcdda::view", english).toStdString();
+    });
     // Route 2 of DESIGN.md §5: our own X window that VTK draws into; Qt must not paint it.
     setAttribute(Qt::WA_NativeWindow);
     setAttribute(Qt::WA_PaintOnScreen);

@@ -1,9 +1,11 @@
 // The Qt 6 view of a model on a (virtual) X server: the frame is read back and its pixels are
 // checked, before and after zooming and panning; the main window shows figures and messages.
 
+#include "Language.hpp"
 #include "MainWindow.hpp"
 #include "TunnelModel.hpp"
 #include "view/Palette.hpp"
+#include "view/SceneLegend.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
@@ -120,6 +122,7 @@ private slots:
     void mainWindowReportsBadFile();
     void mainWindowOpensExample();
     void resourcesHoldTheIcon();
+    void legendSpeaksTheWindowLanguage();
 };
 
 void ModelViewTest::initTestCase()
@@ -390,6 +393,29 @@ void ModelViewTest::resourcesHoldTheIcon()
     keep(icon, QStringLiteral("icon"));
     auto joint_red = [](QColor c) { return c.red() > 170 && c.green() < 60 && c.blue() < 60; };
     QVERIFY(count_pixels(icon, joint_red) > 100);  // the SVG was really drawn
+}
+
+// The legend is drawn by VTK, but its texts come from the Qt translations once a view exists.
+void ModelViewTest::legendSpeaksTheWindowLanguage()
+{
+    Preprocessed p = preprocess_model(guitest::tunnel_model(), PreprocessStage::Cut);
+    QVERIFY(p.ok);
+    auto labels = [&p] {
+        QStringList out;
+        for (const view::LegendEntry& e : view::legend_entries(p, view::SceneOptions{}))
+            out << QString::fromStdString(e.label);
+        return out;
+    };
+    ModelView view;  // installs the translator
+    QVERIFY2(labels().contains(QStringLiteral("Joint")), qPrintable(labels().join(QLatin1Char('|'))));
+    {
+        QObject owner;  // the translators go with it
+        QVERIFY(i18n::install_translations(QLocale(QStringLiteral("de")), &owner).mcdda);
+        const QStringList german = labels();
+        QVERIFY2(german.contains(QStringLiteral("Kluft")) && german.contains(QStringLiteral("Festpunkt")),
+                 qPrintable(german.join(QLatin1Char('|'))));
+    }
+    QVERIFY(labels().contains(QStringLiteral("Joint")));
 }
 
 QTEST_MAIN(ModelViewTest)
