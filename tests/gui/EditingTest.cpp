@@ -3,6 +3,7 @@
 // the file again in another window.
 
 #include "MainWindow.hpp"
+#include "WindowProbe.hpp"
 #include "ModelCompare.hpp"
 #include "dialogs/JointSetDialog.hpp"
 #include "document/ModelDocument.hpp"
@@ -25,35 +26,8 @@
 using namespace mcdda;
 using mcdda::gui::MainWindow;
 using mcdda::gui::ModelView;
+using namespace mcdda::guitest;
 
-namespace {
-
-QPoint pixel_of(const ModelView& view, double x, double y)
-{
-    return view.toWidget(QPointF(x, y)).toPoint();
-}
-
-bool near(QColor c, const view::Rgb& rgb)
-{
-    return std::abs(c.redF() - rgb[0]) < 0.06 && std::abs(c.greenF() - rgb[1]) < 0.06 &&
-           std::abs(c.blueF() - rgb[2]) < 0.06;
-}
-
-/// Pixels of `colour` in the 9 × 9 device pixels around the model point (x, y).
-int count_around(ModelView& view, double x, double y, const view::Rgb& colour)
-{
-    const QImage frame = view.grabFrame();
-    const QPointF centre = view.toWidget(QPointF(x, y)) * view.devicePixelRatioF();
-    int n = 0;
-    for (int dy = -4; dy <= 4; ++dy)
-        for (int dx = -4; dx <= 4; ++dx) {
-            const QPoint p(qRound(centre.x()) + dx, qRound(centre.y()) + dy);
-            if (frame.rect().contains(p) && near(frame.pixelColor(p), colour)) ++n;
-        }
-    return n;
-}
-
-}  // namespace
 
 class EditingTest : public QObject {
     Q_OBJECT

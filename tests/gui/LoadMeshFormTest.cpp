@@ -3,6 +3,7 @@
 // mesh controls that re-mesh the model.
 
 #include "MainWindow.hpp"
+#include "WindowProbe.hpp"
 #include "Preprocess.hpp"
 #include "document/ModelDocument.hpp"
 #include "panels/LoadForm.hpp"
@@ -32,35 +33,11 @@ using namespace mcdda;
 using mcdda::gui::LoadForm;
 using mcdda::gui::MainWindow;
 using mcdda::gui::MeshForm;
+using namespace mcdda::guitest;
 
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-/// A window with File ▸ New, a 10 m square and a roller along its base.
-std::unique_ptr<MainWindow> square_window()
-{
-    auto window = std::make_unique<MainWindow>();
-    window->setAskToSave(false);
-    window->resize(1100, 750);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get())) return nullptr;
-    window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
-    gui::ModelDocument* doc = window->document();
-    doc->addRegion({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 0);
-    Roller base;
-    base.name = "base";
-    base.from = {0, 0};
-    base.to = {10, 0};
-    base.fix_x = base.fix_y = true;
-    doc->addRoller(base);
-    return window;
-}
-
-bool settled(const MainWindow& w)
-{
-    return !w.isPreprocessing() && w.modelView()->scene() && w.modelView()->scene()->ok;
-}
 
 void set_cell(QTableWidget* table, int row, int column, const QString& text)
 {

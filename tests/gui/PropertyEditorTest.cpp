@@ -3,6 +3,7 @@
 // following edits that are pre-processed off the GUI thread.
 
 #include "MainWindow.hpp"
+#include "WindowProbe.hpp"
 #include "document/ModelDocument.hpp"
 #include "panels/PropertyEditor.hpp"
 #include "view/Palette.hpp"
@@ -25,57 +26,8 @@ using namespace mcdda;
 using mcdda::gui::MainWindow;
 using mcdda::gui::ModelView;
 using mcdda::gui::PropertyEditor;
+using namespace mcdda::guitest;
 
-namespace {
-
-QPoint pixel_of(const ModelView& view, double x, double y) { return view.toWidget(QPointF(x, y)).toPoint(); }
-
-bool near(QColor c, const view::Rgb& rgb)
-{
-    return std::abs(c.redF() - rgb[0]) < 0.06 && std::abs(c.greenF() - rgb[1]) < 0.06 &&
-           std::abs(c.blueF() - rgb[2]) < 0.06;
-}
-
-/// Pixels of `colour` in the 15 × 15 device pixels around the model point (x, y).
-int count_around(ModelView& view, double x, double y, const view::Rgb& colour)
-{
-    const QImage frame = view.grabFrame();
-    const QPointF centre = view.toWidget(QPointF(x, y)) * view.devicePixelRatioF();
-    int n = 0;
-    for (int dy = -7; dy <= 7; ++dy)
-        for (int dx = -7; dx <= 7; ++dx) {
-            const QPoint p(qRound(centre.x()) + dx, qRound(centre.y()) + dy);
-            if (frame.rect().contains(p) && near(frame.pixelColor(p), colour)) ++n;
-        }
-    return n;
-}
-
-/// A window with File ▸ New, a 10 m square and a roller along its base, pre-processed.
-std::unique_ptr<MainWindow> square_window()
-{
-    auto window = std::make_unique<MainWindow>();
-    window->setAskToSave(false);
-    window->resize(1100, 750);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get())) return nullptr;
-    window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
-    gui::ModelDocument* doc = window->document();
-    doc->addRegion({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 0);
-    Roller base;
-    base.name = "base";
-    base.from = {0, 0};
-    base.to = {10, 0};
-    base.fix_x = base.fix_y = true;
-    doc->addRoller(base);
-    return window;
-}
-
-bool settled(const MainWindow& w)
-{
-    return !w.isPreprocessing() && w.modelView()->scene() && w.modelView()->scene()->ok;
-}
-
-}  // namespace
 
 class PropertyEditorTest : public QObject {
     Q_OBJECT
@@ -231,14 +183,14 @@ void PropertyEditorTest::toolsPlaceRollerAndMeasurementPoint()
     QCOMPARE(r.name, std::string("roller 2"));
 
     QTRY_VERIFY(settled(*window));
-    QCOMPARE(count_around(*view, 5, 5, view::palette::measurement), 0);
+    QCOMPARE(count_around(*view, 5, 5, view::palette::measurement, 7), 0);
     window->findChild<QAction*>(QStringLiteral("measurementPointAction"))->trigger();
     QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 5.05, 4.95));
     QCOMPARE(doc->model().measurement_points.size(), std::size_t(1));
     QCOMPARE(doc->model().measurement_points[0].name, std::string("point 1"));
     QCOMPARE(doc->model().measurement_points[0].point.x, 5.0);
     QCOMPARE(doc->model().measurement_points[0].point.y, 5.0);
-    QTRY_VERIFY2(count_around(*view, 5, 5, view::palette::measurement) > 0, "the measurement point is drawn");
+    QTRY_VERIFY2(count_around(*view, 5, 5, view::palette::measurement, 7) > 0, "the measurement point is drawn");
 
     QAction* undo = window->findChild<QAction*>(QStringLiteral("undoAction"));
     QVERIFY(undo->text().contains(QStringLiteral("measurement")));
@@ -246,7 +198,7 @@ void PropertyEditorTest::toolsPlaceRollerAndMeasurementPoint()
     QVERIFY(doc->model().measurement_points.empty());
     undo->trigger();
     QCOMPARE(doc->model().rollers.size(), std::size_t(1));
-    QTRY_VERIFY(settled(*window) && count_around(*view, 5, 5, view::palette::measurement) == 0);
+    QTRY_VERIFY(settled(*window) && count_around(*view, 5, 5, view::palette::measurement, 7) == 0);
 }
 
 void PropertyEditorTest::otherToolsPlaceItems()
@@ -321,9 +273,9 @@ void PropertyEditorTest::viewFollowsEditsOffTheGuiThread()
     // Removing the region empties the picture (pixel check) after the background work.
     const view::Rgb rock = view::material_color(0);
     window->modelView()->showBox(-2, -2, 12, 12);
-    QTRY_VERIFY(count_around(*window->modelView(), 5, 7, rock) > 100);
+    QTRY_VERIFY(count_around(*window->modelView(), 5, 7, rock, 7) > 100);
     while (!doc->model().regions.empty()) doc->undoStack()->undo();
-    QTRY_VERIFY(count_around(*window->modelView(), 5, 7, view::palette::background) > 100);
+    QTRY_VERIFY(count_around(*window->modelView(), 5, 7, view::palette::background, 7) > 100);
     QTRY_VERIFY(!window->isPreprocessing());
 }
 

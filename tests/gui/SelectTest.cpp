@@ -4,6 +4,7 @@
 // coordinates with decimal commas.
 
 #include "MainWindow.hpp"
+#include "WindowProbe.hpp"
 #include "document/ModelDocument.hpp"
 #include "tools/DrawTool.hpp"
 #include "tools/SelectTool.hpp"
@@ -25,29 +26,14 @@ using mcdda::gui::ItemRef;
 using mcdda::gui::MainWindow;
 using mcdda::gui::ModelView;
 using Kind = mcdda::gui::ItemRef::Kind;
+using namespace mcdda::guitest;
 
 namespace {
-
-QPoint pixel_of(const ModelView& view, double x, double y) { return view.toWidget(QPointF(x, y)).toPoint(); }
-
-bool near(QColor c, const view::Rgb& rgb)
-{
-    return std::abs(c.redF() - rgb[0]) < 0.06 && std::abs(c.greenF() - rgb[1]) < 0.06 &&
-           std::abs(c.blueF() - rgb[2]) < 0.06;
-}
 
 /// Share of the 9 × 9 device pixels around the model point (x, y) that have `colour`.
 double share_around(ModelView& view, double x, double y, const view::Rgb& colour)
 {
-    const QImage frame = view.grabFrame();
-    const QPointF centre = view.toWidget(QPointF(x, y)) * view.devicePixelRatioF();
-    int n = 0;
-    for (int dy = -4; dy <= 4; ++dy)
-        for (int dx = -4; dx <= 4; ++dx) {
-            const QPoint p(qRound(centre.x()) + dx, qRound(centre.y()) + dy);
-            if (frame.rect().contains(p) && near(frame.pixelColor(p), colour)) ++n;
-        }
-    return n / 81.0;
+    return count_around(view, x, y, colour) / 81.0;
 }
 
 /// Presses at model point `from`, moves there in a few steps and releases at `to`.
@@ -59,11 +45,6 @@ void drag(ModelView* view, Point2 from, Point2 to)
         QTest::mouseMove(view, pixel_of(*view, from.x + t * (to.x - from.x), from.y + t * (to.y - from.y)));
     }
     QTest::mouseRelease(view, Qt::LeftButton, {}, pixel_of(*view, to.x, to.y));
-}
-
-bool settled(MainWindow& window)
-{
-    return !window.isPreprocessing() && window.modelView()->scene() && window.modelView()->scene()->ok;
 }
 
 }  // namespace
