@@ -236,6 +236,7 @@ void MainWindow::createActions()
     view->addAction(plot_dock_->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help_menu_ = help;
     help->addAction(tr("&About mcdda"), this, [this] {
         QMessageBox::about(this, tr("About mcdda"),
                            tr("<b>mcdda %1</b><p>Pre- and post-processor for elastic-plastic "
@@ -1019,7 +1020,8 @@ void MainWindow::reportFailure(const Preprocessed& p, const QString& source)
 
 void MainWindow::createRunActions()
 {
-    QMenu* run = menuBar()->addMenu(tr("&Run"));
+    auto* run = new QMenu(tr("&Run"), this);
+    menuBar()->insertMenu(help_menu_->menuAction(), run);  // Help stays last
     QToolBar* bar = addToolBar(tr("Run"));
     bar->setObjectName(QStringLiteral("run"));
     mesh_action_ = run->addAction(tr("&Mesh"), this, &MainWindow::meshModel);

@@ -278,6 +278,7 @@ private:
     QAction* delete_action_ = nullptr;
     QDockWidget* model_dock_ = nullptr;
     QMenu* recent_menu_ = nullptr;
+    QMenu* help_menu_ = nullptr;
     QAction* snap_action_ = nullptr;
     QAction* select_action_ = nullptr;
     QAction* region_action_ = nullptr;

@@ -48,11 +48,12 @@ ModelTree::ModelTree(QWidget* parent) : QTreeWidget(parent)
     connect(this, &QTreeWidget::itemSelectionChanged, this, [this] {
         if (!quiet_) emit itemChosen(selectedItem());
     });
+    // Only the user's choice counts (refresh() expands and collapses rows itself).
     connect(this, &QTreeWidget::itemExpanded, this, [this](QTreeWidgetItem* item) {
-        if (item == blocks_) blocks_expanded_ = true;
+        if (!quiet_ && item == blocks_) blocks_expanded_ = true;
     });
     connect(this, &QTreeWidget::itemCollapsed, this, [this](QTreeWidgetItem* item) {
-        if (item == blocks_) blocks_expanded_ = false;
+        if (!quiet_ && item == blocks_) blocks_expanded_ = false;
     });
 }
 
@@ -62,6 +63,7 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
     const ItemRef selected = selectedItem();
     quiet_ = true;
     clear();
+    blocks_ = nullptr;
     auto group = [&](const QString& title, std::size_t count) {
         auto* item = new QTreeWidgetItem(this, {title, QString::number(count)});
         item->setExpanded(true);

@@ -15,6 +15,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QLineEdit>
+#include <QMenuBar>
 #include <QStandardPaths>
 #include <QTreeWidgetItemIterator>
 #include <QtTest>
@@ -185,6 +186,17 @@ void SelectTest::treeSelectsAndListsBlocks()
     doc->addJoint({{-1, 4}, {11, 4}});
     QTRY_VERIFY(settled(window));
     QTRY_COMPARE(tree->blockCount(), 2);  // the joint cuts the square in two
+    // The Blocks group (row 1) starts folded and keeps what the user chose across refreshes.
+    QTreeWidgetItem* blocks = tree->topLevelItem(1);
+    QVERIFY(!blocks->isExpanded());
+    blocks->setExpanded(true);
+    doc->undoStack()->undo();
+    doc->undoStack()->redo();
+    QTRY_VERIFY(settled(window));
+    QVERIFY(tree->topLevelItem(1)->isExpanded());
+    QCOMPARE(tree->blockCount(), 2);
+    // Help is the last menu.
+    QCOMPARE(window.menuBar()->actions().last()->text(), QStringLiteral("&Help"));
 
     // Choosing the roller's row selects it in the view (its two ends highlighted).
     QTreeWidgetItem* roller_row = nullptr;
