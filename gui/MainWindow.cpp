@@ -471,6 +471,7 @@ ItemRef MainWindow::selection() const { return select_tool_->selection(); }
 void MainWindow::onSelectionChanged(const ItemRef& ref)
 {
     tree_->selectItem(ref);
+    property_editor_->setSelection(ref);
     delete_action_->setEnabled(ref.valid());
     if (ref.valid())
         statusBar()->showMessage(tr("Selected %1: drag to move, Delete removes").arg(document_->itemName(ref)), 5000);
@@ -958,7 +959,8 @@ void MainWindow::showScene(std::shared_ptr<const Preprocessed> p, const QString&
     if (!p) return;
     if (isRunning()) {
         joinRun();
-        log(tr("The run was stopped: another model was opened."));
+        log(interactive ? tr("The run was stopped: another model was opened.")
+                        : tr("The run was stopped: the model was edited."));
     }
     last_snapshot_.reset();
     shown_step_.clear();

@@ -664,7 +664,7 @@
     </message>
     <message>
         <location filename="../gui/MainWindow.cpp" line="219"/>
-        <location filename="../gui/MainWindow.cpp" line="1025"/>
+        <location filename="../gui/MainWindow.cpp" line="1029"/>
         <source>&amp;Mesh</source>
         <translation>&amp;Netz</translation>
     </message>
@@ -739,406 +739,406 @@
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="239"/>
+        <location filename="../gui/MainWindow.cpp" line="240"/>
         <source>&amp;About mcdda</source>
         <translation>Ü&amp;ber mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="240"/>
+        <location filename="../gui/MainWindow.cpp" line="241"/>
         <source>About mcdda</source>
         <translation>Über mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="241"/>
+        <location filename="../gui/MainWindow.cpp" line="242"/>
         <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
         <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="252"/>
+        <location filename="../gui/MainWindow.cpp" line="253"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="254"/>
+        <location filename="../gui/MainWindow.cpp" line="255"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="258"/>
+        <location filename="../gui/MainWindow.cpp" line="259"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="266"/>
+        <location filename="../gui/MainWindow.cpp" line="267"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="280"/>
+        <location filename="../gui/MainWindow.cpp" line="281"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="284"/>
+        <location filename="../gui/MainWindow.cpp" line="285"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="285"/>
+        <location filename="../gui/MainWindow.cpp" line="286"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="287"/>
+        <location filename="../gui/MainWindow.cpp" line="288"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="288"/>
+        <location filename="../gui/MainWindow.cpp" line="289"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="291"/>
+        <location filename="../gui/MainWindow.cpp" line="292"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="292"/>
+        <location filename="../gui/MainWindow.cpp" line="293"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="293"/>
+        <location filename="../gui/MainWindow.cpp" line="294"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="294"/>
+        <location filename="../gui/MainWindow.cpp" line="295"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="296"/>
+        <location filename="../gui/MainWindow.cpp" line="297"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="297"/>
+        <location filename="../gui/MainWindow.cpp" line="298"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="299"/>
+        <location filename="../gui/MainWindow.cpp" line="300"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="300"/>
+        <location filename="../gui/MainWindow.cpp" line="301"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="302"/>
+        <location filename="../gui/MainWindow.cpp" line="303"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="303"/>
+        <location filename="../gui/MainWindow.cpp" line="304"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="305"/>
+        <location filename="../gui/MainWindow.cpp" line="306"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="310"/>
+        <location filename="../gui/MainWindow.cpp" line="311"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="314"/>
+        <location filename="../gui/MainWindow.cpp" line="315"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Klu&amp;ftschar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="316"/>
+        <location filename="../gui/MainWindow.cpp" line="317"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="324"/>
+        <location filename="../gui/MainWindow.cpp" line="325"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="331"/>
+        <location filename="../gui/MainWindow.cpp" line="332"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="334"/>
+        <location filename="../gui/MainWindow.cpp" line="335"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="335"/>
+        <location filename="../gui/MainWindow.cpp" line="336"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="336"/>
+        <location filename="../gui/MainWindow.cpp" line="337"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="337"/>
+        <location filename="../gui/MainWindow.cpp" line="338"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="351"/>
+        <location filename="../gui/MainWindow.cpp" line="352"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="352"/>
-        <location filename="../gui/MainWindow.cpp" line="354"/>
+        <location filename="../gui/MainWindow.cpp" line="353"/>
+        <location filename="../gui/MainWindow.cpp" line="355"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="352"/>
+        <location filename="../gui/MainWindow.cpp" line="353"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="353"/>
+        <location filename="../gui/MainWindow.cpp" line="354"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="354"/>
+        <location filename="../gui/MainWindow.cpp" line="355"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="356"/>
+        <location filename="../gui/MainWindow.cpp" line="357"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="357"/>
+        <location filename="../gui/MainWindow.cpp" line="358"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="358"/>
+        <location filename="../gui/MainWindow.cpp" line="359"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="360"/>
+        <location filename="../gui/MainWindow.cpp" line="361"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="362"/>
+        <location filename="../gui/MainWindow.cpp" line="363"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="365"/>
+        <location filename="../gui/MainWindow.cpp" line="366"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="368"/>
+        <location filename="../gui/MainWindow.cpp" line="369"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="369"/>
+        <location filename="../gui/MainWindow.cpp" line="370"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="388"/>
+        <location filename="../gui/MainWindow.cpp" line="389"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="389"/>
+        <location filename="../gui/MainWindow.cpp" line="390"/>
         <source>No region contains the hole</source>
         <translation>Kein Bereich enthält die Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="520"/>
+        <location filename="../gui/MainWindow.cpp" line="522"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="599"/>
+        <location filename="../gui/MainWindow.cpp" line="601"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="550"/>
+        <location filename="../gui/MainWindow.cpp" line="552"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="566"/>
+        <location filename="../gui/MainWindow.cpp" line="568"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="568"/>
-        <location filename="../gui/MainWindow.cpp" line="703"/>
+        <location filename="../gui/MainWindow.cpp" line="570"/>
+        <location filename="../gui/MainWindow.cpp" line="705"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="569"/>
+        <location filename="../gui/MainWindow.cpp" line="571"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="576"/>
+        <location filename="../gui/MainWindow.cpp" line="578"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="577"/>
+        <location filename="../gui/MainWindow.cpp" line="579"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="590"/>
+        <location filename="../gui/MainWindow.cpp" line="592"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="609"/>
+        <location filename="../gui/MainWindow.cpp" line="611"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="620"/>
+        <location filename="../gui/MainWindow.cpp" line="622"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="620"/>
+        <location filename="../gui/MainWindow.cpp" line="622"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="639"/>
-        <location filename="../gui/MainWindow.cpp" line="778"/>
-        <location filename="../gui/MainWindow.cpp" line="809"/>
+        <location filename="../gui/MainWindow.cpp" line="641"/>
+        <location filename="../gui/MainWindow.cpp" line="780"/>
+        <location filename="../gui/MainWindow.cpp" line="811"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="673"/>
+        <location filename="../gui/MainWindow.cpp" line="675"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="712"/>
+        <location filename="../gui/MainWindow.cpp" line="714"/>
         <source>Messages about the model appear here.</source>
         <translation>Meldungen zum Modell erscheinen hier.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="713"/>
+        <location filename="../gui/MainWindow.cpp" line="715"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="723"/>
+        <location filename="../gui/MainWindow.cpp" line="725"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="730"/>
+        <location filename="../gui/MainWindow.cpp" line="732"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="739"/>
+        <location filename="../gui/MainWindow.cpp" line="741"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="740"/>
+        <location filename="../gui/MainWindow.cpp" line="742"/>
         <source>&amp;Picture (PNG)...</source>
         <translation>&amp;Bild (PNG)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="741"/>
+        <location filename="../gui/MainWindow.cpp" line="743"/>
         <source>Export picture</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="742"/>
+        <location filename="../gui/MainWindow.cpp" line="744"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="747"/>
+        <location filename="../gui/MainWindow.cpp" line="749"/>
         <source>Save the picture of the view as a PNG file</source>
         <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="748"/>
+        <location filename="../gui/MainWindow.cpp" line="750"/>
         <source>Saved &amp;Steps (PVD/VTU)...</source>
         <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="749"/>
+        <location filename="../gui/MainWindow.cpp" line="751"/>
         <source>Export saved steps to</source>
         <translation>Gespeicherte Zeitschritte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="753"/>
+        <location filename="../gui/MainWindow.cpp" line="755"/>
         <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
         <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="754"/>
+        <location filename="../gui/MainWindow.cpp" line="756"/>
         <source>&amp;History (CSV)...</source>
         <translation>&amp;Verlauf (CSV)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="755"/>
+        <location filename="../gui/MainWindow.cpp" line="757"/>
         <source>Export history</source>
         <translation>Verlauf exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="756"/>
+        <location filename="../gui/MainWindow.cpp" line="758"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="760"/>
+        <location filename="../gui/MainWindow.cpp" line="762"/>
         <source>Copy the run&apos;s history of loads and measured displacements</source>
         <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="766"/>
+        <location filename="../gui/MainWindow.cpp" line="768"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="785"/>
+        <location filename="../gui/MainWindow.cpp" line="787"/>
         <source>There are no saved steps yet: run the model first.</source>
         <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="794"/>
+        <location filename="../gui/MainWindow.cpp" line="796"/>
         <source>Copied %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 kopiert</numerusform>
@@ -1146,159 +1146,164 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="801"/>
+        <location filename="../gui/MainWindow.cpp" line="803"/>
         <source>There is no history yet: run the model first.</source>
         <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="862"/>
+        <location filename="../gui/MainWindow.cpp" line="864"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="882"/>
+        <location filename="../gui/MainWindow.cpp" line="884"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="883"/>
+        <location filename="../gui/MainWindow.cpp" line="885"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="960"/>
+        <location filename="../gui/MainWindow.cpp" line="962"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1022"/>
-        <location filename="../gui/MainWindow.cpp" line="1032"/>
+        <location filename="../gui/MainWindow.cpp" line="963"/>
+        <source>The run was stopped: the model was edited.</source>
+        <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1025"/>
+        <location filename="../gui/MainWindow.cpp" line="1036"/>
         <source>&amp;Run</source>
         <translation>Be&amp;rechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1023"/>
+        <location filename="../gui/MainWindow.cpp" line="1027"/>
         <source>Run</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1029"/>
+        <location filename="../gui/MainWindow.cpp" line="1033"/>
         <source>Cut the blocks and mesh them in the background (edits do this by themselves); the statistics go to the status bar and the Messages dock</source>
         <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und unter Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1036"/>
+        <location filename="../gui/MainWindow.cpp" line="1040"/>
         <source>Analyse the model; the picture follows the run</source>
         <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1037"/>
-        <location filename="../gui/MainWindow.cpp" line="1094"/>
+        <location filename="../gui/MainWindow.cpp" line="1041"/>
+        <location filename="../gui/MainWindow.cpp" line="1098"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1040"/>
+        <location filename="../gui/MainWindow.cpp" line="1044"/>
         <source>Pause or resume the run</source>
         <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1041"/>
+        <location filename="../gui/MainWindow.cpp" line="1045"/>
         <source>&amp;Stop</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1045"/>
+        <location filename="../gui/MainWindow.cpp" line="1049"/>
         <source>Stop the run after the current step; the results so far are kept</source>
         <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1047"/>
+        <location filename="../gui/MainWindow.cpp" line="1051"/>
         <source>Results &amp;Folder...</source>
         <translation>Ergebnis&amp;ordner...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1049"/>
+        <location filename="../gui/MainWindow.cpp" line="1053"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1052"/>
+        <location filename="../gui/MainWindow.cpp" line="1056"/>
         <source>Choose where runs write their files</source>
         <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1058"/>
+        <location filename="../gui/MainWindow.cpp" line="1062"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1060"/>
+        <location filename="../gui/MainWindow.cpp" line="1064"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1061"/>
+        <location filename="../gui/MainWindow.cpp" line="1065"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1062"/>
+        <location filename="../gui/MainWindow.cpp" line="1066"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1063"/>
+        <location filename="../gui/MainWindow.cpp" line="1067"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1064"/>
+        <location filename="../gui/MainWindow.cpp" line="1068"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1065"/>
+        <location filename="../gui/MainWindow.cpp" line="1069"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1066"/>
+        <location filename="../gui/MainWindow.cpp" line="1070"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1067"/>
+        <location filename="../gui/MainWindow.cpp" line="1071"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1068"/>
+        <location filename="../gui/MainWindow.cpp" line="1072"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1069"/>
+        <location filename="../gui/MainWindow.cpp" line="1073"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1072"/>
+        <location filename="../gui/MainWindow.cpp" line="1076"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1077"/>
+        <location filename="../gui/MainWindow.cpp" line="1081"/>
         <source>Scale factor of the drawn displacements (0 = undeformed)</source>
         <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1094"/>
+        <location filename="../gui/MainWindow.cpp" line="1098"/>
         <source>Res&amp;ume</source>
         <translation>&amp;Fortsetzen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1152"/>
+        <location filename="../gui/MainWindow.cpp" line="1156"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1306,27 +1311,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1163"/>
+        <location filename="../gui/MainWindow.cpp" line="1167"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1166"/>
+        <location filename="../gui/MainWindow.cpp" line="1170"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1177"/>
+        <location filename="../gui/MainWindow.cpp" line="1181"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1183"/>
+        <location filename="../gui/MainWindow.cpp" line="1187"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1230"/>
+        <location filename="../gui/MainWindow.cpp" line="1234"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -1334,42 +1339,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1231"/>
+        <location filename="../gui/MainWindow.cpp" line="1235"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1232"/>
+        <location filename="../gui/MainWindow.cpp" line="1236"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1233"/>
+        <location filename="../gui/MainWindow.cpp" line="1237"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1236"/>
+        <location filename="../gui/MainWindow.cpp" line="1240"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1243"/>
+        <location filename="../gui/MainWindow.cpp" line="1247"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1243"/>
+        <location filename="../gui/MainWindow.cpp" line="1247"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1245"/>
+        <location filename="../gui/MainWindow.cpp" line="1249"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="971"/>
+        <location filename="../gui/MainWindow.cpp" line="974"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
@@ -1379,42 +1384,42 @@
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="281"/>
+        <location filename="../gui/MainWindow.cpp" line="282"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="429"/>
+        <location filename="../gui/MainWindow.cpp" line="430"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="475"/>
+        <location filename="../gui/MainWindow.cpp" line="477"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="483"/>
+        <location filename="../gui/MainWindow.cpp" line="485"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="901"/>
+        <location filename="../gui/MainWindow.cpp" line="903"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="975"/>
+        <location filename="../gui/MainWindow.cpp" line="978"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="981"/>
+        <location filename="../gui/MainWindow.cpp" line="984"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="990"/>
+        <location filename="../gui/MainWindow.cpp" line="993"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -1422,12 +1427,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1004"/>
+        <location filename="../gui/MainWindow.cpp" line="1007"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1008"/>
+        <location filename="../gui/MainWindow.cpp" line="1011"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -1435,12 +1440,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1011"/>
+        <location filename="../gui/MainWindow.cpp" line="1014"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1012"/>
+        <location filename="../gui/MainWindow.cpp" line="1015"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -1611,57 +1616,77 @@
         <translation>Kluftschar „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="158"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="156"/>
+        <source>Add material &quot;%1&quot;</source>
+        <translation>Material „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="164"/>
+        <source>Add joint material &quot;%1&quot;</source>
+        <translation>Kluftmaterial „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="173"/>
+        <source>Assign a material to %1</source>
+        <translation>%1 ein Material zuweisen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="181"/>
+        <source>Assign a joint material to %1</source>
+        <translation>%1 ein Kluftmaterial zuweisen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="189"/>
         <source>Move %1</source>
         <translation>%1 verschieben</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="167"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="198"/>
         <source>Delete %1</source>
         <translation>%1 löschen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="180"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="211"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="181"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="212"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="182"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="213"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="183"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="214"/>
         <source>roller %1</source>
         <translation>Rollenlager %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="184"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="215"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="185"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="216"/>
         <source>pressure %1</source>
         <translation>Kantendruck %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="186"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="217"/>
         <source>point %1</source>
         <translation>Punkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="189"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="220"/>
         <source>hole %1 of %2</source>
         <translation>Loch %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="190"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="221"/>
         <source>vertex %1 of %2</source>
         <translation>Eckpunkt %1 von %2</translation>
     </message>
@@ -1679,23 +1704,23 @@
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="70"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="72"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="75"/>
-        <location filename="../gui/widgets/ModelTree.cpp" line="92"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="77"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="94"/>
         <source>no material</source>
         <translation>kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="76"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="78"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="77"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="79"/>
         <source>%1, %n vertices</source>
         <translation>
             <numerusform>%1, %n Eckpunkt</numerusform>
@@ -1703,12 +1728,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="82"/>
         <source>hole %1</source>
         <translation>Loch %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="82"/>
         <source>%n vertices</source>
         <translation>
             <numerusform>%n Eckpunkt</numerusform>
@@ -1716,17 +1741,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="87"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="89"/>
         <source>Blocks</source>
         <translation>Blöcke</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="95"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="97"/>
         <source>block %1</source>
         <translation>Block %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="96"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="98"/>
         <source>%1, %2 m², %n elements</source>
         <translation>
             <numerusform>%1, %2 m², %n Element</numerusform>
@@ -1734,87 +1759,87 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="100"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="102"/>
         <source>Joints</source>
         <translation>Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="101"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="103"/>
         <source>Explicit</source>
         <translation>Einzelklüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="105"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
         <source>spacing %1 m</source>
         <translation>Abstand %1 m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="109"/>
         <source>, persistence %1 %, joints %2 m long</source>
         <translation>, Durchtrennungsgrad %1 %, Klüfte %2 m lang</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="108"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="110"/>
         <source>Set %1</source>
         <translation>Kluftschar %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="117"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="119"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="118"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="120"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="123"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="125"/>
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="124"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="126"/>
         <source>rock/soil</source>
         <translation>Fels/Boden</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="125"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="126"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
         <source>Supports</source>
         <translation>Auflager</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="130"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="134"/>
         <source>roller %1 to %2</source>
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="134"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="136"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="136"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="138"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="139"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="141"/>
         <source>pressure %1 Pa</source>
         <translation>Kantendruck %1 Pa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="141"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="143"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
@@ -1822,312 +1847,364 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="70"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="111"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="87"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="71"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="72"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="89"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="73"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="90"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="76"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="93"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="79"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="96"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="95"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="112"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="114"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="157"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
+        <source>New</source>
+        <translation>Neu</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
+        <source>Add a material (a copy of the one shown)</source>
+        <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="467"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="469"/>
+        <source>Assign to Selection</source>
+        <translation>Der Auswahl zuweisen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="135"/>
+        <source>The region selected in the view or the Model tree is made of this material</source>
+        <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="115"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="116"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
         <source>Young&apos;s modulus E</source>
         <translation>Elastizitätsmodul E</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="119"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="145"/>
         <source>Poisson&apos;s ratio ν [–]</source>
         <translation>Querdehnzahl ν [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="120"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="121"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
         <source>Unit weight γ</source>
         <translation>Wichte γ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="122"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="160"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="162"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="286"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="123"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
         <source>Cohesion c</source>
         <translation>Kohäsion c</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="124"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="158"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="125"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
         <source>Friction angle φ</source>
         <translation>Reibungswinkel φ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="153"/>
         <source>Dilation angle ψ</source>
         <translation>Dilatanzwinkel ψ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
         <source>Tensile strength</source>
         <translation>Zugfestigkeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="156"/>
         <source>Plastic (Mohr–Coulomb)</source>
         <translation>Plastisch (Mohr-Coulomb)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="170"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="214"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="159"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="205"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="249"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="293"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="159"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="183"/>
+        <source>Add a joint material (a copy of the one shown)</source>
+        <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <source>The joint selected in the view or the Model tree gets this joint material</source>
+        <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
         <source>Friction angle φj</source>
         <translation>Reibungswinkel φj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="161"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
         <source>Cohesion cj</source>
         <translation>Kohäsion cj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="163"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="198"/>
         <source>Tensile strength tj</source>
         <translation>Zugfestigkeit tj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="164"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="167"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="237"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="165"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
         <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
         <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
         <source>Normal stiffness kn</source>
         <translation>Normalsteifigkeit kn</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="168"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
         <source>Shear stiffness; 0 = automatic</source>
         <translation>Schubsteifigkeit; 0 = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="169"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
         <source>Shear stiffness ks</source>
         <translation>Schubsteifigkeit ks</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="223"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="224"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="237"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="225"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="231"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="236"/>
         <source>Max displacement ratio [–]</source>
         <translation>Max. Verschiebungsverhältnis [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="239"/>
         <source>Penalty</source>
         <translation>Penalty</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="210"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="242"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="292"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="294"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="324"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="329"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="406"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="432"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="457"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="483"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="467"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="469"/>
+        <source>Assign to %1</source>
+        <translation>Zuweisen an %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="489"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="506"/>
+        <source>Added &quot;%1&quot;.</source>
+        <translation>„%1“ hinzugefügt.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="517"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="527"/>
+        <source>Assigned to %1.</source>
+        <translation>Zugewiesen an %1.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="552"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="578"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="603"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="629"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="410"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="436"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="461"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="487"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="582"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="607"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="633"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>

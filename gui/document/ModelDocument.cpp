@@ -150,6 +150,37 @@ void ModelDocument::addJointSet(const JointSet& set) {
     undo_.push(new AddItemCommand<JointSet>(this, &Model::joint_sets, std::move(j), text));
 }
 
+int ModelDocument::addMaterial(const Material& material) {
+    Material m = material;
+    if (m.name.empty()) m.name = unused_name(model_.materials, "material");
+    const QString text = tr("Add material \"%1\"").arg(QString::fromStdString(m.name));
+    undo_.push(new AddItemCommand<Material>(this, &Model::materials, std::move(m), text));
+    return static_cast<int>(model_.materials.size()) - 1;
+}
+
+int ModelDocument::addJointMaterial(const JointMaterial& material) {
+    JointMaterial m = material;
+    if (m.name.empty()) m.name = unused_name(model_.joint_materials, "joint material");
+    const QString text = tr("Add joint material \"%1\"").arg(QString::fromStdString(m.name));
+    undo_.push(new AddItemCommand<JointMaterial>(this, &Model::joint_materials, std::move(m), text));
+    return static_cast<int>(model_.joint_materials.size()) - 1;
+}
+
+void ModelDocument::setRegionMaterial(int region, int material) {
+    if (region < 0 || static_cast<std::size_t>(region) >= model_.regions.size()) return;
+    const auto r = static_cast<std::size_t>(region);
+    undo_.push(new SetValueCommand<int>(this, [r](Model& m) -> int& { return m.regions[r].material; }, material,
+                                        tr("Assign a material to %1").arg(itemName({ItemRef::Kind::Region, region}))));
+}
+
+void ModelDocument::setJointMaterialOfJoint(int joint, int jointMaterial) {
+    if (joint < 0 || static_cast<std::size_t>(joint) >= model_.joints.size()) return;
+    const auto j = static_cast<std::size_t>(joint);
+    undo_.push(new SetValueCommand<int>(this, [j](Model& m) -> int& { return m.joints[j].joint_material; },
+                                        jointMaterial,
+                                        tr("Assign a joint material to %1").arg(itemName({ItemRef::Kind::Joint, joint}))));
+}
+
 bool ModelDocument::moveItem(const ItemRef& ref, const Point2& delta) {
     Model moved = model_;
     if (!move_item(moved, ref, delta)) return false;

@@ -74,6 +74,14 @@ public:
     int regionContaining(const std::vector<Point2>& ring) const;
     /// Adds a joint set; an empty name becomes "joint set N".
     void addJointSet(const JointSet& set);
+    /// Adds a material / joint material (an empty name becomes "material N" / "joint material
+    /// N"); returns its index.
+    int addMaterial(const Material& material);
+    int addJointMaterial(const JointMaterial& material);
+    /// Region `region` is made of material `material`.
+    void setRegionMaterial(int region, int material);
+    /// Explicit joint `joint` gets joint material `jointMaterial` (−1 = the default one).
+    void setJointMaterialOfJoint(int joint, int jointMaterial);
 
     /// Moves an item, a hole or a vertex by `delta` (m); false when `ref` does not exist.
     bool moveItem(const ItemRef& ref, const Point2& delta);

@@ -10,6 +10,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -22,6 +23,22 @@
 #include <vector>
 
 namespace mcdda::gui {
+
+namespace {
+
+/// Two buttons side by side in a form row.
+QWidget* buttons_row(QPushButton* a, QPushButton* b, QWidget* parent)
+{
+    auto* row = new QWidget(parent);
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(a);
+    layout->addWidget(b);
+    layout->addStretch();
+    return row;
+}
+
+}  // namespace
 
 namespace {
 
@@ -109,6 +126,15 @@ QWidget* PropertyEditor::createMaterialForm()
         if (!loading_) loadMaterial();
     });
     form->addRow(tr("Material"), material_box_);
+    mat_new_ = new QPushButton(tr("New"), page);
+    mat_new_->setObjectName(QStringLiteral("materialNew"));
+    mat_new_->setToolTip(tr("Add a material (a copy of the one shown)"));
+    connect(mat_new_, &QPushButton::clicked, this, &PropertyEditor::newMaterial);
+    mat_assign_ = new QPushButton(tr("Assign to Selection"), page);
+    mat_assign_->setObjectName(QStringLiteral("materialAssign"));
+    mat_assign_->setToolTip(tr("The region selected in the view or the Model tree is made of this material"));
+    connect(mat_assign_, &QPushButton::clicked, this, &PropertyEditor::assignMaterial);
+    form->addRow(QString(), buttons_row(mat_new_, mat_assign_, page));
     mat_name_ = new QLineEdit(page);
     mat_name_->setObjectName(QStringLiteral("materialName"));
     form->addRow(tr("Name"), mat_name_);
@@ -152,6 +178,15 @@ QWidget* PropertyEditor::createJointMaterialForm()
         if (!loading_) loadJointMaterial();
     });
     form->addRow(tr("Joint material"), joint_box_);
+    jm_new_ = new QPushButton(tr("New"), page);
+    jm_new_->setObjectName(QStringLiteral("jointMaterialNew"));
+    jm_new_->setToolTip(tr("Add a joint material (a copy of the one shown)"));
+    connect(jm_new_, &QPushButton::clicked, this, &PropertyEditor::newJointMaterial);
+    jm_assign_ = new QPushButton(tr("Assign to Selection"), page);
+    jm_assign_->setObjectName(QStringLiteral("jointMaterialAssign"));
+    jm_assign_->setToolTip(tr("The joint selected in the view or the Model tree gets this joint material"));
+    connect(jm_assign_, &QPushButton::clicked, this, &PropertyEditor::assignJointMaterial);
+    form->addRow(QString(), buttons_row(jm_new_, jm_assign_, page));
     jm_name_ = new QLineEdit(page);
     jm_name_->setObjectName(QStringLiteral("jointMaterialName"));
     form->addRow(tr("Name"), jm_name_);
@@ -307,6 +342,9 @@ void PropertyEditor::loadMaterial()
     const bool valid = i >= 0 && static_cast<std::size_t>(i) < m.materials.size();
     for (QWidget* w : material_box_->parentWidget()->findChildren<QWidget*>())
         if (w != mat_status_) w->setEnabled(valid);
+    mat_new_->setEnabled(true);
+    mat_new_->parentWidget()->setEnabled(true);
+    updateAssignButtons();
     if (!valid) return;
     loading_ = true;
     const Material& x = m.materials[static_cast<std::size_t>(i)];
@@ -329,6 +367,9 @@ void PropertyEditor::loadJointMaterial()
     const bool valid = i >= 0 && static_cast<std::size_t>(i) < m.joint_materials.size();
     for (QWidget* w : joint_box_->parentWidget()->findChildren<QWidget*>())
         if (w != jm_status_) w->setEnabled(valid);
+    jm_new_->setEnabled(true);
+    jm_new_->parentWidget()->setEnabled(true);
+    updateAssignButtons();
     if (!valid) return;
     loading_ = true;
     const JointMaterial& x = m.joint_materials[static_cast<std::size_t>(i)];
@@ -381,6 +422,111 @@ QString PropertyEditor::materialStatus() const { return mat_status_->text(); }
 QString PropertyEditor::jointMaterialStatus() const { return jm_status_->text(); }
 QString PropertyEditor::analysisStatus() const { return an_status_->text(); }
 QString PropertyEditor::initialStressStatus() const { return is_status_->text(); }
+
+void PropertyEditor::setSelection(const ItemRef& ref)
+{
+    selection_ = ref.valid() ? ItemRef{ref.kind, ref.index} : ItemRef{};
+    const Model& m = document_->model();
+    if (item_exists(m, selection_)) {
+        const auto i = static_cast<std::size_t>(selection_.index);
+        switch (selection_.kind) {
+        case ItemRef::Kind::Region:
+            if (m.regions[i].material >= 0) setMaterialIndex(m.regions[i].material);
+            tabs_->setCurrentIndex(0);
+            break;
+        case ItemRef::Kind::Joint: {
+            const int jm = m.joints[i].joint_material >= 0 ? m.joints[i].joint_material : m.default_joint_material;
+            if (jm >= 0) setJointMaterialIndex(jm);
+            tabs_->setCurrentIndex(1);
+            break;
+        }
+        case ItemRef::Kind::PointLoad:
+            load_form_->setLoadIndex(selection_.index);
+            tabs_->setCurrentWidget(load_form_);
+            break;
+        case ItemRef::Kind::EdgePressure:
+            load_form_->setLoadIndex(static_cast<int>(m.point_loads.size()) + selection_.index);
+            tabs_->setCurrentWidget(load_form_);
+            break;
+        default:
+            break;
+        }
+    }
+    updateAssignButtons();
+}
+
+void PropertyEditor::updateAssignButtons()
+{
+    if (!mat_assign_ || !jm_assign_) return;  // still being built
+    const Model& m = document_->model();
+    const bool exists = item_exists(m, selection_);
+    const bool region = exists && selection_.kind == ItemRef::Kind::Region;
+    const bool joint = exists && selection_.kind == ItemRef::Kind::Joint;
+    const QString name = exists ? document_->itemName(selection_) : QString();
+    mat_assign_->setEnabled(region && material_box_->currentIndex() >= 0);
+    mat_assign_->setText(region ? tr("Assign to %1").arg(name) : tr("Assign to Selection"));
+    jm_assign_->setEnabled(joint && joint_box_->currentIndex() >= 0);
+    jm_assign_->setText(joint ? tr("Assign to %1").arg(name) : tr("Assign to Selection"));
+}
+
+bool PropertyEditor::newMaterial()
+{
+    const Model& m = document_->model();
+    const int shown = material_box_->currentIndex();
+    Material material;
+    if (shown >= 0 && static_cast<std::size_t>(shown) < m.materials.size()) {
+        material = m.materials[static_cast<std::size_t>(shown)];
+    } else {  // sound rock as a start: every value valid
+        material.young_modulus = 10e9;
+        material.poisson_ratio = 0.25;
+        material.density = 2600.0;
+        material.cohesion = 1e6;
+        material.friction_angle = 35.0 * 3.14159265358979323846 / 180.0;
+    }
+    material.name.clear();  // the document names it
+    const int index = document_->addMaterial(material);
+    setMaterialIndex(index);
+    form::set_status(mat_status_, tr("Added \"%1\".").arg(to_qt(document_->model().materials[static_cast<std::size_t>(index)].name)), false);
+    return true;
+}
+
+bool PropertyEditor::newJointMaterial()
+{
+    const Model& m = document_->model();
+    const int shown = joint_box_->currentIndex();
+    JointMaterial material;
+    if (shown >= 0 && static_cast<std::size_t>(shown) < m.joint_materials.size())
+        material = m.joint_materials[static_cast<std::size_t>(shown)];
+    else
+        material.friction_angle = 30.0 * 3.14159265358979323846 / 180.0;
+    material.name.clear();
+    const int index = document_->addJointMaterial(material);
+    setJointMaterialIndex(index);
+    form::set_status(jm_status_,
+              tr("Added \"%1\".").arg(to_qt(document_->model().joint_materials[static_cast<std::size_t>(index)].name)),
+              false);
+    return true;
+}
+
+bool PropertyEditor::assignMaterial()
+{
+    const int material = material_box_->currentIndex();
+    if (!item_exists(document_->model(), selection_) || selection_.kind != ItemRef::Kind::Region || material < 0)
+        return false;
+    document_->setRegionMaterial(selection_.index, material);
+    form::set_status(mat_status_, tr("Assigned to %1.").arg(document_->itemName(selection_)), false);
+    return true;
+}
+
+bool PropertyEditor::assignJointMaterial()
+{
+    const int material = joint_box_->currentIndex();
+    if (!item_exists(document_->model(), selection_) || selection_.kind != ItemRef::Kind::Joint || material < 0)
+        return false;
+    document_->setJointMaterialOfJoint(selection_.index, material);
+    form::set_status(jm_status_, tr("Assigned to %1.").arg(document_->itemName(selection_)), false);
+    return true;
+}
 
 bool PropertyEditor::applyMaterial()
 {

@@ -9,6 +9,7 @@
 /// form's status line and the model stays as it was — or applies the change as one undoable
 /// command.
 
+#include "document/ModelItems.hpp"
 #include "model/Model.hpp"
 
 #include <QString>
@@ -54,6 +55,10 @@ public:
     QString analysisStatus() const;
     QString initialStressStatus() const;
 
+    /// The item selected in the view or the tree: the forms turn to what it uses (a region's
+    /// material, a joint's joint material, a load), and Assign gives it the material shown.
+    void setSelection(const ItemRef& ref);
+
     /// The Loads and Mesh tabs.
     LoadForm* loadForm() const { return load_form_; }
     MeshForm* meshForm() const { return mesh_form_; }
@@ -64,6 +69,13 @@ public slots:
     bool applyJointMaterial();
     bool applyAnalysis();
     bool applyInitialStress();
+    /// New: adds a material (a copy of the one shown, or defaults) and shows it.
+    bool newMaterial();
+    bool newJointMaterial();
+    /// Assign: the selected region gets the material shown / the selected explicit joint the
+    /// joint material shown. False without such a selection.
+    bool assignMaterial();
+    bool assignJointMaterial();
     /// Shows the document's model in the forms again (after an edit, undo, open).
     void refresh();
 
@@ -77,6 +89,8 @@ private:
     void loadAnalysis();
     void loadInitialStress();
     void updateStressFields();
+    /// Enables and labels the Assign buttons after the selection.
+    void updateAssignButtons();
 
     ModelDocument* document_;
     bool loading_ = false;
@@ -94,6 +108,11 @@ private:
     QDoubleSpinBox* mat_psi_ = nullptr;
     QDoubleSpinBox* mat_t_ = nullptr;
     QCheckBox* mat_plastic_ = nullptr;
+    QPushButton* mat_new_ = nullptr;
+    QPushButton* mat_assign_ = nullptr;
+    QPushButton* jm_new_ = nullptr;
+    QPushButton* jm_assign_ = nullptr;
+    ItemRef selection_;
     QLabel* mat_status_ = nullptr;
 
     QComboBox* joint_box_ = nullptr;

@@ -6,6 +6,7 @@
 #include "MainWindow.hpp"
 #include "WindowProbe.hpp"
 #include "document/ModelDocument.hpp"
+#include "panels/PropertyEditor.hpp"
 #include "tools/DrawTool.hpp"
 #include "tools/SelectTool.hpp"
 #include "view/Palette.hpp"
@@ -15,6 +16,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QMenuBar>
 #include <QStandardPaths>
 #include <QTreeWidgetItemIterator>
@@ -58,6 +60,7 @@ private slots:
     void selectMoveDelete();
     void treeSelectsAndListsBlocks();
     void shiftDrawsAHoleAndCommasAreDecimal();
+    void selectionAssignsMaterials();
 
 private:
     /// A new model: a 10 m square on rollers with a measurement point at (5, 8).
@@ -252,6 +255,43 @@ void SelectTest::shiftDrawsAHoleAndCommasAreDecimal()
     QCOMPARE(typed[0].y, 0.25);
     QCOMPARE(typed[1].x, 14.5);
     QCOMPARE(typed[2].y, 2.0);
+}
+
+// A second material for a selected region and a second joint material for a selected joint:
+// New copies the one shown, Assign gives it to the selection; both undoable.
+void SelectTest::selectionAssignsMaterials()
+{
+    MainWindow window;
+    squareModel(window);
+    gui::ModelDocument* doc = window.document();
+    doc->addJoint({{-1, 4}, {11, 4}});
+    QTRY_VERIFY(settled(window));
+    gui::PropertyEditor* editor = window.propertyEditor();
+    auto* assign = editor->findChild<QPushButton*>(QStringLiteral("materialAssign"));
+    QVERIFY(assign);
+    QVERIFY(!assign->isEnabled());  // nothing selected
+
+    window.selectItem({Kind::Region, 0});
+    QVERIFY(assign->isEnabled());
+    QVERIFY(editor->newMaterial());
+    QCOMPARE(doc->model().materials.size(), std::size_t(2));
+    QCOMPARE(doc->model().materials[1].young_modulus, doc->model().materials[0].young_modulus);  // a copy
+    QCOMPARE(editor->materialIndex(), 1);
+    QVERIFY(editor->assignMaterial());
+    QCOMPARE(doc->model().regions[0].material, 1);
+    QTRY_VERIFY(settled(window));
+    QVERIFY2(share_around(*window.modelView(), 5, 7, view::material_color(1)) > 0.5, "drawn in the new colour");
+    doc->undoStack()->undo();
+    QCOMPARE(doc->model().regions[0].material, 0);
+
+    window.selectItem({Kind::Joint, 0});
+    QVERIFY(!assign->isEnabled());  // a joint has no rock material
+    QVERIFY(editor->newJointMaterial());
+    QVERIFY(editor->assignJointMaterial());
+    QCOMPARE(doc->model().joints[0].joint_material, 1);
+    QVERIFY(doc->undoStack()->undoText().contains(QStringLiteral("joint material")));
+    window.selectItem({});
+    QVERIFY(!editor->assignJointMaterial());
 }
 
 QTEST_MAIN(SelectTest)
