@@ -855,15 +855,18 @@ QString MainWindow::messages() const { return messages_->toPlainText(); }
 
 QString MainWindow::statisticsText() const { return statistics_label_->text(); }
 
+QString MainWindow::cursorText() const { return cursor_label_->text(); }
+
 void MainWindow::showCursor(const QPointF& model_pos)
 {
     // As many decimals as one pixel resolves.
     const double resolution = view_->metresPerPixel();
     const int decimals =
         resolution > 0.0 ? std::clamp(static_cast<int>(std::ceil(-std::log10(resolution))), 0, 6) : 3;
-    cursor_label_->setText(tr("x = %1 m   y = %2 m")
-                               .arg(model_pos.x(), 0, 'f', decimals)
-                               .arg(model_pos.y(), 0, 'f', decimals));
+    QString text = tr("x = %1 m   y = %2 m").arg(model_pos.x(), 0, 'f', decimals).arg(model_pos.y(), 0, 'f', decimals);
+    const QString value = view_->resultValueAt(model_pos);  // a query of the result shown
+    if (!value.isEmpty()) text += QStringLiteral("   ") + value;
+    cursor_label_->setText(text);
 }
 
 void MainWindow::applySceneOptions()

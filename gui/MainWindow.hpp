@@ -101,6 +101,8 @@ public:
     QString messages() const;
     /// The mesh figures in the status bar.
     QString statisticsText() const;
+    /// The cursor position (and the result value under it) in the status bar.
+    QString cursorText() const;
 
     /// Whether an analysis is running (possibly paused).
     bool isRunning() const { return controller_ != nullptr; }

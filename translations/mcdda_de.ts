@@ -664,7 +664,7 @@
     </message>
     <message>
         <location filename="../gui/MainWindow.cpp" line="219"/>
-        <location filename="../gui/MainWindow.cpp" line="1029"/>
+        <location filename="../gui/MainWindow.cpp" line="1032"/>
         <source>&amp;Mesh</source>
         <translation>&amp;Netz</translation>
     </message>
@@ -1151,159 +1151,159 @@
         <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="864"/>
+        <location filename="../gui/MainWindow.cpp" line="866"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="884"/>
+        <location filename="../gui/MainWindow.cpp" line="887"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="885"/>
+        <location filename="../gui/MainWindow.cpp" line="888"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="962"/>
+        <location filename="../gui/MainWindow.cpp" line="965"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="963"/>
+        <location filename="../gui/MainWindow.cpp" line="966"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1025"/>
-        <location filename="../gui/MainWindow.cpp" line="1036"/>
+        <location filename="../gui/MainWindow.cpp" line="1028"/>
+        <location filename="../gui/MainWindow.cpp" line="1039"/>
         <source>&amp;Run</source>
         <translation>Be&amp;rechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1027"/>
+        <location filename="../gui/MainWindow.cpp" line="1030"/>
         <source>Run</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1033"/>
+        <location filename="../gui/MainWindow.cpp" line="1036"/>
         <source>Cut the blocks and mesh them in the background (edits do this by themselves); the statistics go to the status bar and the Messages dock</source>
         <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und unter Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1040"/>
+        <location filename="../gui/MainWindow.cpp" line="1043"/>
         <source>Analyse the model; the picture follows the run</source>
         <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1041"/>
-        <location filename="../gui/MainWindow.cpp" line="1098"/>
+        <location filename="../gui/MainWindow.cpp" line="1044"/>
+        <location filename="../gui/MainWindow.cpp" line="1101"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1044"/>
+        <location filename="../gui/MainWindow.cpp" line="1047"/>
         <source>Pause or resume the run</source>
         <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1045"/>
+        <location filename="../gui/MainWindow.cpp" line="1048"/>
         <source>&amp;Stop</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1049"/>
+        <location filename="../gui/MainWindow.cpp" line="1052"/>
         <source>Stop the run after the current step; the results so far are kept</source>
         <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1051"/>
+        <location filename="../gui/MainWindow.cpp" line="1054"/>
         <source>Results &amp;Folder...</source>
         <translation>Ergebnis&amp;ordner...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1053"/>
+        <location filename="../gui/MainWindow.cpp" line="1056"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1056"/>
+        <location filename="../gui/MainWindow.cpp" line="1059"/>
         <source>Choose where runs write their files</source>
         <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1062"/>
+        <location filename="../gui/MainWindow.cpp" line="1065"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1064"/>
+        <location filename="../gui/MainWindow.cpp" line="1067"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1065"/>
+        <location filename="../gui/MainWindow.cpp" line="1068"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1066"/>
+        <location filename="../gui/MainWindow.cpp" line="1069"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1067"/>
+        <location filename="../gui/MainWindow.cpp" line="1070"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1068"/>
+        <location filename="../gui/MainWindow.cpp" line="1071"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1069"/>
+        <location filename="../gui/MainWindow.cpp" line="1072"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1070"/>
+        <location filename="../gui/MainWindow.cpp" line="1073"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1071"/>
+        <location filename="../gui/MainWindow.cpp" line="1074"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1072"/>
+        <location filename="../gui/MainWindow.cpp" line="1075"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1073"/>
+        <location filename="../gui/MainWindow.cpp" line="1076"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1076"/>
+        <location filename="../gui/MainWindow.cpp" line="1079"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1081"/>
+        <location filename="../gui/MainWindow.cpp" line="1084"/>
         <source>Scale factor of the drawn displacements (0 = undeformed)</source>
         <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1098"/>
+        <location filename="../gui/MainWindow.cpp" line="1101"/>
         <source>Res&amp;ume</source>
         <translation>&amp;Fortsetzen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1156"/>
+        <location filename="../gui/MainWindow.cpp" line="1159"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1311,27 +1311,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1167"/>
+        <location filename="../gui/MainWindow.cpp" line="1170"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1170"/>
+        <location filename="../gui/MainWindow.cpp" line="1173"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1181"/>
+        <location filename="../gui/MainWindow.cpp" line="1184"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1187"/>
+        <location filename="../gui/MainWindow.cpp" line="1190"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1234"/>
+        <location filename="../gui/MainWindow.cpp" line="1237"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -1339,42 +1339,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1235"/>
+        <location filename="../gui/MainWindow.cpp" line="1238"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1236"/>
+        <location filename="../gui/MainWindow.cpp" line="1239"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1237"/>
+        <location filename="../gui/MainWindow.cpp" line="1240"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1240"/>
+        <location filename="../gui/MainWindow.cpp" line="1243"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1247"/>
+        <location filename="../gui/MainWindow.cpp" line="1250"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1247"/>
+        <location filename="../gui/MainWindow.cpp" line="1250"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1249"/>
+        <location filename="../gui/MainWindow.cpp" line="1252"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="974"/>
+        <location filename="../gui/MainWindow.cpp" line="977"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
@@ -1404,22 +1404,22 @@
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="903"/>
+        <location filename="../gui/MainWindow.cpp" line="906"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="978"/>
+        <location filename="../gui/MainWindow.cpp" line="981"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="984"/>
+        <location filename="../gui/MainWindow.cpp" line="987"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="993"/>
+        <location filename="../gui/MainWindow.cpp" line="996"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -1427,12 +1427,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1007"/>
+        <location filename="../gui/MainWindow.cpp" line="1010"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1011"/>
+        <location filename="../gui/MainWindow.cpp" line="1014"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -1440,12 +1440,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1014"/>
+        <location filename="../gui/MainWindow.cpp" line="1017"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1015"/>
+        <location filename="../gui/MainWindow.cpp" line="1018"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -2267,16 +2267,19 @@
 <context>
     <name>mcdda::view</name>
     <message>
+        <location filename="../gui/view/ResultProbe.cpp" line="37"/>
         <location filename="../gui/view/ResultScene.cpp" line="47"/>
         <source>elastic</source>
         <translation>elastisch</translation>
     </message>
     <message>
+        <location filename="../gui/view/ResultProbe.cpp" line="38"/>
         <location filename="../gui/view/ResultScene.cpp" line="47"/>
         <source>yielded before</source>
         <translation>früher plastifiziert</translation>
     </message>
     <message>
+        <location filename="../gui/view/ResultProbe.cpp" line="39"/>
         <location filename="../gui/view/ResultScene.cpp" line="47"/>
         <source>yielding now</source>
         <translation>plastifiziert jetzt</translation>
@@ -2332,12 +2335,12 @@
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="384"/>
+        <location filename="../gui/view/ResultScene.cpp" line="399"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="386"/>
+        <location filename="../gui/view/ResultScene.cpp" line="401"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>

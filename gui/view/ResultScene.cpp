@@ -229,8 +229,12 @@ double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i)
     return std::sqrt(s);
 }
 
-void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options)
+void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options,
+                ResultProbe* probe = nullptr)
 {
+    ResultProbe unused;
+    ResultProbe& shown = probe ? *probe : unused;  // what the picture shows, for value queries
+    shown = ResultProbe{};
     vtkUnstructuredGrid* grid = r.grid;
     const FieldInfo& field = *r.field;
     const double pixel = dpi_of(renderer) / 72.0;
@@ -252,12 +256,16 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             q[1] += options.deform * displacement->GetComponent(i, 1);
         }
         points->InsertNextPoint(q[0], q[1], 0.0);
+        if (probe) shown.points.push_back({q[0], q[1]});
     }
     vtkNew<vtkCellArray> polys;
     vtkNew<vtkIdList> ids;
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
         grid->GetCellPoints(c, ids);
         polys->InsertNextCell(ids);
+        if (probe && ids->GetNumberOfIds() == 3)
+            shown.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+                                        static_cast<int>(ids->GetId(2))});
     }
     vtkNew<vtkPolyData> fill;
     fill->SetPoints(points);
@@ -278,6 +286,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             unsigned char b[3];
             for (int k = 0; k < 3; ++k) b[k] = static_cast<unsigned char>(std::lround(state_colors[s][k] * 255.0));
             colors->InsertNextTypedTuple(b);
+            if (probe) shown.values.push_back(s);
         }
         fill->GetCellData()->SetScalars(colors);
         mapper->SetScalarModeToUseCellData();
@@ -303,6 +312,8 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             const double pad = range[0] != 0.0 ? 0.01 * std::abs(range[0]) : 1.0;
             range[0] -= pad, range[1] += pad;
         }
+        if (probe)
+            for (vtkIdType i = 0; i < n; ++i) shown.values.push_back(values->GetValue(i));
         if (field.point_data) {
             fill->GetPointData()->SetScalars(values);
             mapper->SetScalarModeToUsePointData();
@@ -318,6 +329,10 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         mapper->SetScalarRange(range);
         mapper->InterpolateScalarsBeforeMappingOn();
     }
+    shown.point_values = field.point_data;
+    shown.categorical = categorical;
+    shown.title = picture_text(field.title);
+    shown.units = units;
     vtkNew<vtkActor> fill_actor;
     fill_actor->SetMapper(mapper);
     fill_actor->GetProperty()->LightingOff();
@@ -429,17 +444,17 @@ const std::vector<std::string>& result_field_names()
 }
 
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const std::string& vtu_path,
-                        const ResultOptions& options)
+                        const ResultOptions& options, ResultProbe* probe)
 {
     if (renderer == nullptr) return;
-    add_result(renderer, model, load_result(model, vtu_path, options), options);
+    add_result(renderer, model, load_result(model, vtu_path, options), options, probe);
 }
 
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const ResultSnapshot& snapshot,
-                        const ResultOptions& options)
+                        const ResultOptions& options, ResultProbe* probe)
 {
     if (renderer == nullptr) return;
-    add_result(renderer, model, snapshot_result(model, snapshot, options), options);
+    add_result(renderer, model, snapshot_result(model, snapshot, options), options, probe);
 }
 
 void render_result_png(const Preprocessed& model, const std::string& vtu_path, const ResultOptions& options,

@@ -6,6 +6,7 @@
 
 #include "Preprocess.hpp"
 #include "run/ResultSnapshot.hpp"
+#include "view/ResultProbe.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -40,14 +41,15 @@ const std::vector<std::string>& result_field_names();
 /// sets a white background and fits a parallel camera. Throws ResultFieldError for an unknown
 /// or missing field and std::runtime_error for a missing or unreadable file or a cell count
 /// that differs from the model's mesh.
+/// `probe`, when given, receives what the picture shows at each point (for value queries).
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const std::string& vtu_path,
-                        const ResultOptions& options);
+                        const ResultOptions& options, ResultProbe* probe = nullptr);
 
 /// The same scene from a snapshot of a run in memory (the mesh is the model's): what the desktop
 /// program shows while it runs. Throws like the above (ResultFieldError for an unknown field,
 /// std::runtime_error when the snapshot does not belong to the model's mesh).
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const ResultSnapshot& snapshot,
-                        const ResultOptions& options);
+                        const ResultOptions& options, ResultProbe* probe = nullptr);
 
 /// Renders the result scene off-screen to a PNG at `png_path` like render_png (X display,
 /// atomic write). The .vtu is read and checked before any X connection is opened.

@@ -46,6 +46,7 @@ struct ModelView::Impl {
     std::shared_ptr<const ResultSnapshot> result;  ///< shown instead of the model when set
     QString result_file;  ///< a saved step shown instead of the model when set (and no snapshot)
     view::ResultOptions result_options;
+    view::ResultProbe probe;  ///< what the result picture shows where (empty for the model)
     bool window_ready = false;    ///< VTK was given our native window
     bool camera_touched = false;  ///< the user navigated since the last fit: resizing keeps the view
     bool panning = false;
@@ -142,19 +143,22 @@ void ModelView::rebuild(bool keep_camera)
 
     syncSize();
     impl_->renderer->RemoveAllViewProps();
+    impl_->probe = view::ResultProbe{};
     bool drawn = false;
     if (impl_->scene && (impl_->result || !impl_->result_file.isEmpty())) {
         try {
             if (impl_->result)
-                view::build_result_scene(impl_->renderer, *impl_->scene, *impl_->result, impl_->result_options);
+                view::build_result_scene(impl_->renderer, *impl_->scene, *impl_->result, impl_->result_options,
+                                         &impl_->probe);
             else
                 view::build_result_scene(impl_->renderer, *impl_->scene, impl_->result_file.toStdString(),
-                                         impl_->result_options);
+                                         impl_->result_options, &impl_->probe);
             drawn = true;
         } catch (const std::exception& e) {
             qWarning("ModelView: cannot show the result: %s", e.what());
             impl_->result.reset();
             impl_->result_file.clear();
+            impl_->probe = view::ResultProbe{};
             impl_->renderer->RemoveAllViewProps();
         }
     }
@@ -209,6 +213,11 @@ void ModelView::clearResult()
 std::shared_ptr<const ResultSnapshot> ModelView::result() const { return impl_->result; }
 
 QString ModelView::resultFile() const { return impl_->result_file; }
+
+QString ModelView::resultValueAt(const QPointF& model_pos) const
+{
+    return QString::fromStdString(impl_->probe.describe(model_pos.x(), model_pos.y()));
+}
 
 void ModelView::clearScene()
 {

@@ -51,6 +51,9 @@ public:
     std::shared_ptr<const ResultSnapshot> result() const;
     /// The saved step shown, or empty.
     QString resultFile() const;
+    /// What the result picture shows at a model point (m), e.g. "principal stress 1 = -12.3
+    /// MPa"; empty over the model picture or outside the mesh.
+    QString resultValueAt(const QPointF& model_pos) const;
 
     /// What is drawn; changing it rebuilds the picture and keeps the camera.
     void setSceneOptions(const view::SceneOptions& options);

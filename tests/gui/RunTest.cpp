@@ -23,6 +23,7 @@
 
 using namespace mcdda;
 using mcdda::gui::MainWindow;
+using mcdda::gui::ModelView;
 using mcdda::gui::RunController;
 using mcdda::gui::RunProgress;
 
@@ -290,6 +291,21 @@ void RunTest::salenconOpenMeshRunShowsPlasticZone()
     // Closed form: plastic radius 2.505 m. Inside it (r = 1.8 m) yielded, outside (r = 3.5 m) not.
     QVERIFY2(share(1.8 * 0.7071, 1.8 * 0.7071) > 0.6, qPrintable(QString::number(share(1.27, 1.27))));
     QVERIFY2(share(3.5 * 0.7071, 3.5 * 0.7071) < 0.2, qPrintable(QString::number(share(2.47, 2.47))));
+
+    // The status bar tells what is under the cursor: the state inside the ring, and with σ1
+    // shown, a compressive stress in MPa near the far field (−10 MPa at the outer boundary).
+    ModelView* view = window.modelView();
+    QTest::mouseMove(view, view->toWidget(QPointF(1.27, 1.27)).toPoint());
+    QTRY_VERIFY2(window.cursorText().contains(QStringLiteral("plastic state: yield")), qPrintable(window.cursorText()));
+    window.setResultField(QStringLiteral("stress_3"));
+    window.modelView()->showBox(0, 0, 20, 20);
+    QTest::mouseMove(view, view->toWidget(QPointF(15.0, 15.0)).toPoint());
+    QTRY_VERIFY2(window.cursorText().contains(QStringLiteral("principal stress 3 = -")) &&
+                     window.cursorText().contains(QStringLiteral("MPa")),
+                 qPrintable(window.cursorText()));
+    const QString text = window.cursorText();
+    const double sigma3 = text.section(QStringLiteral("= "), -1).section(QLatin1Char(' '), 0, 0).toDouble();
+    QVERIFY2(sigma3 < -9.0 && sigma3 > -12.0, qPrintable(text));
 }
 
 QTEST_MAIN(RunTest)

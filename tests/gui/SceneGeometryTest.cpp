@@ -2,6 +2,7 @@
 // No rendering, no X server.
 
 #include "TunnelModel.hpp"
+#include "view/ResultProbe.hpp"
 #include "view/SceneGeometry.hpp"
 #include "view/Symbols.hpp"
 
@@ -115,4 +116,36 @@ TEST(Symbols, EmptyModelHasNoSymbols)
     EXPECT_TRUE(point_load_shapes(m, 1).empty());
     EXPECT_TRUE(edge_pressure_shapes(m, 1).empty());
     EXPECT_TRUE(measurement_shapes(m, 1).empty());
+}
+
+// The value query behind the status bar: point values interpolate linearly inside a triangle,
+// cell values are constant, states read as words, outside is nothing.
+TEST(ResultProbe, InterpolatesPointValuesAndReadsCells)
+{
+    view::ResultProbe probe;
+    probe.points = {{0, 0}, {2, 0}, {0, 2}, {2, 2}};
+    probe.triangles = {{0, 1, 2}, {1, 3, 2}};
+    probe.values = {0.0, 2.0, 4.0, 6.0};
+    probe.point_values = true;
+    probe.title = "x displacement";
+    probe.units = "m";
+    double v = 0.0;
+    ASSERT_TRUE(probe.valueAt(0.5, 0.5, &v));
+    EXPECT_NEAR(v, 0.5 + 2.0 * 0.5, 1e-12);  // u = x + 2y on both triangles
+    ASSERT_TRUE(probe.valueAt(1.5, 1.5, &v));
+    EXPECT_NEAR(v, 1.5 + 2.0 * 1.5, 1e-12);
+    EXPECT_FALSE(probe.valueAt(3.0, 1.0, &v));
+    EXPECT_EQ(probe.describe(3.0, 1.0), "");
+    EXPECT_EQ(probe.describe(1.0, 0.0), "x displacement = 1 m");
+
+    probe.point_values = false;
+    probe.values = {-12.5, 3.0};
+    probe.units = "MPa";
+    probe.title = "stress xx";
+    EXPECT_EQ(probe.describe(0.2, 0.2), "stress xx = -12.5 MPa");
+    probe.categorical = true;
+    probe.values = {0.0, 2.0};
+    probe.title = "plastic state";
+    EXPECT_EQ(probe.describe(1.8, 1.8), "plastic state: yielding now");
+    EXPECT_TRUE(view::ResultProbe{}.describe(0.5, 0.5).empty());
 }
