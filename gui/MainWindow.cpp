@@ -452,6 +452,7 @@ void MainWindow::setTool(DrawTool* tool)
     action->setChecked(true);
     coordinate_edit_->setEnabled(tool != nullptr);
     hole_shift_ = false;
+    applySnap();  // the grid shows with the drawing tools
     if (tool) {
         view_->clearResult();
         view_->setFocus();
@@ -507,6 +508,8 @@ void MainWindow::applySnap()
     SnapOptions options;
     options.grid = snap_action_ && snap_action_->isChecked();
     options.spacing = grid_spacing_;
+    // Drawing tools show the grid they snap to.
+    view_->setGridSpacing(options.grid && activeTool() ? grid_spacing_ : 0.0);
     for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_})
         tool->setSnapOptions(options);
     select_tool_->setSnapOptions(options);

@@ -75,8 +75,10 @@ std::size_t DrawTool::needed() const
 
 void DrawTool::moved(const QPointF& widget_pos)
 {
+    const Point2 landing = snapped(widget_pos);
+    view_->showSnapMarker(landing);
     if (points_.empty() || shape_ == Shape::Point) return;
-    cursor_ = snapped(widget_pos);
+    cursor_ = landing;
     has_cursor_ = true;
     updatePreview();
 }

@@ -27,6 +27,8 @@ inline constexpr Rgb measurement{0.00, 0.45, 0.20};     ///< measurement points
 inline constexpr Rgb text{0.08, 0.08, 0.10};            ///< legend and label text
 inline constexpr Rgb legend_frame{0.55, 0.56, 0.58};
 inline constexpr Rgb unassigned{0.75, 0.75, 0.75};      ///< material index −1 or out of range
+inline constexpr Rgb snap_marker{1.00, 0.55, 0.00};     ///< where a drawing click would land
+inline constexpr Rgb grid{0.30, 0.32, 0.36};            ///< the snapping grid (drawn translucent)
 }  // namespace palette
 
 }  // namespace mcdda::view

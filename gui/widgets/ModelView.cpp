@@ -40,6 +40,13 @@ struct ModelView::Impl {
     vtkNew<vtkPolyData> preview_data;
     vtkNew<vtkActor> preview_actor;
     std::vector<Point2> preview;
+    vtkNew<vtkPolyData> marker_data;  ///< where a click would land (snapped)
+    vtkNew<vtkActor> marker_actor;
+    bool marker_shown = false;
+    Point2 marker;
+    vtkNew<vtkPolyData> grid_data;  ///< the snapping grid, rebuilt for the visible area
+    vtkNew<vtkActor> grid_actor;
+    double grid_spacing = 0.0;      ///< 0: no grid
     ViewTool* tool = nullptr;
     std::shared_ptr<const Preprocessed> scene;
     view::SceneOptions options;
@@ -86,6 +93,31 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<
     impl_->preview_actor->GetProperty()->LightingOff();
     impl_->preview_actor->VisibilityOff();
     impl_->overlay->AddActor(impl_->preview_actor);
+
+    vtkNew<vtkPolyDataMapper> marker_mapper;
+    marker_mapper->SetInputData(impl_->marker_data);
+    impl_->marker_actor->SetMapper(marker_mapper);
+    {
+        const view::Rgb& c = view::palette::snap_marker;
+        impl_->marker_actor->GetProperty()->SetColor(c[0], c[1], c[2]);
+    }
+    impl_->marker_actor->GetProperty()->SetPointSize(9.0f);
+    impl_->marker_actor->GetProperty()->LightingOff();
+    impl_->marker_actor->VisibilityOff();
+    impl_->overlay->AddActor(impl_->marker_actor);
+
+    vtkNew<vtkPolyDataMapper> grid_mapper;
+    grid_mapper->SetInputData(impl_->grid_data);
+    impl_->grid_actor->SetMapper(grid_mapper);
+    {
+        const view::Rgb& c = view::palette::grid;
+        impl_->grid_actor->GetProperty()->SetColor(c[0], c[1], c[2]);
+    }
+    impl_->grid_actor->GetProperty()->SetOpacity(0.35);
+    impl_->grid_actor->GetProperty()->SetLineWidth(1.0f);
+    impl_->grid_actor->GetProperty()->LightingOff();
+    impl_->grid_actor->VisibilityOff();
+    impl_->overlay->AddActor(impl_->grid_actor);
 }
 
 ModelView::~ModelView()
@@ -126,7 +158,9 @@ void ModelView::syncOverlay()
 {
     // The overlay's own camera follows the model's but fits its clipping range to the rubber band.
     impl_->overlay->GetActiveCamera()->DeepCopy(impl_->renderer->GetActiveCamera());
-    if (!impl_->preview.empty()) impl_->overlay->ResetCameraClippingRange();
+    rebuildGrid();  // it follows pan and zoom
+    if (!impl_->preview.empty() || impl_->marker_shown || impl_->grid_spacing > 0.0)
+        impl_->overlay->ResetCameraClippingRange();
 }
 
 void ModelView::renderNow()
@@ -134,6 +168,68 @@ void ModelView::renderNow()
     if (!ensureWindow()) return;
     syncOverlay();
     impl_->window->Render();
+}
+
+void ModelView::rebuildGrid()
+{
+    const double spacing = impl_->grid_spacing;
+    impl_->grid_actor->SetVisibility(spacing > 0.0);
+    if (!(spacing > 0.0) || width() <= 0 || height() <= 0) return;
+    // Every n-th line when zoomed out, so lines stay at least 12 pixels apart.
+    double step = spacing;
+    const double m = metresPerPixel();
+    while (m > 0.0 && step / m < 12.0) step *= 2.0;
+    const QPointF a = toModel(QPointF(0, height())), b = toModel(QPointF(width(), 0));
+    const double x0 = std::floor(a.x() / step) * step, y0 = std::floor(a.y() / step) * step;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    auto line = [&](double ax, double ay, double bx, double by) {
+        const vtkIdType ids[2] = {points->InsertNextPoint(ax, ay, 0.0), points->InsertNextPoint(bx, by, 0.0)};
+        lines->InsertNextCell(2, ids);
+    };
+    for (double x = x0; x <= b.x(); x += step) line(x, a.y(), x, b.y());
+    for (double y = y0; y <= b.y(); y += step) line(a.x(), y, b.x(), y);
+    impl_->grid_data->SetPoints(points);
+    impl_->grid_data->SetLines(lines);
+    impl_->grid_data->Modified();
+}
+
+void ModelView::setGridSpacing(double metres)
+{
+    impl_->grid_spacing = metres > 0.0 && std::isfinite(metres) ? metres : 0.0;
+    update();
+}
+
+double ModelView::gridSpacing() const { return impl_->grid_spacing; }
+
+void ModelView::showSnapMarker(const Point2& p)
+{
+    impl_->marker_shown = true;
+    impl_->marker = p;
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(p.x, p.y, 0.0);
+    vtkNew<vtkCellArray> verts;
+    const vtkIdType id = 0;
+    verts->InsertNextCell(1, &id);
+    impl_->marker_data->SetPoints(points);
+    impl_->marker_data->SetVerts(verts);
+    impl_->marker_data->Modified();
+    impl_->marker_actor->VisibilityOn();
+    update();
+}
+
+void ModelView::hideSnapMarker()
+{
+    if (!impl_->marker_shown) return;
+    impl_->marker_shown = false;
+    impl_->marker_actor->VisibilityOff();
+    update();
+}
+
+bool ModelView::snapMarker(Point2* p) const
+{
+    if (impl_->marker_shown && p) *p = impl_->marker;
+    return impl_->marker_shown;
 }
 
 void ModelView::rebuild(bool keep_camera)
@@ -286,6 +382,7 @@ void ModelView::setTool(ViewTool* tool)
 {
     if (impl_->tool == tool) return;
     if (impl_->tool) impl_->tool->cancel();
+    hideSnapMarker();
     impl_->tool = tool;
     impl_->panning = false;
     if (tool) setCursor(tool->cursorShape()); else unsetCursor();
@@ -478,6 +575,7 @@ void ModelView::wheelEvent(QWheelEvent* event)
 
 void ModelView::leaveEvent(QEvent* event)
 {
+    hideSnapMarker();
     emit cursorLeft();
     QWidget::leaveEvent(event);
 }

@@ -81,6 +81,16 @@ public:
     void clearPreview();
     /// The rubber band's points (empty when none).
     std::vector<Point2> preview() const;
+    /// A light grid of lines `metres` apart over the picture (every 2^k-th line when zoomed
+    /// out, so lines stay apart); 0 removes it. Drawing tools show their snapping grid so.
+    void setGridSpacing(double metres);
+    double gridSpacing() const;
+    /// A marker where a click would land (the snapped cursor of a drawing tool); hidden when
+    /// the cursor leaves the view or the tool changes.
+    void showSnapMarker(const Point2& p);
+    void hideSnapMarker();
+    /// Whether the marker is shown, and where (into `p` when not null).
+    bool snapMarker(Point2* p = nullptr) const;
     /// Shows the model box [xmin, xmax] × [ymin, ymax] (with a margin); counts as navigating.
     void showBox(double xmin, double ymin, double xmax, double ymax);
 
@@ -123,6 +133,8 @@ private:
     void rebuild(bool keep_camera);
     void renderNow();
     void syncOverlay();
+    /// The grid lines over the visible area (each render: they follow pan and zoom).
+    void rebuildGrid();
 };
 
 }  // namespace mcdda::gui

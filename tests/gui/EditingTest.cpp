@@ -95,12 +95,34 @@ void EditingTest::drawUndoRedoSaveOpen()
     QCOMPARE(doc->model().joints[0].points[0].y, 3.0);
     QCOMPARE(doc->model().joints[0].points[1].x, 12.0);
 
+    // The snap marker sits where a click would land; the grid is drawn while a drawing tool
+    // is active (compare a spot outside the model with and without it).
+    QTest::mouseMove(view, pixel_of(*view, 11.1, 5.9));
+    Point2 marker;
+    QVERIFY(view->snapMarker(&marker));
+    QCOMPARE(marker.x, 11.0);
+    QCOMPARE(marker.y, 6.0);
+    QVERIFY(count_around(*view, 11.0, 6.0, view::palette::snap_marker, 3) >= 20);
+    QCOMPARE(view->gridSpacing(), 0.5);
+    const QImage with_grid = view->grabFrame();
+    window.findChild<QAction*>(QStringLiteral("selectToolAction"))->trigger();
+    QCOMPARE(view->gridSpacing(), 0.0);
+    QVERIFY(!view->snapMarker());
+    const QImage without_grid = view->grabFrame();
+    int changed = 0;
+    const QPointF outside = view->toWidget(QPointF(-1.3, 5.0)) * view->devicePixelRatioF();
+    for (int y = qRound(outside.y()) - 40; y < qRound(outside.y()) + 40; ++y)
+        changed += with_grid.pixelColor(qRound(outside.x()), y) != without_grid.pixelColor(qRound(outside.x()), y);
+    QVERIFY2(changed >= 2, qPrintable(QString::number(changed)));
+    window.findChild<QAction*>(QStringLiteral("drawJointAction"))->trigger();
+
     // Escape drops a half-drawn joint.
     QTest::mouseClick(view, Qt::LeftButton, {}, pixel_of(*view, 1, 1));
     QCOMPARE(view->preview().size(), std::size_t(1));
     QTest::keyClick(view, Qt::Key_Escape);
     QVERIFY(view->preview().empty());
     QCOMPARE(doc->model().joints.size(), std::size_t(1));
+    window.findChild<QAction*>(QStringLiteral("selectToolAction"))->trigger();  // no grid over the checks below
 
     const view::Rgb rock = view::material_color(0);
     // The picture follows once the edit has been pre-processed on the thread pool.
