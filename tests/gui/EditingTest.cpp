@@ -3,10 +3,13 @@
 // the file again in another window.
 
 #include "MainWindow.hpp"
-#include "WindowProbe.hpp"
 #include "ModelCompare.hpp"
+#include "WindowProbe.hpp"
 #include "dialogs/JointSetDialog.hpp"
 #include "document/ModelDocument.hpp"
+#include "panels/LoadForm.hpp"
+#include "panels/PropertyEditor.hpp"
+#include "run/RunController.hpp"
 #include "tools/DrawTool.hpp"
 #include "view/Palette.hpp"
 #include "widgets/ModelTree.hpp"
@@ -16,6 +19,7 @@
 #include <QCheckBox>
 #include <QLineEdit>
 #include <QApplication>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTreeWidget>
@@ -41,6 +45,7 @@ private slots:
 void EditingTest::initTestCase()
 {
     QStandardPaths::setTestModeEnabled(true);  // Recent Files go to a test settings file
+    gui::register_run_types();
     if (QGuiApplication::platformName() != QLatin1String("xcb"))
         QSKIP("the VTK view needs the xcb platform (run under xvfb-run)");
 }
@@ -174,6 +179,24 @@ void EditingTest::drawUndoRedoSaveOpen()
     QVERIFY2(diff.empty(), diff.c_str());
     QCOMPARE(other.document()->path(), path);
     QVERIFY(!other.document()->isModified());
+
+    // The drawn model runs: gravity from the Loads tab, three steps, coloured by displacement.
+    other.setRunOutputFolder(dir.filePath(QStringLiteral("results")));
+    QVERIFY(other.propertyEditor()->loadForm()->setStandardGravity());
+    AnalysisSettings analysis = other.document()->model().analysis;
+    analysis.steps = 3;
+    analysis.output_every = 1;
+    other.document()->setAnalysisSettings(analysis);
+    QTRY_VERIFY2(settled(other), qPrintable(other.messages()));
+    QSignalSpy finished(&other, &MainWindow::runFinished);
+    QVERIFY(other.startRun());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 120000);
+    QCOMPARE(finished.at(0).at(0).value<RunStatus>(), RunStatus::Completed);
+    QVERIFY(QFile::exists(dir.filePath(QStringLiteral("results/drawn.pvd"))));
+    const QImage result = other.modelView()->grabFrame();
+    const QPointF top = other.modelView()->toWidget(QPointF(5.0, 9.0)) * other.modelView()->devicePixelRatioF();
+    const QColor c = result.pixelColor(top.toPoint());
+    QVERIFY2(c.hsvSaturation() > 120, qPrintable(c.name()));  // a contour colour, not the rock's pale fill
 }
 
 namespace {
