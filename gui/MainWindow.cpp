@@ -1,11 +1,9 @@
 #include "MainWindow.hpp"
 
 #include "Version.hpp"
-#include "dialogs/JointSetDialog.hpp"
 #include "document/ModelDocument.hpp"
 #include "panels/PropertyEditor.hpp"
-#include "tools/DrawTool.hpp"
-#include "tools/SelectTool.hpp"
+#include "tools/EditingTools.hpp"
 #include "results/HistoryPlot.hpp"
 #include "results/ResultExport.hpp"
 #include "results/StepSlider.hpp"
@@ -34,7 +32,6 @@
 #include <QCheckBox>
 #include <QGuiApplication>
 #include <QLineEdit>
-#include <QRegularExpression>
 #include <QIcon>
 #include <QSettings>
 #include <QTreeWidget>
@@ -79,49 +76,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     document_ = new ModelDocument(this);
     preprocess_ = new QFutureWatcher<std::shared_ptr<Preprocessed>>(this);
     connect(preprocess_, &QFutureWatcherBase::finished, this, &MainWindow::onPreprocessed);
-    region_tool_ = makeTool(int(DrawTool::Shape::Polygon),
-                            [this](const std::vector<Point2>& points) { applyRegion(points); });
-    joint_tool_ = makeTool(int(DrawTool::Shape::Polyline), [this](const std::vector<Point2>& points) {
-        document_->addJoint(points);
-    });
-    fixed_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
-        FixedPoint f;
-        f.point = points.front();
-        document_->addFixedPoint(f);
-    });
-    roller_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
-        Roller r;
-        r.from = points.front();
-        r.to = points.back();
-        const QString fix = roller_fix_box_->currentData().toString();
-        r.fix_x = fix.contains(QLatin1Char('x'));
-        r.fix_y = fix.contains(QLatin1Char('y'));
-        document_->addRoller(r);
-    });
-    load_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
-        PointLoad l;
-        l.point = points.front();
-        l.force = {load_fx_->value() * 1e3, load_fy_->value() * 1e3};  // kN/m → N/m
-        document_->addPointLoad(l);
-    });
-    pressure_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
-        EdgePressure e;
-        e.from = points.front();
-        e.to = points.back();
-        e.pressure = pressure_box_->value() * 1e3;  // kPa → Pa
-        document_->addEdgePressure(e);
-    });
-    point_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
-        MeasurementPoint q;
-        q.point = points.front();
-        document_->addMeasurementPoint(q);
-    });
-    select_tool_ = new SelectTool(view_, [this]() -> const Model& { return document_->model(); }, this);
-    connect(select_tool_, &SelectTool::moveRequested, document_, &ModelDocument::moveItem);
-    connect(select_tool_, &SelectTool::deleteRequested, this, &MainWindow::deleteSelection);
-    connect(region_tool_, &DrawTool::started, this, [this] {
-        hole_shift_ = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
-    });
+    editing_ = new EditingTools(this, view_, document_);
+    connect(editing_, &EditingTools::message, this, &MainWindow::log);
+    connect(editing_, &EditingTools::selectionChanged, this, &MainWindow::onSelectionChanged);
     createDock();
     createModelDock();
     createResultDocks();
@@ -136,7 +93,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     model_dock_->raise();
     createActions();
     createEditActions();
-    createToolOptions();
     createRunActions();
     createStatusBar();
     setAcceptDrops(true);
@@ -147,10 +103,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(document_, &ModelDocument::changed, this, &MainWindow::onDocumentChanged);
     connect(document_, &ModelDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(document_, &ModelDocument::pathChanged, this, &MainWindow::updateTitle);
-    connect(select_tool_, &SelectTool::selectionChanged, this, &MainWindow::onSelectionChanged);
     applySnap();
     refreshModelTree();
-    view_->setTool(select_tool_);
 }
 
 MainWindow::~MainWindow()
@@ -158,14 +112,6 @@ MainWindow::~MainWindow()
     joinRun();
     requested_ = 0;
     preprocess_->waitForFinished();  // its result is dropped
-}
-
-DrawTool* MainWindow::makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply)
-{
-    auto* tool = new DrawTool(static_cast<DrawTool::Shape>(shape), view_,
-                              [this]() -> const Model& { return document_->model(); }, this);
-    connect(tool, &DrawTool::finished, this, std::move(apply));
-    return tool;
 }
 
 void MainWindow::createActions()
@@ -263,239 +209,33 @@ void MainWindow::createEditActions()
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
-
-    QToolBar* bar = addToolBar(tr("Tools"));
-    bar->setObjectName(QStringLiteral("tools"));
-    auto* group = new QActionGroup(this);
-    auto tool = [&](const QString& text, const QString& name, const QString& icon, const QString& tip,
-                    void (MainWindow::*slot)()) {
-        QAction* action = edit->addAction(text, this, slot);
-        action->setIcon(QIcon(QStringLiteral(":/icons/") + icon + QStringLiteral(".svg")));
-        action->setObjectName(name);
-        action->setCheckable(true);
-        action->setStatusTip(tip);
-        group->addAction(action);
-        bar->addAction(action);
-        return action;
-    };
-    select_action_ = tool(tr("&Select"), QStringLiteral("selectToolAction"), QStringLiteral("select"),
-                          tr("Click an item or a vertex to select it, drag it to move it, Delete removes it; "
-                             "drag empty space to pan"),
-                          &MainWindow::selectTool);
-    region_action_ = tool(tr("Draw &Region"), QStringLiteral("drawRegionAction"), QStringLiteral("draw-region"),
-                          tr("Click the corners of a new region; double-click or Enter closes it, Escape cancels"),
-                          &MainWindow::drawRegionTool);
-    joint_action_ = tool(tr("Draw &Joint"), QStringLiteral("drawJointAction"), QStringLiteral("draw-joint"),
-                         tr("Click the points of a new joint; double-click or Enter finishes it, Escape cancels"),
-                         &MainWindow::drawJointTool);
-    bar->addSeparator();
-    QAction* fixed = tool(tr("&Fixed Point"), QStringLiteral("fixedPointAction"), QStringLiteral("fixed-point"),
-                          tr("Click where the mesh is held in both directions"), &MainWindow::fixedPointTool);
-    QAction* roller = tool(tr("R&oller"), QStringLiteral("rollerAction"), QStringLiteral("roller"),
-                           tr("Click the two ends of a roller; the fixed directions are chosen in Tool Options"),
-                           &MainWindow::rollerTool);
-    QAction* load = tool(tr("Point &Load"), QStringLiteral("pointLoadAction"), QStringLiteral("point-load"),
-                         tr("Click where a point load acts; its force is set in Tool Options"),
-                         &MainWindow::pointLoadTool);
-    QAction* pressure = tool(tr("Edge &Pressure"), QStringLiteral("edgePressureAction"), QStringLiteral("edge-pressure"),
-                             tr("Click the two ends of a loaded edge; the pressure is set in Tool Options"),
-                             &MainWindow::edgePressureTool);
-    QAction* point = tool(tr("&Measurement Point"), QStringLiteral("measurementPointAction"), QStringLiteral("measurement-point"),
-                          tr("Click where displacements are recorded"), &MainWindow::measurementPointTool);
-    edit->addSeparator();
-    delete_action_ = edit->addAction(tr("&Delete"), this, [this] { deleteSelection(select_tool_->selection()); });
-    delete_action_->setObjectName(QStringLiteral("deleteAction"));
-    delete_action_->setShortcut(QKeySequence::Delete);
-    // Only in the view and the tree: Delete keeps deleting characters in the forms.
-    delete_action_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    delete_action_->setStatusTip(tr("Delete the selected item or vertex"));
-    delete_action_->setEnabled(false);
-    view_->addAction(delete_action_);
-    tree_->addAction(delete_action_);
-    QAction* joint_set = edit->addAction(tr("Add Joint Se&t..."), this, &MainWindow::addJointSetDialog);
-    joint_set->setObjectName(QStringLiteral("addJointSetAction"));
-    joint_set->setStatusTip(tr("Add a family of parallel joints"));
-    tool_actions_ = {{region_tool_, region_action_}, {joint_tool_, joint_action_}, {fixed_tool_, fixed},
-                     {roller_tool_, roller}, {load_tool_, load}, {pressure_tool_, pressure}, {point_tool_, point}};
-    select_action_->setChecked(true);
+    editing_->createActions(edit);
+    tree_->addAction(editing_->deleteAction());
 }
 
-void MainWindow::createToolOptions()
-{
-    QToolBar* bar = addToolBar(tr("Tool Options"));
-    bar->setObjectName(QStringLiteral("toolOptions"));
-    auto label = [&](const QString& text) {
-        auto* l = new QLabel(text, this);
-        l->setContentsMargins(6, 0, 2, 0);
-        bar->addWidget(l);
-    };
-    label(tr("Roller fixes"));
-    roller_fix_box_ = new QComboBox(this);
-    roller_fix_box_->setObjectName(QStringLiteral("rollerFixBox"));
-    roller_fix_box_->setToolTip(tr("Directions a new roller holds"));
-    roller_fix_box_->addItem(tr("y"), QStringLiteral("y"));
-    roller_fix_box_->addItem(tr("x"), QStringLiteral("x"));
-    roller_fix_box_->addItem(tr("x and y"), QStringLiteral("xy"));
-    bar->addWidget(roller_fix_box_);
-    bar->addSeparator();
-    auto spin = [&](const QString& name, const QString& unit, double value, const QString& tip) {
-        auto* box = new QDoubleSpinBox(this);
-        box->setObjectName(name);
-        box->setRange(-1e9, 1e9);
-        box->setDecimals(3);
-        box->setValue(value);
-        box->setSuffix(QLatin1Char(' ') + unit);
-        box->setToolTip(tip);
-        bar->addWidget(box);
-        return box;
-    };
-    label(tr("Load Fx"));
-    load_fx_ = spin(QStringLiteral("loadFxBox"), tr("kN/m"), 0.0, tr("Horizontal force of a new point load"));
-    label(tr("Fy"));
-    load_fy_ = spin(QStringLiteral("loadFyBox"), tr("kN/m"), -1.0, tr("Vertical force of a new point load"));
-    bar->addSeparator();
-    label(tr("Pressure"));
-    pressure_box_ = spin(QStringLiteral("pressureBox"), tr("kPa"), 100.0,
-                         tr("Pressure of a new edge load (positive pushes into the material)"));
-    bar->addSeparator();
-    hole_box_ = new QCheckBox(tr("Hole"), this);
-    hole_box_->setObjectName(QStringLiteral("holeBox"));
-    hole_box_->setToolTip(tr("Draw Region cuts an opening into the region around it (or hold Shift at the first click)"));
-    bar->addWidget(hole_box_);
-    bar->addSeparator();
-    label(tr("Point"));
-    coordinate_edit_ = new QLineEdit(this);
-    coordinate_edit_->setObjectName(QStringLiteral("coordinateEdit"));
-    coordinate_edit_->setPlaceholderText(tr("x, y"));
-    coordinate_edit_->setToolTip(tr("Type a point as \"x, y\" (m) and press Enter to place it; Enter on an empty field finishes the shape"));
-    coordinate_edit_->setMaximumWidth(140);
-    coordinate_edit_->setEnabled(false);
-    connect(coordinate_edit_, &QLineEdit::returnPressed, this, [this] {
-        if (enterCoordinates(coordinate_edit_->text())) coordinate_edit_->clear();
-    });
-    bar->addWidget(coordinate_edit_);
-}
-
-void MainWindow::applyRegion(const std::vector<Point2>& points)
-{
-    const bool hole = hole_shift_ || (hole_box_ && hole_box_->isChecked());
-    hole_shift_ = false;
-    if (!hole) {
-        document_->addRegion(points, document_->model().materials.empty() ? -1 : 0);
-        return;
-    }
-    const int region = document_->regionContaining(points);
-    if (region < 0) {
-        log(tr("The hole was not added: no region contains it."));
-        statusBar()->showMessage(tr("No region contains the hole"), 5000);
-        return;
-    }
-    document_->addHole(region, points);
-}
-
-namespace {
-
-/// A number typed with a decimal point or a decimal comma ("2.5" or "2,5").
-bool parse_number(QString text, double* value)
-{
-    text.replace(QLatin1Char(','), QLatin1Char('.'));
-    bool ok = false;
-    *value = text.toDouble(&ok);
-    return ok && std::isfinite(*value);
-}
-
-/// "x, y", "x y" or "x; y" — the last two also with decimal commas ("2,5; -1" or "2,5 -1").
-bool parse_point(const QString& text, Point2* p)
-{
-    QStringList parts = text.split(QLatin1Char(';'));
-    if (parts.size() != 2) parts = text.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
-    if (parts.size() != 2) parts = text.split(QLatin1Char(','));
-    if (parts.size() != 2) return false;
-    return parse_number(parts[0].trimmed(), &p->x) && parse_number(parts[1].trimmed(), &p->y);
-}
-
-}  // namespace
-
-bool MainWindow::enterCoordinates(const QString& text)
-{
-    DrawTool* tool = activeTool();
-    if (!tool) return false;
-    const QString trimmed = text.trimmed();
-    if (trimmed.isEmpty()) return tool->finish();
-    Point2 p;
-    // "x, y" with a space after the comma splits on the space first: drop the separator's comma.
-    QString cleaned = trimmed;
-    cleaned.replace(QRegularExpression(QStringLiteral("\\s*,\\s+")), QStringLiteral(";"));
-    if (!parse_point(cleaned, &p)) {
-        statusBar()->showMessage(tr("Type a point as \"x, y\" in metres, e.g. \"2.5, -1\" (or \"2,5; -1\")"), 5000);
-        return false;
-    }
-    tool->addPoint(p);
-    return true;
-}
-
-void MainWindow::addJointSetDialog()
-{
-    JointSetDialog dialog(document_->model(), this);
-    if (dialog.exec() == QDialog::Accepted) document_->addJointSet(dialog.jointSet());
-}
-
-DrawTool* MainWindow::activeTool() const { return dynamic_cast<DrawTool*>(view_->tool()); }
-
-void MainWindow::setTool(DrawTool* tool)
-{
-    if (view_->tool() == select_tool_ && tool) select_tool_->cancel();
-    view_->setTool(tool ? static_cast<ViewTool*>(tool) : select_tool_);
-    QAction* action = select_action_;
-    for (const auto& [t, a] : tool_actions_)
-        if (t == tool) action = a;
-    action->setChecked(true);
-    coordinate_edit_->setEnabled(tool != nullptr);
-    hole_shift_ = false;
-    applySnap();  // the grid shows with the drawing tools
-    if (tool) {
-        view_->clearResult();
-        view_->setFocus();
-    }
-}
-
-void MainWindow::selectTool() { setTool(nullptr); }
-
-void MainWindow::selectItem(const ItemRef& ref)
-{
-    if (view_->tool() != select_tool_) selectTool();
-    select_tool_->select(ref);
-}
-
-ItemRef MainWindow::selection() const { return select_tool_->selection(); }
+DrawTool* MainWindow::activeTool() const { return editing_->activeTool(); }
+SelectTool* MainWindow::selectionTool() const { return editing_->selectTool(); }
+ItemRef MainWindow::selection() const { return editing_->selection(); }
+void MainWindow::selectTool() { editing_->useSelect(); }
+void MainWindow::drawRegionTool() { editing_->useRegion(); }
+void MainWindow::drawJointTool() { editing_->useJoint(); }
+void MainWindow::fixedPointTool() { editing_->useFixedPoint(); }
+void MainWindow::rollerTool() { editing_->useRoller(); }
+void MainWindow::pointLoadTool() { editing_->usePointLoad(); }
+void MainWindow::edgePressureTool() { editing_->useEdgePressure(); }
+void MainWindow::measurementPointTool() { editing_->useMeasurementPoint(); }
+void MainWindow::selectItem(const ItemRef& ref) { editing_->selectItem(ref); }
+bool MainWindow::deleteSelection(const ItemRef& ref) { return editing_->deleteItem(ref); }
+bool MainWindow::enterCoordinates(const QString& text) { return editing_->enterCoordinates(text); }
+void MainWindow::addJointSetDialog() { editing_->addJointSetDialog(); }
 
 void MainWindow::onSelectionChanged(const ItemRef& ref)
 {
     tree_->selectItem(ref);
     property_editor_->setSelection(ref);
-    delete_action_->setEnabled(ref.valid());
     if (ref.valid())
         statusBar()->showMessage(tr("Selected %1: drag to move, Delete removes").arg(document_->itemName(ref)), 5000);
 }
-
-bool MainWindow::deleteSelection(const ItemRef& ref)
-{
-    const QString name = document_->itemName(ref);
-    if (document_->deleteItem(ref)) return true;
-    if (ref.valid()) {
-        const QString why = tr("%1 was not deleted: a region or hole keeps at least three vertices.").arg(name);
-        log(why);
-        statusBar()->showMessage(why, 5000);
-    }
-    return false;
-}
-void MainWindow::drawRegionTool() { setTool(region_tool_); }
-void MainWindow::drawJointTool() { setTool(joint_tool_); }
-void MainWindow::fixedPointTool() { setTool(fixed_tool_); }
-void MainWindow::rollerTool() { setTool(roller_tool_); }
-void MainWindow::pointLoadTool() { setTool(load_tool_); }
-void MainWindow::edgePressureTool() { setTool(pressure_tool_); }
-void MainWindow::measurementPointTool() { setTool(point_tool_); }
 
 void MainWindow::setGridSpacing(double metres)
 {
@@ -503,17 +243,7 @@ void MainWindow::setGridSpacing(double metres)
     applySnap();
 }
 
-void MainWindow::applySnap()
-{
-    SnapOptions options;
-    options.grid = snap_action_ && snap_action_->isChecked();
-    options.spacing = grid_spacing_;
-    // Drawing tools show the grid they snap to.
-    view_->setGridSpacing(options.grid && activeTool() ? grid_spacing_ : 0.0);
-    for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_})
-        tool->setSnapOptions(options);
-    select_tool_->setSnapOptions(options);
-}
+void MainWindow::applySnap() { editing_->setSnapping(snap_action_ && snap_action_->isChecked(), grid_spacing_); }
 
 void MainWindow::createModelDock()
 {
@@ -647,7 +377,7 @@ bool MainWindow::saveModelAs(const QString& path)
 
 void MainWindow::onDocumentChanged()
 {
-    select_tool_->refresh();
+    editing_->documentChanged();
     refreshModelTree();
     updateTitle();
     ++generation_;

@@ -47,6 +47,7 @@ class ModelDocument;
 class DrawTool;
 class PropertyEditor;
 class SelectTool;
+class EditingTools;
 class ModelTree;
 
 class MainWindow : public QMainWindow {
@@ -75,7 +76,7 @@ public:
     /// The Model dock's tree.
     ModelTree* modelTree() const { return tree_; }
     /// The Select tool (always there; active when no drawing tool is).
-    SelectTool* selectionTool() const { return select_tool_; }
+    SelectTool* selectionTool() const;
     /// The selected item or vertex (invalid when none).
     ItemRef selection() const;
     /// The Properties dock's forms.
@@ -189,9 +190,6 @@ protected:
 private:
     void createActions();
     void createEditActions();
-    void createToolOptions();
-    /// Creates a drawing tool whose finished shape `apply` turns into an edit.
-    DrawTool* makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply);
     /// Pre-processes the document on the thread pool (a newer request supersedes it).
     void startPreprocess();
     void onPreprocessed();
@@ -207,11 +205,7 @@ private:
                    bool interactive);
     /// Asks whether to save unsaved changes; false when the user cancelled.
     bool maybeSave();
-    /// Makes `tool` active; null = the Select tool.
-    void setTool(DrawTool* tool);
     void onSelectionChanged(const ItemRef& ref);
-    /// A drawn polygon: a new region, or a hole of the region holding it (Hole / Shift).
-    void applyRegion(const std::vector<Point2>& points);
     void applySnap();
     void createDock();
     void createStatusBar();
@@ -276,30 +270,12 @@ private:
     bool loading_ = false;
     bool close_after_load_ = false;
     ModelTree* tree_ = nullptr;
-    SelectTool* select_tool_ = nullptr;
-    QAction* delete_action_ = nullptr;
+    EditingTools* editing_ = nullptr;  ///< tools, tool options, selection
+
     QDockWidget* model_dock_ = nullptr;
     QMenu* recent_menu_ = nullptr;
     QMenu* help_menu_ = nullptr;
     QAction* snap_action_ = nullptr;
-    QAction* select_action_ = nullptr;
-    QAction* region_action_ = nullptr;
-    QAction* joint_action_ = nullptr;
-    DrawTool* region_tool_ = nullptr;
-    DrawTool* joint_tool_ = nullptr;
-    DrawTool* fixed_tool_ = nullptr;
-    DrawTool* roller_tool_ = nullptr;
-    DrawTool* load_tool_ = nullptr;
-    DrawTool* pressure_tool_ = nullptr;
-    DrawTool* point_tool_ = nullptr;
-    std::vector<std::pair<DrawTool*, QAction*>> tool_actions_;
-    QComboBox* roller_fix_box_ = nullptr;
-    QDoubleSpinBox* load_fx_ = nullptr;
-    QDoubleSpinBox* load_fy_ = nullptr;
-    QDoubleSpinBox* pressure_box_ = nullptr;
-    QLineEdit* coordinate_edit_ = nullptr;
-    QCheckBox* hole_box_ = nullptr;
-    bool hole_shift_ = false;  ///< Shift was held at the first click of the region being drawn
     PropertyEditor* property_editor_ = nullptr;
     QDockWidget* property_dock_ = nullptr;
     QFutureWatcher<std::shared_ptr<Preprocessed>>* preprocess_ = nullptr;

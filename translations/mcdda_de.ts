@@ -116,6 +116,225 @@
     </message>
 </context>
 <context>
+    <name>mcdda::gui::EditingTools</name>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="119"/>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="133"/>
+        <source>&amp;Select</source>
+        <translation>&amp;Auswählen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="134"/>
+        <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
+        <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="137"/>
+        <source>Draw &amp;Region</source>
+        <translation>&amp;Bereich zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="138"/>
+        <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
+        <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="140"/>
+        <source>Draw &amp;Joint</source>
+        <translation>&amp;Kluft zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="141"/>
+        <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
+        <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="144"/>
+        <source>&amp;Fixed Point</source>
+        <translation>&amp;Festpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
+        <source>Click where the mesh is held in both directions</source>
+        <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="146"/>
+        <source>R&amp;oller</source>
+        <translation>R&amp;ollenlager</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="147"/>
+        <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
+        <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
+        <source>Point &amp;Load</source>
+        <translation>&amp;Punktlast</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="150"/>
+        <source>Click where a point load acts; its force is set in Tool Options</source>
+        <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
+        <source>Edge &amp;Pressure</source>
+        <translation>Kanten&amp;druck</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="153"/>
+        <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
+        <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="155"/>
+        <source>&amp;Measurement Point</source>
+        <translation>&amp;Messpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="156"/>
+        <source>Click where displacements are recorded</source>
+        <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="159"/>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="164"/>
+        <source>Delete the selected item or vertex</source>
+        <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="167"/>
+        <source>Add Joint Se&amp;t...</source>
+        <translation>Klu&amp;ftschar hinzufügen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
+        <source>Add a family of parallel joints</source>
+        <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="178"/>
+        <source>Tool Options</source>
+        <translation>Werkzeugoptionen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="185"/>
+        <source>Roller fixes</source>
+        <translation>Rollenlager hält</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
+        <source>Directions a new roller holds</source>
+        <translation>Richtungen, die ein neues Rollenlager hält</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
+        <source>x and y</source>
+        <translation>x und y</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="205"/>
+        <source>Load Fx</source>
+        <translation>Last Fx</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="208"/>
+        <source>kN/m</source>
+        <translation>kN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
+        <source>Horizontal force of a new point load</source>
+        <translation>Horizontalkraft einer neuen Punktlast</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="207"/>
+        <source>Fy</source>
+        <translation>Fy</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="208"/>
+        <source>Vertical force of a new point load</source>
+        <translation>Vertikalkraft einer neuen Punktlast</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="210"/>
+        <source>Pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
+        <source>kPa</source>
+        <translation>kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="212"/>
+        <source>Pressure of a new edge load (positive pushes into the material)</source>
+        <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="214"/>
+        <source>Hole</source>
+        <translation>Öffnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
+        <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
+        <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="219"/>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="222"/>
+        <source>x, y</source>
+        <translation>x, y</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
+        <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
+        <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="248"/>
+        <source>The hole was not added: no region contains it.</source>
+        <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="263"/>
+        <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
+        <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="316"/>
+        <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
+        <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
+    </message>
+</context>
+<context>
     <name>mcdda::gui::HistoryPlot</name>
     <message>
         <location filename="../gui/results/HistoryPlot.cpp" line="25"/>
@@ -578,567 +797,361 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="143"/>
+        <location filename="../gui/MainWindow.cpp" line="99"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="173"/>
+        <location filename="../gui/MainWindow.cpp" line="119"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="174"/>
+        <location filename="../gui/MainWindow.cpp" line="120"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="177"/>
+        <location filename="../gui/MainWindow.cpp" line="123"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="178"/>
+        <location filename="../gui/MainWindow.cpp" line="124"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="181"/>
+        <location filename="../gui/MainWindow.cpp" line="127"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
+        <location filename="../gui/MainWindow.cpp" line="128"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <location filename="../gui/MainWindow.cpp" line="130"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="186"/>
+        <location filename="../gui/MainWindow.cpp" line="132"/>
         <source>Recent &amp;Files</source>
         <translation>&amp;Zuletzt geöffnete Dateien</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="190"/>
+        <location filename="../gui/MainWindow.cpp" line="136"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="194"/>
+        <location filename="../gui/MainWindow.cpp" line="140"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="195"/>
+        <location filename="../gui/MainWindow.cpp" line="141"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="198"/>
+        <location filename="../gui/MainWindow.cpp" line="144"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="202"/>
+        <location filename="../gui/MainWindow.cpp" line="148"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="205"/>
+        <location filename="../gui/MainWindow.cpp" line="151"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="206"/>
+        <location filename="../gui/MainWindow.cpp" line="152"/>
         <source>&amp;Fit</source>
         <translation>&amp;Einpassen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="209"/>
+        <location filename="../gui/MainWindow.cpp" line="155"/>
         <source>Show the whole model</source>
         <translation>Das ganze Modell zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="219"/>
-        <location filename="../gui/MainWindow.cpp" line="1035"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="765"/>
         <source>&amp;Mesh</source>
         <translation>&amp;Netz</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="219"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
         <source>Show the element edges</source>
         <translation>Die Elementkanten zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="220"/>
+        <location filename="../gui/MainWindow.cpp" line="166"/>
         <source>&amp;Joints</source>
         <translation>&amp;Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="220"/>
+        <location filename="../gui/MainWindow.cpp" line="166"/>
         <source>Show the joint traces</source>
         <translation>Die Kluftspuren zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="221"/>
+        <location filename="../gui/MainWindow.cpp" line="167"/>
         <source>&amp;Supports</source>
         <translation>A&amp;uflager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="221"/>
+        <location filename="../gui/MainWindow.cpp" line="167"/>
         <source>Show fixed points and rollers</source>
         <translation>Festpunkte und Rollenlager zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="222"/>
+        <location filename="../gui/MainWindow.cpp" line="168"/>
         <source>&amp;Loads</source>
         <translation>&amp;Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="222"/>
+        <location filename="../gui/MainWindow.cpp" line="168"/>
         <source>Show point loads and edge pressures</source>
         <translation>Punktlasten und Kantendrücke zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="223"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>Measurement &amp;points</source>
         <translation>&amp;Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="223"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>Show the measurement points</source>
         <translation>Die Messpunkte zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="224"/>
+        <location filename="../gui/MainWindow.cpp" line="170"/>
         <source>Le&amp;gend</source>
         <translation>Le&amp;gende</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="224"/>
+        <location filename="../gui/MainWindow.cpp" line="170"/>
         <source>Show the legend</source>
         <translation>Die Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="226"/>
+        <location filename="../gui/MainWindow.cpp" line="172"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster fangen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="230"/>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
         <source>Drawn points snap to a grid (0.5 m) and to nearby region vertices</source>
         <translation>Gezeichnete Punkte rasten auf einem Raster (0,5 m) und an nahen Bereichsecken ein</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="238"/>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="240"/>
+        <location filename="../gui/MainWindow.cpp" line="186"/>
         <source>&amp;About mcdda</source>
         <translation>Ü&amp;ber mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="241"/>
+        <location filename="../gui/MainWindow.cpp" line="187"/>
         <source>About mcdda</source>
         <translation>Über mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="242"/>
+        <location filename="../gui/MainWindow.cpp" line="188"/>
         <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
         <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="253"/>
+        <location filename="../gui/MainWindow.cpp" line="199"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="255"/>
+        <location filename="../gui/MainWindow.cpp" line="201"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="259"/>
+        <location filename="../gui/MainWindow.cpp" line="205"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="267"/>
-        <source>Tools</source>
-        <translation>Werkzeuge</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="281"/>
-        <source>&amp;Select</source>
-        <translation>&amp;Auswählen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="285"/>
-        <source>Draw &amp;Region</source>
-        <translation>&amp;Bereich zeichnen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="286"/>
-        <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
-        <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="288"/>
-        <source>Draw &amp;Joint</source>
-        <translation>&amp;Kluft zeichnen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="289"/>
-        <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
-        <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="292"/>
-        <source>&amp;Fixed Point</source>
-        <translation>&amp;Festpunkt</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="293"/>
-        <source>Click where the mesh is held in both directions</source>
-        <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="294"/>
-        <source>R&amp;oller</source>
-        <translation>R&amp;ollenlager</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="295"/>
-        <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
-        <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="297"/>
-        <source>Point &amp;Load</source>
-        <translation>&amp;Punktlast</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="298"/>
-        <source>Click where a point load acts; its force is set in Tool Options</source>
-        <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="300"/>
-        <source>Edge &amp;Pressure</source>
-        <translation>Kanten&amp;druck</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="301"/>
-        <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
-        <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="303"/>
-        <source>&amp;Measurement Point</source>
-        <translation>&amp;Messpunkt</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="304"/>
-        <source>Click where displacements are recorded</source>
-        <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="306"/>
-        <source>&amp;Delete</source>
-        <translation>&amp;Löschen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="311"/>
-        <source>Delete the selected item or vertex</source>
-        <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="315"/>
-        <source>Add Joint Se&amp;t...</source>
-        <translation>Klu&amp;ftschar hinzufügen...</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="317"/>
-        <source>Add a family of parallel joints</source>
-        <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="325"/>
-        <source>Tool Options</source>
-        <translation>Werkzeugoptionen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="332"/>
-        <source>Roller fixes</source>
-        <translation>Rollenlager hält</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="335"/>
-        <source>Directions a new roller holds</source>
-        <translation>Richtungen, die ein neues Rollenlager hält</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="336"/>
-        <source>y</source>
-        <translation>y</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="337"/>
-        <source>x</source>
-        <translation>x</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="338"/>
-        <source>x and y</source>
-        <translation>x und y</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="352"/>
-        <source>Load Fx</source>
-        <translation>Last Fx</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="353"/>
-        <location filename="../gui/MainWindow.cpp" line="355"/>
-        <source>kN/m</source>
-        <translation>kN/m</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="353"/>
-        <source>Horizontal force of a new point load</source>
-        <translation>Horizontalkraft einer neuen Punktlast</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="354"/>
-        <source>Fy</source>
-        <translation>Fy</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="355"/>
-        <source>Vertical force of a new point load</source>
-        <translation>Vertikalkraft einer neuen Punktlast</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="357"/>
-        <source>Pressure</source>
-        <translation>Druck</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="358"/>
-        <source>kPa</source>
-        <translation>kPa</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="359"/>
-        <source>Pressure of a new edge load (positive pushes into the material)</source>
-        <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="361"/>
-        <source>Hole</source>
-        <translation>Öffnung</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="363"/>
-        <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
-        <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="366"/>
-        <source>Point</source>
-        <translation>Punkt</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="369"/>
-        <source>x, y</source>
-        <translation>x, y</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="370"/>
-        <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
-        <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="389"/>
-        <source>The hole was not added: no region contains it.</source>
-        <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="390"/>
-        <source>No region contains the hole</source>
-        <translation>Kein Bereich enthält die Öffnung</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <location filename="../gui/MainWindow.cpp" line="255"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="604"/>
+        <location filename="../gui/MainWindow.cpp" line="334"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="555"/>
+        <location filename="../gui/MainWindow.cpp" line="285"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="571"/>
+        <location filename="../gui/MainWindow.cpp" line="301"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="573"/>
-        <location filename="../gui/MainWindow.cpp" line="708"/>
+        <location filename="../gui/MainWindow.cpp" line="303"/>
+        <location filename="../gui/MainWindow.cpp" line="438"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="574"/>
+        <location filename="../gui/MainWindow.cpp" line="304"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="581"/>
+        <location filename="../gui/MainWindow.cpp" line="311"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="582"/>
+        <location filename="../gui/MainWindow.cpp" line="312"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="595"/>
+        <location filename="../gui/MainWindow.cpp" line="325"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="614"/>
+        <location filename="../gui/MainWindow.cpp" line="344"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="625"/>
+        <location filename="../gui/MainWindow.cpp" line="355"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="625"/>
+        <location filename="../gui/MainWindow.cpp" line="355"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="644"/>
-        <location filename="../gui/MainWindow.cpp" line="783"/>
-        <location filename="../gui/MainWindow.cpp" line="814"/>
+        <location filename="../gui/MainWindow.cpp" line="374"/>
+        <location filename="../gui/MainWindow.cpp" line="513"/>
+        <location filename="../gui/MainWindow.cpp" line="544"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="678"/>
+        <location filename="../gui/MainWindow.cpp" line="408"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="717"/>
+        <location filename="../gui/MainWindow.cpp" line="447"/>
         <source>Messages about the model appear here.</source>
         <translation>Meldungen zum Modell erscheinen hier.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="718"/>
+        <location filename="../gui/MainWindow.cpp" line="448"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="728"/>
+        <location filename="../gui/MainWindow.cpp" line="458"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="735"/>
+        <location filename="../gui/MainWindow.cpp" line="465"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="744"/>
+        <location filename="../gui/MainWindow.cpp" line="474"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="745"/>
+        <location filename="../gui/MainWindow.cpp" line="475"/>
         <source>&amp;Picture (PNG)...</source>
         <translation>&amp;Bild (PNG)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="746"/>
+        <location filename="../gui/MainWindow.cpp" line="476"/>
         <source>Export picture</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="747"/>
+        <location filename="../gui/MainWindow.cpp" line="477"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="752"/>
+        <location filename="../gui/MainWindow.cpp" line="482"/>
         <source>Save the picture of the view as a PNG file</source>
         <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="753"/>
+        <location filename="../gui/MainWindow.cpp" line="483"/>
         <source>Saved &amp;Steps (PVD/VTU)...</source>
         <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="754"/>
+        <location filename="../gui/MainWindow.cpp" line="484"/>
         <source>Export saved steps to</source>
         <translation>Gespeicherte Zeitschritte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="758"/>
+        <location filename="../gui/MainWindow.cpp" line="488"/>
         <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
         <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="759"/>
+        <location filename="../gui/MainWindow.cpp" line="489"/>
         <source>&amp;History (CSV)...</source>
         <translation>&amp;Verlauf (CSV)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="760"/>
+        <location filename="../gui/MainWindow.cpp" line="490"/>
         <source>Export history</source>
         <translation>Verlauf exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="761"/>
+        <location filename="../gui/MainWindow.cpp" line="491"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="765"/>
+        <location filename="../gui/MainWindow.cpp" line="495"/>
         <source>Copy the run&apos;s history of loads and measured displacements</source>
         <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="771"/>
+        <location filename="../gui/MainWindow.cpp" line="501"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="790"/>
+        <location filename="../gui/MainWindow.cpp" line="520"/>
         <source>There are no saved steps yet: run the model first.</source>
         <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="799"/>
+        <location filename="../gui/MainWindow.cpp" line="529"/>
         <source>Copied %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 kopiert</numerusform>
@@ -1146,164 +1159,164 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="806"/>
+        <location filename="../gui/MainWindow.cpp" line="536"/>
         <source>There is no history yet: run the model first.</source>
         <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="869"/>
+        <location filename="../gui/MainWindow.cpp" line="599"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="890"/>
+        <location filename="../gui/MainWindow.cpp" line="620"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="891"/>
+        <location filename="../gui/MainWindow.cpp" line="621"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="968"/>
+        <location filename="../gui/MainWindow.cpp" line="698"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="969"/>
+        <location filename="../gui/MainWindow.cpp" line="699"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1031"/>
-        <location filename="../gui/MainWindow.cpp" line="1042"/>
+        <location filename="../gui/MainWindow.cpp" line="761"/>
+        <location filename="../gui/MainWindow.cpp" line="772"/>
         <source>&amp;Run</source>
         <translation>Be&amp;rechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1033"/>
+        <location filename="../gui/MainWindow.cpp" line="763"/>
         <source>Run</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1039"/>
+        <location filename="../gui/MainWindow.cpp" line="769"/>
         <source>Cut the blocks and mesh them in the background (edits do this by themselves); the statistics go to the status bar and the Messages dock</source>
         <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und unter Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1046"/>
+        <location filename="../gui/MainWindow.cpp" line="776"/>
         <source>Analyse the model; the picture follows the run</source>
         <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1047"/>
-        <location filename="../gui/MainWindow.cpp" line="1104"/>
+        <location filename="../gui/MainWindow.cpp" line="777"/>
+        <location filename="../gui/MainWindow.cpp" line="834"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1050"/>
+        <location filename="../gui/MainWindow.cpp" line="780"/>
         <source>Pause or resume the run</source>
         <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1051"/>
+        <location filename="../gui/MainWindow.cpp" line="781"/>
         <source>&amp;Stop</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1055"/>
+        <location filename="../gui/MainWindow.cpp" line="785"/>
         <source>Stop the run after the current step; the results so far are kept</source>
         <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1057"/>
+        <location filename="../gui/MainWindow.cpp" line="787"/>
         <source>Results &amp;Folder...</source>
         <translation>Ergebnis&amp;ordner...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1059"/>
+        <location filename="../gui/MainWindow.cpp" line="789"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1062"/>
+        <location filename="../gui/MainWindow.cpp" line="792"/>
         <source>Choose where runs write their files</source>
         <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1068"/>
+        <location filename="../gui/MainWindow.cpp" line="798"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1070"/>
+        <location filename="../gui/MainWindow.cpp" line="800"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1071"/>
+        <location filename="../gui/MainWindow.cpp" line="801"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1072"/>
+        <location filename="../gui/MainWindow.cpp" line="802"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1073"/>
+        <location filename="../gui/MainWindow.cpp" line="803"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1074"/>
+        <location filename="../gui/MainWindow.cpp" line="804"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1075"/>
+        <location filename="../gui/MainWindow.cpp" line="805"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1076"/>
+        <location filename="../gui/MainWindow.cpp" line="806"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1077"/>
+        <location filename="../gui/MainWindow.cpp" line="807"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1078"/>
+        <location filename="../gui/MainWindow.cpp" line="808"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1079"/>
+        <location filename="../gui/MainWindow.cpp" line="809"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1082"/>
+        <location filename="../gui/MainWindow.cpp" line="812"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1087"/>
+        <location filename="../gui/MainWindow.cpp" line="817"/>
         <source>Scale factor of the drawn displacements (0 = undeformed)</source>
         <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1104"/>
+        <location filename="../gui/MainWindow.cpp" line="834"/>
         <source>Res&amp;ume</source>
         <translation>&amp;Fortsetzen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1162"/>
+        <location filename="../gui/MainWindow.cpp" line="892"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1311,27 +1324,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1173"/>
+        <location filename="../gui/MainWindow.cpp" line="903"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1176"/>
+        <location filename="../gui/MainWindow.cpp" line="906"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1187"/>
+        <location filename="../gui/MainWindow.cpp" line="917"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1193"/>
+        <location filename="../gui/MainWindow.cpp" line="923"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1240"/>
+        <location filename="../gui/MainWindow.cpp" line="970"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -1339,87 +1352,72 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1241"/>
+        <location filename="../gui/MainWindow.cpp" line="971"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1242"/>
+        <location filename="../gui/MainWindow.cpp" line="972"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1243"/>
+        <location filename="../gui/MainWindow.cpp" line="973"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1246"/>
+        <location filename="../gui/MainWindow.cpp" line="976"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1253"/>
+        <location filename="../gui/MainWindow.cpp" line="983"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1253"/>
+        <location filename="../gui/MainWindow.cpp" line="983"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1255"/>
+        <location filename="../gui/MainWindow.cpp" line="985"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="980"/>
+        <location filename="../gui/MainWindow.cpp" line="710"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="131"/>
+        <location filename="../gui/MainWindow.cpp" line="88"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="282"/>
-        <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
-        <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="430"/>
-        <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
-        <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="478"/>
+        <location filename="../gui/MainWindow.cpp" line="237"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="486"/>
-        <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
-        <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="909"/>
+        <location filename="../gui/MainWindow.cpp" line="639"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="984"/>
+        <location filename="../gui/MainWindow.cpp" line="714"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="990"/>
+        <location filename="../gui/MainWindow.cpp" line="720"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="999"/>
+        <location filename="../gui/MainWindow.cpp" line="729"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -1427,12 +1425,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1013"/>
+        <location filename="../gui/MainWindow.cpp" line="743"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1017"/>
+        <location filename="../gui/MainWindow.cpp" line="747"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -1440,12 +1438,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1020"/>
+        <location filename="../gui/MainWindow.cpp" line="750"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1021"/>
+        <location filename="../gui/MainWindow.cpp" line="751"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>

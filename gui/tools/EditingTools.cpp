@@ -1,0 +1,335 @@
+#include "tools/EditingTools.hpp"
+
+#include "dialogs/JointSetDialog.hpp"
+#include "document/ModelDocument.hpp"
+#include "tools/DrawTool.hpp"
+#include "tools/SelectTool.hpp"
+#include "widgets/ModelView.hpp"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGuiApplication>
+#include <QIcon>
+#include <QKeySequence>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMainWindow>
+#include <QMenu>
+#include <QRegularExpression>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoStack>
+
+#include <cmath>
+
+namespace mcdda::gui {
+
+namespace {
+
+/// A number typed with a decimal point or a decimal comma ("2.5" or "2,5").
+bool parse_number(QString text, double* value)
+{
+    text.replace(QLatin1Char(','), QLatin1Char('.'));
+    bool ok = false;
+    *value = text.toDouble(&ok);
+    return ok && std::isfinite(*value);
+}
+
+/// "x, y", "x y" or "x; y" — the last two also with decimal commas ("2,5; -1" or "2,5 -1").
+bool parse_point(QString text, Point2* p)
+{
+    // "x, y" with a space after the comma would split on the space: the comma is a separator.
+    text.replace(QRegularExpression(QStringLiteral("\\s*,\\s+")), QStringLiteral(";"));
+    QStringList parts = text.split(QLatin1Char(';'));
+    if (parts.size() != 2) parts = text.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    if (parts.size() != 2) parts = text.split(QLatin1Char(','));
+    if (parts.size() != 2) return false;
+    return parse_number(parts[0].trimmed(), &p->x) && parse_number(parts[1].trimmed(), &p->y);
+}
+
+}  // namespace
+
+EditingTools::EditingTools(QMainWindow* window, ModelView* view, ModelDocument* document)
+    : QObject(window), window_(window), view_(view), document_(document)
+{
+    region_tool_ = makeTool(int(DrawTool::Shape::Polygon),
+                            [this](const std::vector<Point2>& points) { applyRegion(points); });
+    joint_tool_ = makeTool(int(DrawTool::Shape::Polyline), [this](const std::vector<Point2>& points) {
+        document_->addJoint(points);
+    });
+    fixed_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
+        FixedPoint f;
+        f.point = points.front();
+        document_->addFixedPoint(f);
+    });
+    roller_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
+        Roller r;
+        r.from = points.front();
+        r.to = points.back();
+        const QString fix = roller_fix_box_->currentData().toString();
+        r.fix_x = fix.contains(QLatin1Char('x'));
+        r.fix_y = fix.contains(QLatin1Char('y'));
+        document_->addRoller(r);
+    });
+    load_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
+        PointLoad l;
+        l.point = points.front();
+        l.force = {load_fx_->value() * 1e3, load_fy_->value() * 1e3};  // kN/m → N/m
+        document_->addPointLoad(l);
+    });
+    pressure_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
+        EdgePressure e;
+        e.from = points.front();
+        e.to = points.back();
+        e.pressure = pressure_box_->value() * 1e3;  // kPa → Pa
+        document_->addEdgePressure(e);
+    });
+    point_tool_ = makeTool(int(DrawTool::Shape::Point), [this](const std::vector<Point2>& points) {
+        MeasurementPoint q;
+        q.point = points.front();
+        document_->addMeasurementPoint(q);
+    });
+    connect(region_tool_, &DrawTool::started, this, [this] {
+        hole_shift_ = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
+    });
+    select_tool_ = new SelectTool(view_, [this]() -> const Model& { return document_->model(); }, this);
+    connect(select_tool_, &SelectTool::moveRequested, document_, &ModelDocument::moveItem);
+    connect(select_tool_, &SelectTool::deleteRequested, this, &EditingTools::deleteItem);
+    connect(select_tool_, &SelectTool::selectionChanged, this, [this](const ItemRef& ref) {
+        if (delete_action_) delete_action_->setEnabled(ref.valid());
+        emit selectionChanged(ref);
+    });
+    setSnapping(true, grid_spacing_);
+    view_->setTool(select_tool_);
+}
+
+DrawTool* EditingTools::makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply)
+{
+    auto* tool = new DrawTool(static_cast<DrawTool::Shape>(shape), view_,
+                              [this]() -> const Model& { return document_->model(); }, this);
+    connect(tool, &DrawTool::finished, this, std::move(apply));
+    return tool;
+}
+
+void EditingTools::createActions(QMenu* edit)
+{
+    QToolBar* bar = window_->addToolBar(tr("Tools"));
+    bar->setObjectName(QStringLiteral("tools"));
+    auto* group = new QActionGroup(this);
+    auto tool = [&](const QString& text, const QString& name, const QString& icon, const QString& tip,
+                    void (EditingTools::*slot)()) {
+        QAction* action = edit->addAction(text, this, slot);
+        action->setIcon(QIcon(QStringLiteral(":/icons/") + icon + QStringLiteral(".svg")));
+        action->setObjectName(name);
+        action->setCheckable(true);
+        action->setStatusTip(tip);
+        group->addAction(action);
+        bar->addAction(action);
+        return action;
+    };
+    select_action_ = tool(tr("&Select"), QStringLiteral("selectToolAction"), QStringLiteral("select"),
+                          tr("Click an item or a vertex to select it, drag it to move it, Delete removes it; "
+                             "drag empty space to pan"),
+                          &EditingTools::useSelect);
+    QAction* region = tool(tr("Draw &Region"), QStringLiteral("drawRegionAction"), QStringLiteral("draw-region"),
+                           tr("Click the corners of a new region; double-click or Enter closes it, Escape cancels"),
+                           &EditingTools::useRegion);
+    QAction* joint = tool(tr("Draw &Joint"), QStringLiteral("drawJointAction"), QStringLiteral("draw-joint"),
+                          tr("Click the points of a new joint; double-click or Enter finishes it, Escape cancels"),
+                          &EditingTools::useJoint);
+    bar->addSeparator();
+    QAction* fixed = tool(tr("&Fixed Point"), QStringLiteral("fixedPointAction"), QStringLiteral("fixed-point"),
+                          tr("Click where the mesh is held in both directions"), &EditingTools::useFixedPoint);
+    QAction* roller = tool(tr("R&oller"), QStringLiteral("rollerAction"), QStringLiteral("roller"),
+                           tr("Click the two ends of a roller; the fixed directions are chosen in Tool Options"),
+                           &EditingTools::useRoller);
+    QAction* load = tool(tr("Point &Load"), QStringLiteral("pointLoadAction"), QStringLiteral("point-load"),
+                         tr("Click where a point load acts; its force is set in Tool Options"),
+                         &EditingTools::usePointLoad);
+    QAction* pressure = tool(tr("Edge &Pressure"), QStringLiteral("edgePressureAction"), QStringLiteral("edge-pressure"),
+                             tr("Click the two ends of a loaded edge; the pressure is set in Tool Options"),
+                             &EditingTools::useEdgePressure);
+    QAction* point = tool(tr("&Measurement Point"), QStringLiteral("measurementPointAction"),
+                          QStringLiteral("measurement-point"), tr("Click where displacements are recorded"),
+                          &EditingTools::useMeasurementPoint);
+    edit->addSeparator();
+    delete_action_ = edit->addAction(tr("&Delete"), this, [this] { deleteItem(select_tool_->selection()); });
+    delete_action_->setObjectName(QStringLiteral("deleteAction"));
+    delete_action_->setShortcut(QKeySequence::Delete);
+    // Only where it is added (the view, the Model tree): Delete keeps deleting characters in forms.
+    delete_action_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    delete_action_->setStatusTip(tr("Delete the selected item or vertex"));
+    delete_action_->setEnabled(false);
+    view_->addAction(delete_action_);
+    QAction* joint_set = edit->addAction(tr("Add Joint Se&t..."), this, &EditingTools::addJointSetDialog);
+    joint_set->setObjectName(QStringLiteral("addJointSetAction"));
+    joint_set->setStatusTip(tr("Add a family of parallel joints"));
+    tool_actions_ = {{region_tool_, region}, {joint_tool_, joint}, {fixed_tool_, fixed}, {roller_tool_, roller},
+                     {load_tool_, load},     {pressure_tool_, pressure}, {point_tool_, point}};
+    select_action_->setChecked(true);
+    createToolOptions();
+}
+
+void EditingTools::createToolOptions()
+{
+    QToolBar* bar = window_->addToolBar(tr("Tool Options"));
+    bar->setObjectName(QStringLiteral("toolOptions"));
+    auto label = [&](const QString& text) {
+        auto* l = new QLabel(text, bar);
+        l->setContentsMargins(6, 0, 2, 0);
+        bar->addWidget(l);
+    };
+    label(tr("Roller fixes"));
+    roller_fix_box_ = new QComboBox(bar);
+    roller_fix_box_->setObjectName(QStringLiteral("rollerFixBox"));
+    roller_fix_box_->setToolTip(tr("Directions a new roller holds"));
+    roller_fix_box_->addItem(tr("y"), QStringLiteral("y"));
+    roller_fix_box_->addItem(tr("x"), QStringLiteral("x"));
+    roller_fix_box_->addItem(tr("x and y"), QStringLiteral("xy"));
+    bar->addWidget(roller_fix_box_);
+    bar->addSeparator();
+    auto spin = [&](const QString& name, const QString& unit, double value, const QString& tip) {
+        auto* box = new QDoubleSpinBox(bar);
+        box->setObjectName(name);
+        box->setRange(-1e9, 1e9);
+        box->setDecimals(3);
+        box->setValue(value);
+        box->setSuffix(QLatin1Char(' ') + unit);
+        box->setToolTip(tip);
+        bar->addWidget(box);
+        return box;
+    };
+    label(tr("Load Fx"));
+    load_fx_ = spin(QStringLiteral("loadFxBox"), tr("kN/m"), 0.0, tr("Horizontal force of a new point load"));
+    label(tr("Fy"));
+    load_fy_ = spin(QStringLiteral("loadFyBox"), tr("kN/m"), -1.0, tr("Vertical force of a new point load"));
+    bar->addSeparator();
+    label(tr("Pressure"));
+    pressure_box_ = spin(QStringLiteral("pressureBox"), tr("kPa"), 100.0,
+                         tr("Pressure of a new edge load (positive pushes into the material)"));
+    bar->addSeparator();
+    hole_box_ = new QCheckBox(tr("Hole"), bar);
+    hole_box_->setObjectName(QStringLiteral("holeBox"));
+    hole_box_->setToolTip(tr("Draw Region cuts an opening into the region around it (or hold Shift at the first click)"));
+    bar->addWidget(hole_box_);
+    bar->addSeparator();
+    label(tr("Point"));
+    coordinate_edit_ = new QLineEdit(bar);
+    coordinate_edit_->setObjectName(QStringLiteral("coordinateEdit"));
+    coordinate_edit_->setPlaceholderText(tr("x, y"));
+    coordinate_edit_->setToolTip(tr("Type a point as \"x, y\" (m) and press Enter to place it; Enter on an empty field finishes the shape"));
+    coordinate_edit_->setMaximumWidth(140);
+    coordinate_edit_->setEnabled(false);
+    connect(coordinate_edit_, &QLineEdit::returnPressed, this, [this] {
+        if (enterCoordinates(coordinate_edit_->text())) coordinate_edit_->clear();
+    });
+    bar->addWidget(coordinate_edit_);
+}
+
+void EditingTools::tell(const QString& text)
+{
+    emit message(text);
+    window_->statusBar()->showMessage(text, 5000);
+}
+
+void EditingTools::applyRegion(const std::vector<Point2>& points)
+{
+    const bool hole = hole_shift_ || (hole_box_ && hole_box_->isChecked());
+    hole_shift_ = false;
+    if (!hole) {
+        document_->addRegion(points, document_->model().materials.empty() ? -1 : 0);
+        return;
+    }
+    const int region = document_->regionContaining(points);
+    if (region < 0) {
+        tell(tr("The hole was not added: no region contains it."));
+        return;
+    }
+    document_->addHole(region, points);
+}
+
+bool EditingTools::enterCoordinates(const QString& text)
+{
+    DrawTool* tool = activeTool();
+    if (!tool) return false;
+    const QString trimmed = text.trimmed();
+    if (trimmed.isEmpty()) return tool->finish();
+    Point2 p;
+    if (!parse_point(trimmed, &p)) {
+        window_->statusBar()->showMessage(
+            tr("Type a point as \"x, y\" in metres, e.g. \"2.5, -1\" (or \"2,5; -1\")"), 5000);
+        return false;
+    }
+    tool->addPoint(p);
+    return true;
+}
+
+void EditingTools::addJointSetDialog()
+{
+    JointSetDialog dialog(document_->model(), window_);
+    if (dialog.exec() == QDialog::Accepted) document_->addJointSet(dialog.jointSet());
+}
+
+DrawTool* EditingTools::activeTool() const { return dynamic_cast<DrawTool*>(view_->tool()); }
+
+ItemRef EditingTools::selection() const { return select_tool_->selection(); }
+
+void EditingTools::setTool(DrawTool* tool)
+{
+    if (view_->tool() == select_tool_ && tool) select_tool_->cancel();
+    view_->setTool(tool ? static_cast<ViewTool*>(tool) : select_tool_);
+    QAction* action = select_action_;
+    for (const auto& [t, a] : tool_actions_)
+        if (t == tool) action = a;
+    if (action) action->setChecked(true);
+    if (coordinate_edit_) coordinate_edit_->setEnabled(tool != nullptr);
+    hole_shift_ = false;
+    setSnapping(snap_grid_, grid_spacing_);  // the grid shows with the drawing tools
+    if (tool) {
+        view_->clearResult();
+        view_->setFocus();
+    }
+}
+
+void EditingTools::useSelect() { setTool(nullptr); }
+void EditingTools::useRegion() { setTool(region_tool_); }
+void EditingTools::useJoint() { setTool(joint_tool_); }
+void EditingTools::useFixedPoint() { setTool(fixed_tool_); }
+void EditingTools::useRoller() { setTool(roller_tool_); }
+void EditingTools::usePointLoad() { setTool(load_tool_); }
+void EditingTools::useEdgePressure() { setTool(pressure_tool_); }
+void EditingTools::useMeasurementPoint() { setTool(point_tool_); }
+
+void EditingTools::selectItem(const ItemRef& ref)
+{
+    if (view_->tool() != select_tool_) useSelect();
+    select_tool_->select(ref);
+}
+
+bool EditingTools::deleteItem(const ItemRef& ref)
+{
+    const QString name = document_->itemName(ref);
+    if (document_->deleteItem(ref)) return true;
+    if (ref.valid()) tell(tr("%1 was not deleted: a region or hole keeps at least three vertices.").arg(name));
+    return false;
+}
+
+void EditingTools::documentChanged() { select_tool_->refresh(); }
+
+void EditingTools::setSnapping(bool grid, double spacing)
+{
+    snap_grid_ = grid;
+    if (spacing > 0.0) grid_spacing_ = spacing;
+    SnapOptions options;
+    options.grid = snap_grid_;
+    options.spacing = grid_spacing_;
+    view_->setGridSpacing(options.grid && activeTool() ? grid_spacing_ : 0.0);
+    for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_})
+        tool->setSnapOptions(options);
+    select_tool_->setSnapOptions(options);
+}
+
+}  // namespace mcdda::gui

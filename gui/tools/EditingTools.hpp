@@ -1,0 +1,117 @@
+#pragma once
+/// \file EditingTools.hpp
+/// The editing side of the main window: the Select tool and the drawing tools (regions and
+/// holes, joints, fixed points, rollers, point loads, edge pressures, measurement points), their
+/// entries in Edit and the Tools toolbar, the Tool Options toolbar (roller directions, values of
+/// new loads, Hole, typed coordinates), grid snapping, Edit ▸ Delete and Edit ▸ Add Joint Set.
+/// Finished shapes, drags and deletions become undoable edits of the document.
+
+#include "document/ModelItems.hpp"
+#include "model/Model.hpp"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLineEdit;
+class QMainWindow;
+class QMenu;
+
+namespace mcdda::gui {
+
+class DrawTool;
+class ModelDocument;
+class ModelView;
+class SelectTool;
+
+class EditingTools : public QObject {
+    Q_OBJECT
+
+public:
+    /// Tools for `view` that edit `document`; toolbars and messages go to `window`.
+    EditingTools(QMainWindow* window, ModelView* view, ModelDocument* document);
+
+    /// Adds the tool, Delete and Add Joint Set entries to `edit` and the Tools and Tool Options
+    /// toolbars to the window.
+    void createActions(QMenu* edit);
+
+    /// The active drawing tool (null while Select is active).
+    DrawTool* activeTool() const;
+    SelectTool* selectTool() const { return select_tool_; }
+    /// The selected item or vertex (invalid when none).
+    ItemRef selection() const;
+    /// Edit ▸ Delete (enabled while something is selected).
+    QAction* deleteAction() const { return delete_action_; }
+
+    /// Grid snapping on or off, and the grid's spacing (m); drawing tools show the grid.
+    void setSnapping(bool grid, double spacing);
+
+public slots:
+    /// Makes Select the active tool / a drawing tool.
+    void useSelect();
+    void useRegion();
+    void useJoint();
+    void useFixedPoint();
+    void useRoller();
+    void usePointLoad();
+    void useEdgePressure();
+    void useMeasurementPoint();
+    /// Makes Select the tool and selects `ref` (highlighted in the view).
+    void selectItem(const ItemRef& ref);
+    /// Deletes `ref` (undoable); false with a message when it cannot go.
+    bool deleteItem(const ItemRef& ref);
+    /// "x, y" (m; also "x; y" or "x y" with decimal commas) places a vertex as a click does;
+    /// empty text finishes the shape. False when no drawing tool is active or the text is not
+    /// two numbers.
+    bool enterCoordinates(const QString& text);
+    /// Asks for a joint set and adds it.
+    void addJointSetDialog();
+    /// The document changed: the selection follows (or goes when its item went).
+    void documentChanged();
+
+signals:
+    void selectionChanged(const mcdda::gui::ItemRef& ref);
+    /// A line for the window's log.
+    void message(const QString& text);
+
+private:
+    DrawTool* makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply);
+    void setTool(DrawTool* tool);
+    void createToolOptions();
+    /// A drawn polygon: a new region, or a hole of the region holding it (Hole / Shift).
+    void applyRegion(const std::vector<Point2>& points);
+    void tell(const QString& text);
+
+    QMainWindow* window_;
+    ModelView* view_;
+    ModelDocument* document_;
+    SelectTool* select_tool_ = nullptr;
+    DrawTool* region_tool_ = nullptr;
+    DrawTool* joint_tool_ = nullptr;
+    DrawTool* fixed_tool_ = nullptr;
+    DrawTool* roller_tool_ = nullptr;
+    DrawTool* load_tool_ = nullptr;
+    DrawTool* pressure_tool_ = nullptr;
+    DrawTool* point_tool_ = nullptr;
+    QAction* select_action_ = nullptr;
+    QAction* delete_action_ = nullptr;
+    std::vector<std::pair<DrawTool*, QAction*>> tool_actions_;
+    QComboBox* roller_fix_box_ = nullptr;
+    QDoubleSpinBox* load_fx_ = nullptr;
+    QDoubleSpinBox* load_fy_ = nullptr;
+    QDoubleSpinBox* pressure_box_ = nullptr;
+    QLineEdit* coordinate_edit_ = nullptr;
+    QCheckBox* hole_box_ = nullptr;
+    bool hole_shift_ = false;  ///< Shift was held at the first click of the region being drawn
+    bool snap_grid_ = true;
+    double grid_spacing_ = 0.5;
+};
+
+}  // namespace mcdda::gui
