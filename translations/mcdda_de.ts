@@ -215,7 +215,7 @@
     <message>
         <location filename="../gui/tools/EditingTools.cpp" line="167"/>
         <source>Add Joint Se&amp;t...</source>
-        <translation>Klu&amp;ftschar hinzufügen...</translation>
+        <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
         <location filename="../gui/tools/EditingTools.cpp" line="169"/>

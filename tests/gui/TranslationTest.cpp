@@ -14,6 +14,7 @@
 namespace {
 
 QString tr_main_window(const char* source) { return QCoreApplication::translate("mcdda::gui::MainWindow", source); }
+QString tr_editing(const char* source) { return QCoreApplication::translate("mcdda::gui::EditingTools", source); }
 
 /// The access key of a menu text ("Be&rechnung" -> 'r').
 QChar mnemonic(const QString& text)
@@ -26,19 +27,27 @@ QChar mnemonic(const QString& text)
     return {};
 }
 
-/// Whether the translated `sources` (of MainWindow) have distinct access keys.
-bool distinct_mnemonics(std::initializer_list<const char*> sources)
+/// Whether the translated texts have distinct access keys.
+bool distinct_mnemonics(const QStringList& texts)
 {
     QList<QChar> seen;
-    for (const char* source : sources) {
-        const QChar key = mnemonic(tr_main_window(source));
+    for (const QString& text : texts) {
+        const QChar key = mnemonic(text);
         if (key.isNull() || seen.contains(key)) {
-            qWarning("access key of \"%s\" missing or taken", qUtf8Printable(tr_main_window(source)));
+            qWarning("access key of \"%s\" missing or taken", qUtf8Printable(text));
             return false;
         }
         seen.append(key);
     }
     return true;
+}
+
+/// The same for texts of MainWindow.
+bool distinct_mnemonics(std::initializer_list<const char*> sources)
+{
+    QStringList texts;
+    for (const char* source : sources) texts << tr_main_window(source);
+    return distinct_mnemonics(texts);
 }
 
 /// Installs the translations for `code` as `mcdda-gui --language code` does; they go when the
@@ -101,7 +110,7 @@ private slots:
         QCOMPARE(tr_main_window("&Export"), QStringLiteral("&Exportieren"));
         QCOMPARE(tr_main_window("&Save"), QStringLiteral("&Speichern"));
         QCOMPARE(tr_main_window("&Undo"), QStringLiteral("&Rückgängig"));
-        QCOMPARE(tr_main_window("Draw &Joint"), QStringLiteral("&Kluft zeichnen"));
+        QCOMPARE(tr_editing("Draw &Joint"), QStringLiteral("&Kluft zeichnen"));
         // The Run menu.
         QCOMPARE(tr_main_window("&Run"), QStringLiteral("Be&rechnung"));
         QCOMPARE(tr_main_window("&Pause"), QStringLiteral("&Pause"));
@@ -114,7 +123,13 @@ private slots:
                  QStringLiteral("Berechnung abgeschlossen: 40 Zeitschritte."));
         // Access keys stay unique in the menu bar and the Run menu.
         QVERIFY(distinct_mnemonics({"&File", "&Edit", "&View", "&Run", "&Help"}));
-        QVERIFY(distinct_mnemonics({"&Run", "&Pause", "&Stop", "Results &Folder..."}));
+        QVERIFY(distinct_mnemonics({"&Mesh", "&Run", "&Pause", "&Stop", "Results &Folder..."}));
+        // The Edit menu: undo/redo of the window, the tools' entries.
+        QStringList edit{tr_main_window("&Undo"), tr_main_window("&Redo")};
+        for (const char* source : {"&Select", "Draw &Region", "Draw &Joint", "&Fixed Point", "R&oller", "Point &Load",
+                                   "Edge &Pressure", "&Measurement Point", "&Delete", "Add Joint Se&t..."})
+            edit << tr_editing(source);
+        QVERIFY(distinct_mnemonics(edit));
         QVERIFY(distinct_mnemonics({"&Run", "Res&ume", "&Stop", "Results &Folder..."}));
     }
 
