@@ -27,11 +27,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QActionGroup>
 #include <QHeaderView>
-#include <QCheckBox>
-#include <QGuiApplication>
-#include <QLineEdit>
 #include <QIcon>
 #include <QSettings>
 #include <QTreeWidget>

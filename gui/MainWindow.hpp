@@ -17,9 +17,7 @@
 #include <QMainWindow>
 #include <QString>
 
-#include <functional>
 #include <memory>
-#include <utility>
 #include <vector>
 
 class QAction;
@@ -31,10 +29,6 @@ class QComboBox;
 class QDoubleSpinBox;
 class QProgressBar;
 class QThread;
-class QTreeWidget;
-class QActionGroup;
-class QCheckBox;
-class QLineEdit;
 template <typename T>
 class QFutureWatcher;
 

@@ -21,7 +21,6 @@
 #include <QRegularExpression>
 #include <QStatusBar>
 #include <QToolBar>
-#include <QUndoStack>
 
 #include <cmath>
 
