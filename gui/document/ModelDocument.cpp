@@ -181,12 +181,15 @@ void ModelDocument::setJointMaterialOfJoint(int joint, int jointMaterial) {
                                         tr("Assign a joint material to %1").arg(itemName({ItemRef::Kind::Joint, joint}))));
 }
 
+void ModelDocument::replaceModel(Model model, const QString& text) {
+    // The whole model is swapped: exact undo whatever the edit touched.
+    undo_.push(new SetValueCommand<Model>(this, [](Model& m) -> Model& { return m; }, std::move(model), text));
+}
+
 bool ModelDocument::moveItem(const ItemRef& ref, const Point2& delta) {
     Model moved = model_;
     if (!move_item(moved, ref, delta)) return false;
-    // The whole model is swapped: exact undo whatever the edit touched.
-    undo_.push(new SetValueCommand<Model>(this, [](Model& m) -> Model& { return m; }, std::move(moved),
-                                          tr("Move %1").arg(itemName(ref))));
+    replaceModel(std::move(moved), tr("Move %1").arg(itemName(ref)));
     return true;
 }
 
@@ -194,8 +197,7 @@ bool ModelDocument::deleteItem(const ItemRef& ref) {
     Model reduced = model_;
     const QString name = itemName(ref);
     if (!delete_item(reduced, ref)) return false;
-    undo_.push(new SetValueCommand<Model>(this, [](Model& m) -> Model& { return m; }, std::move(reduced),
-                                          tr("Delete %1").arg(name)));
+    replaceModel(std::move(reduced), tr("Delete %1").arg(name));
     return true;
 }
 

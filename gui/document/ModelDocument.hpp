@@ -83,6 +83,9 @@ public:
     /// Explicit joint `joint` gets joint material `jointMaterial` (−1 = the default one).
     void setJointMaterialOfJoint(int joint, int jointMaterial);
 
+    /// Replaces the whole model as one undoable edit named `text`: for edits that touch several
+    /// lists at once (a deletion that renumbers references, a move of a region with its holes).
+    void replaceModel(Model model, const QString& text);
     /// Moves an item, a hole or a vertex by `delta` (m); false when `ref` does not exist.
     bool moveItem(const ItemRef& ref, const Point2& delta);
     /// Deletes an item, a hole or a vertex (see delete_item()); false when it cannot go.

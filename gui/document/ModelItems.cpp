@@ -1,7 +1,10 @@
 #include "document/ModelItems.hpp"
 
+#include "geometry/PolygonChecks.hpp"
+
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace mcdda::gui {
 
@@ -20,48 +23,31 @@ double segment_distance(const Point2& p, const Point2& a, const Point2& b)
     return distance(p, {a.x + t * dx, a.y + t * dy});
 }
 
-bool ring_holds(const Ring& ring, const Point2& p)
-{
-    bool inside = false;
-    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-        const Point2& a = ring[i];
-        const Point2& b = ring[j];
-        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
-    }
-    return inside;
-}
-
-double ring_area(const Ring& ring)
-{
-    double a = 0.0;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Point2& p = ring[i];
-        const Point2& q = ring[(i + 1) % ring.size()];
-        a += p.x * q.y - q.x * p.y;
-    }
-    return std::fabs(0.5 * a);
-}
-
 template <typename T>
 bool in_range(const std::vector<T>& list, int index)
 {
     return index >= 0 && static_cast<std::size_t>(index) < list.size();
 }
 
+/// Point2 or const Point2, as the model is.
+template <typename M>
+using PointOf = std::conditional_t<std::is_const_v<M>, const Point2, Point2>;
+
 /// The editable points of an item, in a fixed order (a region: boundary then holes).
-std::vector<Point2*> points_of(Model& m, Kind kind, int index)
+template <typename M>
+std::vector<PointOf<M>*> points_of(M& m, Kind kind, int index)
 {
-    std::vector<Point2*> out;
+    std::vector<PointOf<M>*> out;
     switch (kind) {
     case Kind::Region:
         if (!in_range(m.regions, index)) break;
-        for (Point2& p : m.regions[index].boundary) out.push_back(&p);
-        for (Ring& hole : m.regions[index].holes)
-            for (Point2& p : hole) out.push_back(&p);
+        for (auto& p : m.regions[index].boundary) out.push_back(&p);
+        for (auto& hole : m.regions[index].holes)
+            for (auto& p : hole) out.push_back(&p);
         break;
     case Kind::Joint:
         if (in_range(m.joints, index))
-            for (Point2& p : m.joints[index].points) out.push_back(&p);
+            for (auto& p : m.joints[index].points) out.push_back(&p);
         break;
     case Kind::FixedPoint:
         if (in_range(m.fixed_points, index)) out.push_back(&m.fixed_points[index].point);
@@ -85,15 +71,16 @@ std::vector<Point2*> points_of(Model& m, Kind kind, int index)
 }
 
 /// The vertices a vertex reference counts in: one ring of a region, else all the item's points.
-std::vector<Point2*> vertex_list(Model& m, const ItemRef& ref)
+template <typename M>
+std::vector<PointOf<M>*> vertex_list(M& m, const ItemRef& ref)
 {
     if (ref.kind != Kind::Region) return points_of(m, ref.kind, ref.index);
-    std::vector<Point2*> out;
+    std::vector<PointOf<M>*> out;
     if (!in_range(m.regions, ref.index)) return out;
-    Region& r = m.regions[ref.index];
+    auto& r = m.regions[ref.index];
     if (ref.ring < 0 || static_cast<std::size_t>(ref.ring) > r.holes.size()) return out;
-    Ring& ring = ref.ring == 0 ? r.boundary : r.holes[ref.ring - 1];
-    for (Point2& p : ring) out.push_back(&p);
+    auto& ring = ref.ring == 0 ? r.boundary : r.holes[ref.ring - 1];
+    for (auto& p : ring) out.push_back(&p);
     return out;
 }
 
@@ -108,14 +95,13 @@ void erase_at(std::vector<T>& list, int index)
 bool item_exists(const Model& model, const ItemRef& ref)
 {
     if (!ref.valid()) return false;
-    Model& m = const_cast<Model&>(model);  // only read: the helpers hand out pointers
-    if (points_of(m, ref.kind, ref.index).empty()) return false;
+    if (points_of(model, ref.kind, ref.index).empty()) return false;
     if (ref.kind == Kind::Region) {
         const Region& r = model.regions[ref.index];
         if (ref.ring < 0 || static_cast<std::size_t>(ref.ring) > r.holes.size()) return false;
     }
     if (ref.vertex < 0) return true;
-    return static_cast<std::size_t>(ref.vertex) < vertex_list(m, ref).size();
+    return static_cast<std::size_t>(ref.vertex) < vertex_list(model, ref).size();
 }
 
 ItemRef pick_item(const Model& model, const Point2& p, double tolerance)
@@ -187,11 +173,9 @@ ItemRef pick_item(const Model& model, const Point2& p, double tolerance)
     double best_area = std::numeric_limits<double>::infinity();
     for (int i = 0; i < static_cast<int>(model.regions.size()); ++i) {
         const Region& r = model.regions[i];
-        if (r.boundary.size() < 3 || !ring_holds(r.boundary, p)) continue;
-        bool in_hole = false;
-        for (const Ring& hole : r.holes) in_hole = in_hole || (hole.size() >= 3 && ring_holds(hole, p));
-        const double area = ring_area(r.boundary);
-        if (!in_hole && area < best_area) {
+        if (!region_contains(r, p)) continue;
+        const double area = std::fabs(signed_area(r.boundary));
+        if (area < best_area) {
             best_area = area;
             best = {Kind::Region, i, 0, -1};
         }
@@ -204,14 +188,13 @@ std::vector<Point2> item_points(const Model& model, const ItemRef& ref, bool* cl
     if (closed) *closed = false;
     std::vector<Point2> out;
     if (!item_exists(model, ref)) return out;
-    Model& m = const_cast<Model&>(model);  // only read
-    if (ref.vertex >= 0) return {*vertex_list(m, ref)[ref.vertex]};
+    if (ref.vertex >= 0) return {*vertex_list(model, ref)[ref.vertex]};
     if (ref.kind == Kind::Region) {
         if (closed) *closed = true;
         const Region& r = model.regions[ref.index];
         return ref.ring == 0 ? r.boundary : r.holes[ref.ring - 1];
     }
-    for (const Point2* p : points_of(m, ref.kind, ref.index)) out.push_back(*p);
+    for (const Point2* p : points_of(model, ref.kind, ref.index)) out.push_back(*p);
     return out;
 }
 

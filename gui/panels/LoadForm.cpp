@@ -436,9 +436,7 @@ bool LoadForm::deleteTable()
         if (l.table > i) --l.table;
     for (EdgePressure& e : candidate.edge_pressures)
         if (e.table > i) --e.table;
-    document_->undoStack()->push(new SetValueCommand<Model>(
-        document_, [](Model& model) -> Model& { return model; }, std::move(candidate),
-        tr("Delete load table \"%1\"").arg(name)));
+    document_->replaceModel(std::move(candidate), tr("Delete load table \"%1\"").arg(name));
     set_status(tbl_status_, tr("Deleted \"%1\".").arg(name), false);
     return true;
 }

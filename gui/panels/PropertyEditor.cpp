@@ -26,6 +26,15 @@ namespace mcdda::gui {
 
 namespace {
 
+using form::deg;
+using form::display;
+using form::number;
+using form::si;
+using form::status_label;
+using form::to_qt;
+
+constexpr double standard_gravity = 9.81;  // as the model reader: unit weight = ρ g
+
 /// Two buttons side by side in a form row.
 QWidget* buttons_row(QPushButton* a, QPushButton* b, QWidget* parent)
 {
@@ -37,19 +46,6 @@ QWidget* buttons_row(QPushButton* a, QPushButton* b, QWidget* parent)
     layout->addStretch();
     return row;
 }
-
-}  // namespace
-
-namespace {
-
-using form::deg;
-using form::display;
-using form::number;
-using form::si;
-using form::status_label;
-using form::to_qt;
-
-constexpr double standard_gravity = 9.81;  // as the model reader: unit weight = ρ g
 
 bool same(const Material& a, const Material& b)
 {
@@ -481,7 +477,7 @@ bool PropertyEditor::newMaterial()
         material.poisson_ratio = 0.25;
         material.density = 2600.0;
         material.cohesion = 1e6;
-        material.friction_angle = 35.0 * 3.14159265358979323846 / 180.0;
+        material.friction_angle = 35.0 * deg;
     }
     material.name.clear();  // the document names it
     const int index = document_->addMaterial(material);
@@ -498,7 +494,7 @@ bool PropertyEditor::newJointMaterial()
     if (shown >= 0 && static_cast<std::size_t>(shown) < m.joint_materials.size())
         material = m.joint_materials[static_cast<std::size_t>(shown)];
     else
-        material.friction_angle = 30.0 * 3.14159265358979323846 / 180.0;
+        material.friction_angle = 30.0 * deg;
     material.name.clear();
     const int index = document_->addJointMaterial(material);
     setJointMaterialIndex(index);

@@ -1,5 +1,6 @@
 #include "tools/DrawTool.hpp"
 
+#include "geometry/PolygonChecks.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <Qt>
@@ -13,17 +14,6 @@ namespace mcdda::gui {
 namespace {
 
 bool same(const Point2& a, const Point2& b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-9; }
-
-double signed_area(const std::vector<Point2>& ring)
-{
-    double a = 0.0;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Point2& p = ring[i];
-        const Point2& q = ring[(i + 1) % ring.size()];
-        a += p.x * q.y - q.x * p.y;
-    }
-    return 0.5 * a;
-}
 
 }  // namespace
 

@@ -76,18 +76,8 @@ void SelectTest::initTestCase()
 
 void SelectTest::squareModel(MainWindow& window)
 {
-    window.setAskToSave(false);
-    window.resize(1000, 700);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QVERIFY(show_square(window));
     gui::ModelDocument* doc = window.document();
-    doc->addRegion({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 0);
-    Roller base;
-    base.from = {0, 0};
-    base.to = {10, 0};
-    base.fix_x = base.fix_y = true;
-    doc->addRoller(base);
     MeasurementPoint q;
     q.point = {5, 8};
     doc->addMeasurementPoint(q);

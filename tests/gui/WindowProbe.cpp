@@ -31,15 +31,14 @@ int count_around(gui::ModelView& view, double x, double y, const view::Rgb& colo
     return n;
 }
 
-std::unique_ptr<gui::MainWindow> square_window()
+bool show_square(gui::MainWindow& window)
 {
-    auto window = std::make_unique<gui::MainWindow>();
-    window->setAskToSave(false);
-    window->resize(1100, 750);
-    window->show();
-    if (!QTest::qWaitForWindowExposed(window.get())) return nullptr;
-    window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
-    gui::ModelDocument* doc = window->document();
+    window.setAskToSave(false);
+    window.resize(1100, 750);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) return false;
+    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    gui::ModelDocument* doc = window.document();
     doc->addRegion({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, 0);
     Roller base;
     base.name = "base";
@@ -47,7 +46,13 @@ std::unique_ptr<gui::MainWindow> square_window()
     base.to = {10, 0};
     base.fix_x = base.fix_y = true;
     doc->addRoller(base);
-    return window;
+    return true;
+}
+
+std::unique_ptr<gui::MainWindow> square_window()
+{
+    auto window = std::make_unique<gui::MainWindow>();
+    return show_square(*window) ? std::move(window) : nullptr;
 }
 
 bool settled(const gui::MainWindow& window)

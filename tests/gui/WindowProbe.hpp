@@ -23,8 +23,11 @@ bool near(QColor c, const view::Rgb& rgb, double tolerance = 0.06);
 /// freshly rendered frame.
 int count_around(gui::ModelView& view, double x, double y, const view::Rgb& colour, int half = 4);
 
-/// A shown window after File ▸ New with a 10 m square region and a roller holding its base
-/// (x and y); null when the window could not be shown.
+/// Shows `window` (1100 × 750) and makes it File ▸ New with a 10 m square region and a roller
+/// holding its base (x and y); false when the window could not be shown.
+bool show_square(gui::MainWindow& window);
+
+/// The same in a window of its own; null when it could not be shown.
 std::unique_ptr<gui::MainWindow> square_window();
 
 /// Pre-processing is done and its model is usable.
