@@ -9,6 +9,7 @@
 #include "run/RunOutput.hpp"
 #include "run/Simulation.hpp"
 
+#include <ctime>
 #include <atomic>
 #include <csignal>
 #include <filesystem>
@@ -27,7 +28,10 @@ void print_timings(const RunTimings& t, int steps) {
               << t.solve << ", contact " << t.contact << ", plasticity " << t.plasticity << ", total " << t.total
               << "\n"
               << "factorizations " << t.factorizations << " (" << t.symbolic_analyses << " symbolic analyses) in "
-              << steps << " steps\n";
+              << steps << " steps\n"
+              << "equilibrium iterations " << t.iterations << " (at most " << t.max_iterations << " in a step), "
+              << t.load_cuts << " load increments halved\n"
+              << "CPU time of the process " << static_cast<double>(std::clock()) / CLOCKS_PER_SEC << " s\n";
     if (steps > 0 && t.factorizations > 0)
         std::cout << "per step " << t.total / steps << " s; one factorization " << t.factorization / t.factorizations
                   << " s; step / factorization = " << (t.total / steps) / (t.factorization / t.factorizations) << "\n";

@@ -22,6 +22,7 @@ struct MeshTopology {
     /// For each node: the boundary edges ending at / starting from it (−1 for interior nodes).
     std::vector<int> edge_into, edge_out_of;
     std::vector<int> boundary_nodes;  ///< nodes on some block boundary
+    std::vector<char> midside_node;   ///< per node: 1 for a six-node triangle's midside node
     double model_size = 1.0;          ///< diagonal of the mesh's bounding box (m)
 
     bool on_boundary(int node) const { return edge_out_of[node] >= 0; }

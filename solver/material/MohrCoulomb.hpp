@@ -12,6 +12,8 @@
 
 #include "model/Model.hpp"
 
+#include <Eigen/Dense>
+
 #include <array>
 
 namespace mcdda {
@@ -41,6 +43,14 @@ public:
 
     /// Returns the trial stress onto the yield surface (or leaves it when inside).
     ReturnResult return_map(const PlaneStress& trial) const;
+    // TEMPORARY shim until the tangent lands: elastic tangent.
+    ReturnResult return_map(const PlaneStress& trial, Eigen::Matrix3d* tangent) const {
+        if (tangent) {
+            const double l = lambda_, g = shear_modulus_;
+            *tangent << l + 2 * g, l, 0, l, l + 2 * g, 0, 0, 0, g;
+        }
+        return return_map(trial);
+    }
 
     /// Principal stresses (σ1 ≥ σ2 ≥ σ3) of a plane-strain state.
     static std::array<double, 3> principal(const PlaneStress& s);
