@@ -1,8 +1,9 @@
 #include "fem/MeshTopology.hpp"
 
+#include "mesh/QuadraticMesh.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 namespace mcdda {
 
@@ -41,6 +42,7 @@ MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks) 
     const std::size_t n = mesh.nodes.size();
     t.edge_into.assign(n, -1);
     t.edge_out_of.assign(n, -1);
+    t.midside_node.assign(n, 0);
     double box[4] = {1e300, 1e300, -1e300, -1e300};
     for (const Point2& p : mesh.nodes) {
         box[0] = std::min(box[0], p.x); box[1] = std::min(box[1], p.y);
@@ -49,27 +51,45 @@ MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks) 
     t.model_size = n ? std::hypot(box[2] - box[0], box[3] - box[1]) : 1.0;
     const double tolerance = 1e-6 * t.model_size;
 
-    for (int b = 0; b < mesh.block_count(); ++b) {
-        // An edge used by one triangle of the block is on its boundary; counter-clockwise
-        // triangles give it the direction with the block on the left.
-        std::map<std::pair<int, int>, int> count;
-        for (int e = mesh.block_triangle_begin[b]; e < mesh.block_triangle_begin[b + 1]; ++e)
-            for (int k = 0; k < 3; ++k) {
-                const int i = mesh.triangles[e][k], j = mesh.triangles[e][(k + 1) % 3];
-                count[{std::min(i, j), std::max(i, j)}]++;
+    // An edge used by one triangle is on its block's boundary (blocks share no nodes, so no edge
+    // is used by two blocks). On a six-node mesh the midside node identifies the edge.
+    std::vector<int> uses;
+    std::vector<int> edge_id;
+    if (mesh.quadratic()) {
+        uses.assign(n, 0);
+        for (const auto& m : mesh.midside)
+            for (int node : m) {
+                ++uses[node];
+                t.midside_node[node] = 1;
             }
-        for (int e = mesh.block_triangle_begin[b]; e < mesh.block_triangle_begin[b + 1]; ++e)
-            for (int k = 0; k < 3; ++k) {
-                const int i = mesh.triangles[e][k], j = mesh.triangles[e][(k + 1) % 3];
-                if (count[{std::min(i, j), std::max(i, j)}] != 1) continue;
-                BoundaryEdge edge{i, j, b, -1};
-                if (b < static_cast<int>(blocks.size()))
-                    edge.joint = joint_of(blocks[b], mesh.nodes[i], mesh.nodes[j], tolerance);
-                t.edge_out_of[i] = static_cast<int>(t.edges.size());
-                t.edge_into[j] = static_cast<int>(t.edges.size());
-                t.edges.push_back(edge);
-            }
+    } else {
+        int edge_count = 0;
+        edge_id = number_edges(mesh, edge_count);
+        uses.assign(edge_count, 0);
+        for (int id : edge_id) ++uses[id];
     }
+    auto link = [&](int from, int to, int block, int joint) {
+        t.edge_out_of[from] = static_cast<int>(t.edges.size());
+        t.edge_into[to] = static_cast<int>(t.edges.size());
+        t.edges.push_back({from, to, block, joint});
+    };
+    for (int b = 0; b < mesh.block_count(); ++b)
+        for (int e = mesh.block_triangle_begin[b]; e < mesh.block_triangle_begin[b + 1]; ++e)
+            for (int k = 0; k < 3; ++k) {
+                const int m = mesh.quadratic() ? mesh.midside[e][k] : -1;
+                if (uses[m >= 0 ? m : edge_id[3 * e + k]] != 1) continue;
+                // Counter-clockwise triangles give the edge the direction with the block on the left.
+                const int i = mesh.triangles[e][k], j = mesh.triangles[e][(k + 1) % 3];
+                const int joint = b < static_cast<int>(blocks.size())
+                                      ? joint_of(blocks[b], mesh.nodes[i], mesh.nodes[j], tolerance)
+                                      : -1;
+                if (m < 0) {
+                    link(i, j, b, joint);
+                } else {
+                    link(i, m, b, joint);
+                    link(m, j, b, joint);
+                }
+            }
     for (std::size_t i = 0; i < n; ++i)
         if (t.edge_out_of[i] >= 0) t.boundary_nodes.push_back(static_cast<int>(i));
     return t;

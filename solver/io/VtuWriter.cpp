@@ -37,11 +37,20 @@ void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& field
         for (const Point2& p : mesh.nodes) out << "          " << p.x << " " << p.y << " 0\n";
         out << "        </DataArray>\n      </Points>\n      <Cells>\n"
             << "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
-        for (const auto& t : mesh.triangles) out << "          " << t[0] << " " << t[1] << " " << t[2] << "\n";
+        // Six-node triangles are VTK_QUADRATIC_TRIANGLE (22): corners, then the midside nodes of
+        // edges 0-1, 1-2, 2-0, which is Mesh::midside's order. Three-node ones are VTK_TRIANGLE (5).
+        const bool quadratic = mesh.quadratic();
+        const int points_per_cell = quadratic ? 6 : 3, cell_type = quadratic ? 22 : 5;
+        for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+            const auto& t = mesh.triangles[e];
+            out << "          " << t[0] << " " << t[1] << " " << t[2];
+            if (quadratic) out << " " << mesh.midside[e][0] << " " << mesh.midside[e][1] << " " << mesh.midside[e][2];
+            out << "\n";
+        }
         out << "        </DataArray>\n        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) out << (i % 12 ? " " : "          ") << 3 * (i + 1) << (i % 12 == 11 ? "\n" : "");
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) out << (i % 12 ? " " : "          ") << points_per_cell * (i + 1) << (i % 12 == 11 ? "\n" : "");
         out << "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) out << (i % 24 ? " " : "          ") << 5 << (i % 24 == 23 ? "\n" : "");
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) out << (i % 24 ? " " : "          ") << cell_type << (i % 24 == 23 ? "\n" : "");
         out << "\n        </DataArray>\n      </Cells>\n";
         out << "      <PointData>\n";
         for (const VtuField& f : fields.point_data) write_field(out, f);

@@ -4,24 +4,99 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
+#include <cstdint>
+#include <type_traits>
 
 namespace mcdda {
 
 namespace {
 
-/// A yield plane in principal-stress space (sorted σ1 ≥ σ2 ≥ σ3): f = n·σ − k, flow along m.
-struct Plane {
-    Eigen::Vector3d n, m;
-    double k;
-};
+constexpr int popcount(int mask) {
+    int n = 0;
+    for (; mask; mask &= mask - 1) ++n;
+    return n;
+}
+
+/// The active sets (bit i = plane i) of at most 3 of `Planes` planes, by size, then by mask:
+/// plane before edge before apex, and the order a stable sort of all masks by size gives.
+template <int Planes, int Count>
+constexpr std::array<std::uint8_t, Count> make_active_sets() {
+    std::array<std::uint8_t, Count> sets{};
+    int k = 0;
+    for (int size = 1; size <= 3; ++size)
+        for (int mask = 1; mask < (1 << Planes); ++mask)
+            if (popcount(mask) == size) sets[k++] = static_cast<std::uint8_t>(mask);
+    return sets;
+}
+
+constexpr auto kThreePlaneSets = make_active_sets<3, 7>();
+constexpr auto kSixPlaneSets = make_active_sets<6, 41>();
 
 }  // namespace
 
 MohrCoulomb::MohrCoulomb(double E, double nu, double c, double phi, double psi, double tensile)
     : lambda_(E * nu / ((1 + nu) * (1 - 2 * nu))), shear_modulus_(E / (2 * (1 + nu))), cohesion_(c),
       sin_phi_(std::sin(phi)), cos_phi_(std::cos(phi)), sin_psi_(std::sin(psi)), tensile_strength_(tensile),
-      tolerance_(1e-10 * std::max({c, tensile, 1e-6 * E, 1.0})) {}
+      tolerance_(1e-10 * std::max({c, tensile, 1e-6 * E, 1.0})) {
+    elasticity_ = lambda_ * Eigen::Matrix3d::Ones() + 2 * shear_modulus_ * Eigen::Matrix3d::Identity();
+    compliance_ = elasticity_.inverse();
+    auto mohr_coulomb = [&](int major, int minor) {
+        Plane p;
+        p.n.setZero();
+        p.m.setZero();
+        p.n[major] = 1 + sin_phi_;
+        p.n[minor] = -(1 - sin_phi_);
+        p.m[major] = 1 + sin_psi_;
+        p.m[minor] = -(1 - sin_psi_);
+        p.k = 2 * cohesion_ * cos_phi_;
+        return p;
+    };
+    planes_[0] = mohr_coulomb(0, 2);
+    planes_[1] = mohr_coulomb(0, 1);
+    planes_[2] = mohr_coulomb(1, 2);
+    plane_count_ = 3;
+    if (tensile_strength_ > 0.0)
+        for (int i = 0; i < 3; ++i) {
+            Plane& p = planes_[plane_count_++];
+            p.n = p.m = Eigen::Vector3d::Unit(i);
+            p.k = tensile_strength_;
+        }
+    for (int i = 0; i < plane_count_; ++i) planes_[i].Dm = elasticity_ * planes_[i].m;
+
+    // FullPivLU's rank test drops the singular sets: with ψ = 0 (or φ = 0) the three
+    // Mohr–Coulomb planes are linearly dependent.
+    auto add = [&](auto size, const ActiveSet& set) {
+        constexpr int K = decltype(size)::value;
+        Eigen::Matrix<double, K, K> A;
+        for (int r = 0; r < K; ++r)
+            for (int c = 0; c < K; ++c) A(r, c) = planes_[set.planes[r]].n.dot(planes_[set.planes[c]].Dm);
+        ActiveSet& stored = sets_[set_count_];
+        stored = set;
+        stored.inverse.setZero();
+        if constexpr (K == 1) {
+            if (A(0, 0) == 0.0) return;  // FullPivLU's test for 1×1
+            stored.inverse(0, 0) = 1.0 / A(0, 0);
+        } else {
+            Eigen::FullPivLU<Eigen::Matrix<double, K, K>> lu;
+            lu.compute(A);
+            if (!lu.isInvertible()) return;
+            stored.inverse.template topLeftCorner<K, K>() = lu.solve(Eigen::Matrix<double, K, K>::Identity());
+        }
+        ++set_count_;
+    };
+    const std::uint8_t* masks = plane_count_ == 6 ? kSixPlaneSets.data() : kThreePlaneSets.data();
+    const int mask_count = static_cast<int>(plane_count_ == 6 ? kSixPlaneSets.size() : kThreePlaneSets.size());
+    for (int k = 0; k < mask_count; ++k) {
+        ActiveSet set;
+        for (int i = 0; i < plane_count_; ++i)
+            if (masks[k] & (1 << i)) set.planes[set.size++] = i;
+        switch (set.size) {
+        case 1: add(std::integral_constant<int, 1>{}, set); break;
+        case 2: add(std::integral_constant<int, 2>{}, set); break;
+        default: add(std::integral_constant<int, 3>{}, set); break;
+        }
+    }
+}
 
 MohrCoulomb::MohrCoulomb(const Material& m)
     : MohrCoulomb(m.young_modulus, m.poisson_ratio, m.cohesion, m.friction_angle, m.dilation_angle,
@@ -42,110 +117,114 @@ double MohrCoulomb::yield(const PlaneStress& s) const {
     return f;
 }
 
-ReturnResult MohrCoulomb::return_map(const PlaneStress& trial) const {
+ReturnResult MohrCoulomb::return_map(const PlaneStress& trial) const { return return_map(trial, nullptr); }
+
+ReturnResult MohrCoulomb::return_map(const PlaneStress& trial, Eigen::Matrix3d* tangent) const {
     ReturnResult result;
     result.stress = trial;
 
-    // Principal values with the in-plane direction θ of the major in-plane stress a; b is the
-    // minor in-plane one, z the out-of-plane one.
+    // Principal values: a is the major in-plane stress, at angle θ from x; b the minor in-plane
+    // one, z the out-of-plane one. Only cos²θ, sin²θ and sinθ cosθ are needed, from the Mohr
+    // circle; θ = 0 for an isotropic in-plane stress, as atan2(0, 0) gave.
     const double centre = 0.5 * (trial.xx + trial.yy);
-    const double radius = std::hypot(0.5 * (trial.xx - trial.yy), trial.xy);
-    const double theta = 0.5 * std::atan2(2 * trial.xy, trial.xx - trial.yy);
+    const double half_difference = 0.5 * (trial.xx - trial.yy);
+    const double radius = std::hypot(half_difference, trial.xy);
+    const double cos_2theta = radius > 0.0 ? half_difference / radius : 1.0;
+    const double sin_2theta = radius > 0.0 ? trial.xy / radius : 0.0;
+    const double c2 = 0.5 * (1 + cos_2theta), s2 = 0.5 * (1 - cos_2theta), cs = 0.5 * sin_2theta;
     const double values[3] = {centre + radius, centre - radius, trial.zz};  // a, b, z
+    // Sorted descending, ties kept in a, b, z order (a ≥ b always, so only z moves).
     int order[3] = {0, 1, 2};
-    std::sort(order, order + 3, [&](int i, int j) { return values[i] > values[j]; });
+    if (values[2] > values[0]) {
+        order[0] = 2;
+        order[1] = 0;
+        order[2] = 1;
+    } else if (values[2] > values[1]) {
+        order[1] = 2;
+        order[2] = 1;
+    }
     const Eigen::Vector3d s(values[order[0]], values[order[1]], values[order[2]]);
 
-    // The candidate planes: Mohr–Coulomb between each pair (main plane 1–3, edges 1–2 and
-    // 2–3) and, with a cut-off, the tension planes.
-    std::vector<Plane> planes;
-    auto mohr_coulomb = [&](int major, int minor) {
-        Plane p;
-        p.n.setZero();
-        p.m.setZero();
-        p.n[major] = 1 + sin_phi_;
-        p.n[minor] = -(1 - sin_phi_);
-        p.m[major] = 1 + sin_psi_;
-        p.m[minor] = -(1 - sin_psi_);
-        p.k = 2 * cohesion_ * cos_phi_;
-        return p;
-    };
-    planes.push_back(mohr_coulomb(0, 2));
-    planes.push_back(mohr_coulomb(0, 1));
-    planes.push_back(mohr_coulomb(1, 2));
-    if (tensile_strength_ > 0.0)
-        for (int i = 0; i < 3; ++i) {
-            Plane p;
-            p.n = p.m = Eigen::Vector3d::Unit(i);
-            p.k = tensile_strength_;
-            planes.push_back(p);
-        }
     auto violation = [&](const Eigen::Vector3d& x) {
         double worst = -1e300;
-        for (const Plane& p : planes) worst = std::max(worst, p.n.dot(x) - p.k);
+        for (int i = 0; i < plane_count_; ++i) worst = std::max(worst, planes_[i].n.dot(x) - planes_[i].k);
         return worst;
     };
-    if (violation(s) <= tolerance_) return result;  // elastic
+    if (violation(s) <= tolerance_) {  // elastic
+        if (tangent) {
+            const double diagonal = lambda_ + 2 * shear_modulus_;
+            *tangent << diagonal, lambda_, 0.0, lambda_, diagonal, 0.0, 0.0, 0.0, shear_modulus_;
+        }
+        return result;
+    }
 
-    Eigen::Matrix3d D = lambda_ * Eigen::Matrix3d::Ones() + 2 * shear_modulus_ * Eigen::Matrix3d::Identity();
-    const int count = static_cast<int>(planes.size());
-    // Try active sets by increasing size: the first that returns onto all its planes with
-    // non-negative multipliers, keeps the principal order and violates no other plane is the
-    // return (plane, edge, apex; the cut-off combinations alike).
-    std::vector<int> subsets;
-    for (int mask = 1; mask < (1 << count); ++mask) subsets.push_back(mask);
-    std::stable_sort(subsets.begin(), subsets.end(),
-                     [](int a, int b) { return __builtin_popcount(a) < __builtin_popcount(b); });
     const double scale = tolerance_;
     Eigen::Vector3d best = s;
     Eigen::Vector3d best_flow = Eigen::Vector3d::Zero();
-    double best_violation = 1e300;
     int best_size = 0;
-    for (int mask : subsets) {
-        std::vector<int> active;
-        for (int i = 0; i < count; ++i)
-            if (mask & (1 << i)) active.push_back(i);
-        if (active.size() > 3) continue;
-        const int m = static_cast<int>(active.size());
-        Eigen::MatrixXd A(m, m);
-        Eigen::VectorXd f(m);
-        for (int r = 0; r < m; ++r) {
-            f[r] = planes[active[r]].n.dot(s) - planes[active[r]].k;
-            for (int c = 0; c < m; ++c) A(r, c) = planes[active[r]].n.dot(D * planes[active[c]].m);
-        }
-        Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-        if (!lu.isInvertible()) continue;
-        const Eigen::VectorXd gamma = lu.solve(f);
+    Eigen::Matrix3d sorted_derivative;  // dσ/ds in sorted principal order, when tangent is wanted
+
+    // Closest-point projection onto the planes of `set` (K of them): Δγ = A⁻¹ f with
+    // A_rc = n_r·D m_c, f_r = n_r·s − k_r; accepted if it lands on all of them with Δγ ≥ 0, keeps
+    // the principal order and violates no other plane.
+    auto attempt = [&](auto size, const ActiveSet& set) {
+        constexpr int K = decltype(size)::value;
+        const auto inverse = set.inverse.template topLeftCorner<K, K>();
+        Eigen::Matrix<double, K, 1> f;
+        for (int r = 0; r < K; ++r) f[r] = planes_[set.planes[r]].n.dot(s) - planes_[set.planes[r]].k;
+        const Eigen::Matrix<double, K, 1> gamma = inverse * f;
+        if (!(gamma.array() >= -1e-12).all()) return false;
         Eigen::Vector3d flow = Eigen::Vector3d::Zero();
-        for (int r = 0; r < m; ++r) flow += gamma[r] * planes[active[r]].m;
-        const Eigen::Vector3d x = s - D * flow;
-        const double v = violation(x);
+        for (int r = 0; r < K; ++r) flow += gamma[r] * planes_[set.planes[r]].m;
+        const Eigen::Vector3d x = s - elasticity_ * flow;
         const bool ordered = x[0] >= x[1] - 1e-9 * (std::fabs(x[1]) + scale) && x[1] >= x[2] - 1e-9 * (std::fabs(x[2]) + scale);
-        const bool non_negative = (gamma.array() >= -1e-12).all();
-        if (non_negative && ordered && v <= 1e-9 * (x.cwiseAbs().maxCoeff() + cohesion_ + scale)) {
-            best = x;
-            best_flow = flow;
-            best_size = m;
-            best_violation = v;
-            break;
+        if (!ordered || violation(x) > 1e-9 * (x.cwiseAbs().maxCoeff() + cohesion_ + scale)) return false;
+        best = x;
+        best_flow = flow;
+        best_size = K;
+        if (tangent) {
+            // x = s − D M A⁻¹ (Nᵀ s − k), so dx/ds = I − D M A⁻¹ Nᵀ.
+            Eigen::Matrix<double, 3, K> DM;
+            Eigen::Matrix<double, K, 3> Nt;
+            for (int r = 0; r < K; ++r) {
+                DM.col(r) = planes_[set.planes[r]].Dm;
+                Nt.row(r) = planes_[set.planes[r]].n.transpose();
+            }
+            sorted_derivative = Eigen::Matrix3d::Identity() - DM * (inverse * Nt);
+        }
+        return true;
+    };
+
+    // Active sets by increasing size: the first consistent one is the return (plane, edge,
+    // apex; the cut-off combinations alike).
+    bool found = false;
+    for (int k = 0; k < set_count_ && !found; ++k) {
+        switch (sets_[k].size) {
+        case 1: found = attempt(std::integral_constant<int, 1>{}, sets_[k]); break;
+        case 2: found = attempt(std::integral_constant<int, 2>{}, sets_[k]); break;
+        default: found = attempt(std::integral_constant<int, 3>{}, sets_[k]); break;
         }
     }
-    if (best_violation > 1e299) {
+    if (!found) {
         // No active set is consistent: with non-associated flow (ψ < φ) the return to the apex
         // needs negative multipliers on the plane and edges. The stress then goes to the apex
-        // itself (de Souza Neto et al., Box 8.5): hydrostatic at c·cot φ, or at the cut-off.
-        double apex = sin_phi_ > 1e-12 ? cohesion_ * cos_phi_ / sin_phi_ : s.mean();
-        if (tensile_strength_ > 0.0) apex = std::min(apex, tensile_strength_);
+        // itself (de Souza Neto et al., Box 8.5): hydrostatic at c·cot φ, or at the cut-off,
+        // neither depending on the trial stress, so dσ/ds = 0.
+        bool follows_mean = !(sin_phi_ > 1e-12);  // φ = 0: the "apex" is the mean stress
+        double apex = follows_mean ? s.mean() : cohesion_ * cos_phi_ / sin_phi_;
+        if (tensile_strength_ > 0.0 && tensile_strength_ < apex) {
+            apex = tensile_strength_;
+            follows_mean = false;
+        }
         best = Eigen::Vector3d::Constant(apex);
-        best_flow = D.inverse() * (s - best);
+        best_flow = compliance_ * (s - best);
         best_size = 3;
+        if (tangent) sorted_derivative.setConstant(follows_mean ? 1.0 / 3.0 : 0.0);
     }
 
     // Back to x, y, z: the principal directions do not change (isotropic elasticity).
     double returned[3];
     for (int i = 0; i < 3; ++i) returned[order[i]] = best[i];
-    const double c2 = std::cos(theta) * std::cos(theta), s2 = std::sin(theta) * std::sin(theta);
-    const double cs = std::sin(theta) * std::cos(theta);
     result.stress.xx = returned[0] * c2 + returned[1] * s2;
     result.stress.yy = returned[0] * s2 + returned[1] * c2;
     result.stress.xy = (returned[0] - returned[1]) * cs;
@@ -153,6 +232,27 @@ ReturnResult MohrCoulomb::return_map(const PlaneStress& trial) const {
     result.plastic = true;
     result.active_surfaces = best_size;
     result.equivalent_plastic_strain = std::sqrt(2.0 / 3.0 * best_flow.squaredNorm());
+
+    if (tangent) {
+        // dσ/ds in the a, b, z slots.
+        Eigen::Matrix3d P;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) P(order[i], order[j]) = sorted_derivative(i, j);
+        // In the eigenbasis (a, b, ab): the principal values respond through P D (Δεz = 0), the
+        // shear through the turn of the principal axes, dτab = (σa − σb)/(sa − sb) · G dγab;
+        // at coinciding a, b that ratio's limit is P_aa − P_ab.
+        const Eigen::Matrix3d PD = P * elasticity_;
+        const double gap = values[0] - values[1];
+        const double spin = gap > 1e-9 * (std::fabs(values[0]) + std::fabs(values[1])) + tolerance_
+                                ? (returned[0] - returned[1]) / gap
+                                : 0.5 * (P(0, 0) - P(0, 1) + P(1, 1) - P(1, 0));
+        Eigen::Matrix3d eigen_tangent;
+        eigen_tangent << PD(0, 0), PD(0, 1), 0.0, PD(1, 0), PD(1, 1), 0.0, 0.0, 0.0, spin * shear_modulus_;
+        // Strain into the eigenbasis (engineering shear); stress back with its transpose.
+        Eigen::Matrix3d R;
+        R << c2, s2, cs, s2, c2, -cs, -2 * cs, 2 * cs, c2 - s2;
+        *tangent = R.transpose() * eigen_tangent * R;
+    }
     return result;
 }
 

@@ -43,14 +43,12 @@ public:
 
     /// Returns the trial stress onto the yield surface (or leaves it when inside).
     ReturnResult return_map(const PlaneStress& trial) const;
-    // TEMPORARY shim until the tangent lands: elastic tangent.
-    ReturnResult return_map(const PlaneStress& trial, Eigen::Matrix3d* tangent) const {
-        if (tangent) {
-            const double l = lambda_, g = shear_modulus_;
-            *tangent << l + 2 * g, l, 0, l, l + 2 * g, 0, 0, 0, g;
-        }
-        return return_map(trial);
-    }
+
+    /// The same return; when `tangent` is not null it also receives the algorithmic (consistent)
+    /// tangent dσ/dΔε, 3×3 in Voigt order (xx, yy, xy) with engineering shear strain, for a
+    /// plane-strain increment (Δεzz = 0) of σtrial = σold + D Δε. It is the plane-strain D when
+    /// elastic, symmetric for ψ = φ and not symmetric otherwise (the caller symmetrises, if it must).
+    ReturnResult return_map(const PlaneStress& trial, Eigen::Matrix3d* tangent) const;
 
     /// Principal stresses (σ1 ≥ σ2 ≥ σ3) of a plane-strain state.
     static std::array<double, 3> principal(const PlaneStress& s);
@@ -59,10 +57,31 @@ public:
     double tolerance() const { return tolerance_; }
 
 private:
+    /// A yield plane in sorted principal-stress space (σ1 ≥ σ2 ≥ σ3): f = n·σ − k, flow along m;
+    /// Dm = D m, the stress correction per unit multiplier.
+    struct Plane {
+        Eigen::Vector3d n, m, Dm;
+        double k = 0.0;
+    };
+
+    /// An active set of planes whose system n_r·D m_c is regular, with its inverse (the top-left
+    /// size × size block). The system depends on the material only, so it is inverted once.
+    struct ActiveSet {
+        int size = 0;
+        std::array<int, 3> planes{};
+        Eigen::Matrix3d inverse;
+    };
+
     double lambda_, shear_modulus_;
     double cohesion_, sin_phi_, cos_phi_, sin_psi_;
     double tensile_strength_;
     double tolerance_;
+    Eigen::Matrix3d elasticity_;   ///< D in principal space: λ11ᵀ + 2G I
+    Eigen::Matrix3d compliance_;   ///< D⁻¹
+    std::array<Plane, 6> planes_;  ///< Mohr–Coulomb 1–3, 1–2, 2–3, then the cut-off σ1, σ2, σ3
+    int plane_count_ = 3;          ///< 6 with a cut-off
+    std::array<ActiveSet, 41> sets_;  ///< the regular sets of ≤ 3 planes, by size, then by mask
+    int set_count_ = 0;
 };
 
 }  // namespace mcdda
