@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <cstdio>
+#include <cstdlib>
 
 namespace mcdda {
 
@@ -223,7 +225,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
     const double tolerance = model_.analysis.plastic_tolerance;
     const double load_scale = base.cwiseAbs().maxCoeff();
     Eigen::VectorXd internal, residual(dofs), rhs(bc_.equation_count);
-    double previous = std::numeric_limits<double>::infinity();
+    double previous = std::numeric_limits<double>::infinity(), first_norm = 0.0, last_correction = 0.0;
     bool tangent_usable = may_yield_;
     for (int k = 0;; ++k) {
         // Refactorise when K is stale: contacts changed, or the last iteration contracted slowly.
@@ -246,9 +248,20 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
             }
         timings_.assembly += seconds_since(t0);
         const double scale = std::max({eval.force_scale, load_scale, 1e-30});
-        if (k > 0 && norm <= tolerance * scale) return true;
-        if (!std::isfinite(norm) || norm > 1e8 * scale || k >= model_.analysis.max_plastic_iterations) {
-            attempt.why = !std::isfinite(norm) ? "the equilibrium iterations diverged"
+        if (std::getenv("MCDDA_TRACE"))
+            std::fprintf(stderr, "  k=%d |R|/scale=%.3e yielding=%d refactor=%d tangent=%d\n", k, norm / scale,
+                         eval.yielding, refactor, tangent_usable);
+        // Converged: the out-of-balance force is small against the forces in play, and so is the
+        // last correction against the increment (a slow iteration leaves a small force but a
+        // large remaining displacement).
+        if (k > 0 && norm <= tolerance * scale && last_correction <= tolerance * std::max(d.cwiseAbs().maxCoeff(), 1e-12 * topology_.model_size))
+            return true;
+        // Diverging: non-finite, or growing far beyond the start once the tangent has had a few
+        // corrections (a contact change alone may start from a large out-of-balance force).
+        if (k == 0) first_norm = norm;
+        const bool diverging = !std::isfinite(norm) || (k >= 3 && norm > 1e6 * std::max(first_norm, tolerance * scale));
+        if (diverging || k >= model_.analysis.max_plastic_iterations) {
+            attempt.why = diverging ? "the equilibrium iterations diverged"
                                                : "the equilibrium iterations did not converge within " +
                                                      std::to_string(k) + " (out-of-balance force " +
                                                      std::to_string(norm / scale) + " of the force scale, " +
@@ -281,8 +294,28 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
             timings_.factorization += seconds_since(t0);
             factor_valid = true;
         }
-        d += solve_reduced(rhs);
+        const Eigen::VectorXd delta = solve_reduced(rhs);
         ++attempt.iterations;
+        // Backtracking on the out-of-balance force: a full Newton correction through a softening
+        // (perfectly plastic) tangent overshoots and can spread yield over the whole model.
+        double step = 1.0;
+        if (eval.yielding > 0 || matrix == ElementMatrix::Tangent) {
+            for (int cut = 0; cut < 6; ++cut) {
+                const Eigen::VectorXd trial = d + step * delta;
+                t0 = Clock::now();
+                elements_.evaluate(trial, state_.points, returned_, internal, ElementMatrix::None, nullptr);
+                timings_.plasticity += seconds_since(t0);
+                Eigen::VectorXd r = base - internal;
+                add_contact_forces(contacts, kinematics, properties, trial, r);
+                double trial_norm = 0.0;
+                for (Eigen::Index dof = 0; dof < dofs; ++dof)
+                    if (bc_.equation[dof] >= 0) trial_norm = std::max(trial_norm, std::fabs(r[dof]));
+                if (trial_norm <= norm || trial_norm <= tolerance * scale) break;
+                step *= 0.5;
+            }
+        }
+        d += step * delta;
+        last_correction = step * delta.cwiseAbs().maxCoeff();
         // The factor is kept while it contracts the out-of-balance force well enough.
         if (k > 0 && tangent_usable && norm > keep_factor_contraction * previous) factor_valid = false;
         previous = norm;
@@ -335,7 +368,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     int& iterations = attempt.open_close_iterations;
     iterations = 1;
     while (iterations <= max_iterations) {
-        // Warm start: d of the last open–close iteration is where the next one begins.
+        if (std::getenv("MCDDA_COLD")) d.setZero();
         try {
             if (!equilibrate(d, base, contacts, kinematics, properties, factor_valid, attempt)) {
                 attempt.outcome = Outcome::NotConverged;
@@ -541,7 +574,11 @@ StepReport Simulation::advance_static() {
         report.plastic_iterations += attempt.iterations;
         const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
         const bool too_large = attempt.outcome == Outcome::Converged && largest > displacement_limit_;
-        const bool plastic_failure = attempt.outcome == Outcome::NotConverged || (too_large && attempt.yielding > 0);
+        // A matrix that is singular while the material yields is a mechanism forming: a load
+        // question too (a block without supports and yielding nothing gets a smaller Δt below).
+        const bool plastic_failure = attempt.outcome == Outcome::NotConverged ||
+                                     (attempt.outcome == Outcome::Singular && attempt.yielding > 0) ||
+                                     (too_large && attempt.yielding > 0);
         if (plastic_failure && !(too_large && increment <= floor)) {
             // Smaller load increments, never a smaller Δt: inertia must not carry the load.
             if (increment > floor * (1.0 + 1e-9)) {
@@ -554,7 +591,7 @@ StepReport Simulation::advance_static() {
                                       " of a step)",
                                   from, to);
         }
-        if (attempt.outcome == Outcome::Singular || attempt.outcome == Outcome::Unsettled ||
+        if ((attempt.outcome == Outcome::Singular && attempt.yielding == 0) || attempt.outcome == Outcome::Unsettled ||
             (too_large && attempt.yielding == 0)) {
             // Contacts that do not settle, a block held by nothing but inertia, or a step too
             // large for the contact linearisation: a smaller Δt (Shi's static DDA). Plasticity
