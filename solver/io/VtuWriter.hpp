@@ -21,8 +21,8 @@ struct VtuFields {
     std::vector<VtuField> cell_data;
 };
 
-/// Writes the mesh (three- or six-node triangles, z = 0) with cell data `block` and `material` (Int32) plus the
-/// given fields, atomically. Throws std::runtime_error on failure.
+/// Writes the mesh (three- or six-node triangles, z = 0) with cell data `block` and `material`
+/// (Int32) plus the given fields, atomically. Throws std::runtime_error on failure.
 void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& fields = {});
 
 }  // namespace mcdda
