@@ -1,6 +1,6 @@
 #pragma once
 /// \file RunController.hpp
-/// Runs the solver for the desktop program (DESIGN.md §4): a QObject moved to its own QThread
+/// Runs the solver for the desktop program (docs/architecture.md): a QObject moved to its own QThread
 /// that owns the Simulation. Between steps it checks a stop token and a pause flag; it publishes
 /// progress (at most about 10 a second, always the latest) and immutable result snapshots (at
 /// most about 4 a second, always the last step) through queued signals, and writes the run's

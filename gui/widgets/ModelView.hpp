@@ -1,7 +1,7 @@
 #pragma once
 /// \file ModelView.hpp
 /// The model picture inside the Qt 6 window: a native child window that a plain
-/// vtkRenderWindow draws into (DESIGN.md §5, route 2), with 2-D navigation done here in Qt's
+/// vtkRenderWindow draws into (docs/architecture.md), with 2-D navigation done here in Qt's
 /// event handlers (drag pans, wheel zooms about the cursor). VTK stays in the .cpp.
 
 #include "run/ResultSnapshot.hpp"

@@ -1,4 +1,4 @@
-// A block on a 40° incline (DESIGN §3): with joint friction 20° it slides by
+// A block on a 40° incline: with joint friction 20° it slides by
 // s(t) = ½ g (sin α − cos α tan φ) t² (1.785 m at t = 1 s); with 40.1° it stays.
 
 #include "RunModel.hpp"

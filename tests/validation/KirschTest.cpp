@@ -1,4 +1,4 @@
-// Kirsch: elastic plate with a circular hole under biaxial far-field stress (DESIGN §3).
+// Kirsch: elastic plate with a circular hole under biaxial far-field stress.
 // Hoop stress at the wall, compression positive: (σH + σh) − 2(σH − σh)cos 2θ.
 
 #include "RunModel.hpp"

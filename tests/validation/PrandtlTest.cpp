@@ -1,4 +1,4 @@
-// Rigid smooth strip footing on weightless undrained clay (the paper's parameters, DESIGN §3):
+// Rigid smooth strip footing on weightless undrained clay (the paper's parameters; docs/examples.md):
 // the pressure grows 1 kPa per step until the soil fails; Prandtl: q/cu = 2 + π = 5.14.
 
 #include "RunModel.hpp"

@@ -1,4 +1,4 @@
-// Circular tunnel in a Mohr–Coulomb medium (Salençon; the paper's parameters, DESIGN §3):
+// Circular tunnel in a Mohr–Coulomb medium (Salençon; the paper's parameters; docs/examples.md):
 // P0 = 10 MPa, Pi = 0, E = 5000 MPa, ν = 0.2, a = 1 m, c = 0.5 MPa, φ = 30°, ψ = 0.
 // Closed form: plastic radius 2.505 m, wall displacement 11.65 mm, stresses below.
 
