@@ -5,6 +5,7 @@
 #include "geometry/PolygonChecks.hpp"
 #include "io/ModelReader.hpp"
 #include "mesh/BlockMesher.hpp"
+#include "mesh/QuadraticMesh.hpp"
 #include "model/ModelValidator.hpp"
 
 #include <chrono>
@@ -41,6 +42,7 @@ void run_pipeline(Preprocessed& p, PreprocessStage last) {
         }
         t = clock::now();
         p.mesh = mesh_blocks(p.model, p.blocks, p.diagnostics);
+        if (!has_errors(p.diagnostics) && p.model.element() == ElementType::T6) add_midside_nodes(p.mesh);
         p.statistics = compute_statistics(p.mesh, p.blocks);
         p.seconds_mesh = seconds_since(t);
         p.ok = !has_errors(p.diagnostics);

@@ -20,10 +20,10 @@ void Progress::update(const StepReport& r) {
     for (int i = 0; i < width; ++i) bar[i] = i < filled ? '#' : '.';
     bar[width] = '\0';
     std::snprintf(line, sizeof line,
-                  "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  iterations %d  "
-                  "plastic: %d yielding, %d iterations",
+                  "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  open-close %d  "
+                  "equilibrium iterations %d in %d load increment%s  yielding %d",
                   bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations,
-                  r.yielding, r.plastic_iterations);
+                  r.plastic_iterations, r.load_increments, r.load_increments == 1 ? "" : "s", r.yielding);
     if (terminal_) {
         if (now - last_draw_ < std::chrono::milliseconds(100) && r.step != total_) return;
         std::fprintf(stderr, "\r%s\033[K", line);

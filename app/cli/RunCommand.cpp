@@ -9,8 +9,8 @@
 #include "run/RunOutput.hpp"
 #include "run/Simulation.hpp"
 
-#include <atomic>
 #include <ctime>
+#include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
@@ -29,6 +29,8 @@ void print_timings(const RunTimings& t, int steps) {
               << "\n"
               << "factorizations " << t.factorizations << " (" << t.symbolic_analyses << " symbolic analyses) in "
               << steps << " steps\n"
+              << "equilibrium iterations " << t.iterations << " (at most " << t.max_iterations << " in a step), "
+              << t.load_cuts << " load increments halved\n"
               << "CPU time of the process " << static_cast<double>(std::clock()) / CLOCKS_PER_SEC << " s\n";
     if (steps > 0 && t.factorizations > 0)
         std::cout << "per step " << t.total / steps << " s; one factorization " << t.factorization / t.factorizations

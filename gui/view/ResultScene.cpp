@@ -76,6 +76,19 @@ const FieldInfo field_table[] = {
     {"stress_3", "stress", false, principal_3, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "principal stress 3")},
 };
 
+/// The points of cell c in order around its boundary: a six-node triangle (VTK's quadratic
+/// triangle: corners, then the midside nodes of edges 01, 12, 20) as the hexagon c0 m01 c1 m12 c2
+/// m20, which has the straight edges of the element; other cells as stored.
+void boundary_points(vtkUnstructuredGrid* grid, vtkIdType c, vtkIdList* ids)
+{
+    grid->GetCellPoints(c, ids);
+    if (ids->GetNumberOfIds() != 6) return;
+    vtkIdType p[6];
+    for (int k = 0; k < 6; ++k) p[k] = ids->GetId(k);
+    const int order[6] = {0, 3, 1, 4, 2, 5};
+    for (int k = 0; k < 6; ++k) ids->SetId(k, p[order[k]]);
+}
+
 vtkDataArray* find_array(vtkUnstructuredGrid* grid, const FieldInfo& f)
 {
     vtkDataArray* a = f.point_data ? grid->GetPointData()->GetArray(f.array) : grid->GetCellData()->GetArray(f.array);
@@ -261,11 +274,14 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     vtkNew<vtkCellArray> polys;
     vtkNew<vtkIdList> ids;
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-        grid->GetCellPoints(c, ids);
+        boundary_points(grid, c, ids);
         polys->InsertNextCell(ids);
-        if (probe && ids->GetNumberOfIds() == 3)
-            shown.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
-                                        static_cast<int>(ids->GetId(2))});
+        // The probe interpolates on the corners (the first, third and fifth point of a six-node
+        // cell's boundary): exact for cell data, linear for point data.
+        const int stride = ids->GetNumberOfIds() == 6 ? 2 : 1;
+        if (probe && (ids->GetNumberOfIds() == 3 || ids->GetNumberOfIds() == 6))
+            shown.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(stride)),
+                                        static_cast<int>(ids->GetId(2 * stride))});
     }
     vtkNew<vtkPolyData> fill;
     fill->SetPoints(points);
@@ -342,7 +358,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     vtkDataArray* block = grid->GetCellData()->GetArray("block");
     std::map<std::pair<vtkIdType, vtkIdType>, std::pair<int, double>> edges;  // edge -> (uses, block)
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-        grid->GetCellPoints(c, ids);
+        boundary_points(grid, c, ids);
         const vtkIdType n = ids->GetNumberOfIds();
         const double b = block != nullptr ? block->GetComponent(c, 0) : 0.0;
         for (vtkIdType k = 0; k < n; ++k) {

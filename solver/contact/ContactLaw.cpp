@@ -20,12 +20,18 @@ ContactKinematics contact_kinematics(const Contact& c, const std::vector<Point2>
     // dn = ((P − A) × (B − A)) / l with l held constant over the step (Shi).
     k.normal << dy / l, -dx / l, (p.y - b.y) / l, (b.x - p.x) / l, (a.y - p.y) / l, (p.x - a.x) / l;
     k.shear << tx, ty, -(1.0 - k.xi) * tx, -(1.0 - k.xi) * ty, -k.xi * tx, -k.xi * ty;
-    double length = 0.0;
+    double length = 0.0, equal = 0.0;
     for (int edge : {topology.edge_into[c.node], topology.edge_out_of[c.node]})
         if (edge >= 0) {
             const BoundaryEdge& n = topology.edges[edge];
-            length += 0.5 * std::hypot(nodes[n.to].x - nodes[n.from].x, nodes[n.to].y - nodes[n.from].y);
+            const double h = std::hypot(nodes[n.to].x - nodes[n.from].x, nodes[n.to].y - nodes[n.from].y);
+            equal += 0.5 * h;
+            // A half-edge of a six-node edge gives h/3 to its corner end and 2h/3 to its midside
+            // end; an edge of a three-node mesh h/2 to each.
+            const int other = n.from == c.node ? n.to : n.from;
+            length += topology.midside_node[c.node] ? 2.0 * h / 3.0 : topology.midside_node[other] ? h / 3.0 : 0.5 * h;
         }
+    k.share = equal > 0.0 ? length / equal : 1.0;
     // Two blocks meeting along a joint contact each other twice (the vertices of each against the
     // edges of the other), so each contact stands for half its vertex's share of the joint:
     // cohesion and tensile strength are then counted once over the joint's length.
@@ -43,6 +49,8 @@ ContactProperties contact_properties(const Contact& c, const ContactKinematics& 
     p.normal_stiffness = jm && jm->normal_stiffness > 0.0 ? jm->normal_stiffness : penalty;
     // Without a given value, ks follows kn as an elastic interface with ν ≈ 0.25 would: kn/2.5.
     p.shear_stiffness = jm && jm->shear_stiffness > 0.0 ? jm->shear_stiffness : p.normal_stiffness / 2.5;
+    p.normal_stiffness *= k.share;
+    p.shear_stiffness *= k.share;
     if (jm) {
         p.tan_friction = std::tan(jm->friction_angle);
         if (c.intact) {
@@ -87,7 +95,8 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
         c.normal_force = -p.normal_stiffness * c.gap;
         const double limit = c.normal_force * p.tan_friction + p.cohesion_force;
         c.shear_force = p.shear_stiffness * slip_increment;
-        if (std::fabs(c.shear_force) > limit) {
+        // A contact without any shear strength (smooth: no friction, no cohesion) cannot stick.
+        if (std::fabs(c.shear_force) > limit || limit <= 0.0) {
             c.state = ContactState::Sliding;
             c.slip = slip_increment > 0.0 ? 1 : -1;
             c.shear_force = c.slip * limit;
@@ -114,6 +123,10 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
     }
     c.shear_force = c.slip * limit;
     if (slip_increment * c.slip >= 0.0) return StateChange::None;
+    if (limit <= 0.0) {  // smooth: the direction of slip carries no force, nothing to stick
+        c.slip = -c.slip;
+        return StateChange::None;
+    }
     // The slip reversed: the contact sticks.
     c.state = ContactState::Locked;
     c.shear_spring = 0.0;

@@ -31,7 +31,12 @@ struct ContactKinematics {
     int nodes[3] = {-1, -1, -1};
     double gap = 0.0;   ///< dn at the start of the step (m)
     double xi = 0.0;    ///< projection of the vertex on the edge, clamped to [0, 1]
-    double length = 0.0;///< joint length the contact stands for: a quarter of the vertex's two boundary edges (m)
+    double length = 0.0;///< joint length the contact stands for: half the vertex's share of its two boundary edges (m)
+    /// The vertex's share of its boundary edges relative to an equal split: 1 on three-node
+    /// meshes; on six-node meshes 2/3 at a corner and 4/3 at a midside node (the weights
+    /// 1/6, 2/3, 1/6 of a quadratic edge). Springs scale with it, so a joint under uniform
+    /// pressure loads the elements as that pressure would.
+    double share = 1.0;
     Vector6 normal;     ///< dn(d) = gap + normal·d
     Vector6 shear;      ///< relative tangential displacement = shear·d
 };

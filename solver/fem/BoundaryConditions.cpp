@@ -69,14 +69,14 @@ BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& me
     return bc;
 }
 
-double load_factor(const Model& model, int table, int step, double time) {
+double load_factor(const Model& model, int table, double step, double time) {
     if (table < 0) return 1.0;
     const LoadTable& t = model.load_tables[table];
-    return t.factor(t.variable == LoadTable::Variable::Step ? static_cast<double>(step) : time);
+    return t.factor(t.variable == LoadTable::Variable::Step ? step : time);
 }
 
 Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std::vector<Point2>& nodes,
-                                const MeshTopology& topology, const BoundaryConditions& bc, int step, double time) {
+                                const MeshTopology& topology, const BoundaryConditions& bc, double step, double time) {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(nodes.size()));
     for (const auto& l : bc.point_loads) {
         const PointLoad& load = model.point_loads[l.load];
@@ -89,11 +89,15 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
         const BoundaryEdge& e = topology.edges[p.edge];
         const double pressure = load.pressure * load_factor(model, load.table, step, time);
         // The block lies left of the edge: its outward normal times the length is (dy, −dx);
-        // a pressure pushes against it, half to each node.
+        // a pressure pushes against it. A six-node edge is two boundary halves, each giving a
+        // third to its corner and two thirds to its midside node (1/6, 4/6, 1/6 of the edge).
         const double dx = nodes[e.to].x - nodes[e.from].x, dy = nodes[e.to].y - nodes[e.from].y;
         for (int node : {e.from, e.to}) {
-            f[2 * node] -= 0.5 * pressure * dy;
-            f[2 * node + 1] += 0.5 * pressure * dx;
+            const bool half = topology.midside_node.size() > 0 &&
+                              (topology.midside_node[e.from] || topology.midside_node[e.to]);
+            const double share = !half ? 0.5 : topology.midside_node[node] ? 2.0 / 3.0 : 1.0 / 3.0;
+            f[2 * node] -= share * pressure * dy;
+            f[2 * node + 1] += share * pressure * dx;
         }
     }
     if (model.gravity.x != 0.0 || model.gravity.y != 0.0) {
@@ -102,7 +106,7 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
             const Point2 &a = nodes[tri[0]], &b = nodes[tri[1]], &c = nodes[tri[2]];
             const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
             const double mass = model.materials[mesh.triangle_material[t]].density * area / 3.0;
-            for (int node : tri) {
+            for (int node : mesh.quadratic() ? mesh.midside[t] : tri) {
                 f[2 * node] += mass * model.gravity.x;
                 f[2 * node + 1] += mass * model.gravity.y;
             }

@@ -39,12 +39,16 @@ struct BoundaryConditions {
 BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& mesh, const MeshTopology& topology,
                                               std::vector<Diagnostic>& diagnostics);
 
-/// Factor of load table `table` (−1: constant 1) at the given step and time.
-double load_factor(const Model& model, int table, int step, double time);
+/// Factor of load table `table` (−1: constant 1) at the given step and time. The step may be
+/// fractional: static analyses apply a step's load in smaller increments when it does not
+/// converge at once.
+double load_factor(const Model& model, int table, double step, double time);
 
 /// External nodal forces (N/m) at `step`/`time` on the current coordinates `nodes`: point loads,
-/// edge pressures (normal to the current edge, pushing into the material) and gravity ρ·g·A/3.
+/// edge pressures (normal to the current edge, pushing into the material) and gravity, each
+/// distributed consistently with the element (three-node: ½ per edge node, A/3 per corner;
+/// six-node: 1/6, 4/6, 1/6 along an edge, A/3 per midside node and none at the corners).
 Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std::vector<Point2>& nodes,
-                                const MeshTopology& topology, const BoundaryConditions& bc, int step, double time);
+                                const MeshTopology& topology, const BoundaryConditions& bc, double step, double time);
 
 }  // namespace mcdda

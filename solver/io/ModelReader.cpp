@@ -550,8 +550,13 @@ void parse_mesh(Parser& p, const json& root, Model& m) {
     const json& o = root.at("mesh");
     const std::string path = "/mesh";
     if (!p.is_object(o, path)) return;
-    p.check_keys(o, path, {"size", "min_angle", "grading", "local", "max_elements"});
+    p.check_keys(o, path, {"element", "size", "min_angle", "grading", "local", "max_elements"});
     MeshControls& c = m.mesh;
+    const std::string element = p.string(o, path, "element", std::string("auto"));
+    if (element == "auto") c.element = ElementType::Automatic;
+    else if (element == "t3") c.element = ElementType::T3;
+    else if (element == "t6") c.element = ElementType::T6;
+    else p.error(path + "/element", "must be \"auto\", \"t3\" or \"t6\", got \"" + element + "\"");
     c.size = p.number(o, path, "size", 0.0);
     c.min_angle = p.angle(o, path, "min_angle", 25.0);
     c.grading = p.number(o, path, "grading", c.grading);
@@ -582,8 +587,8 @@ void parse_analysis(Parser& p, const json& root, Model& m) {
     const std::string path = "/analysis";
     if (!p.is_object(o, path)) return;
     p.check_keys(o, path, {"type", "steps", "time_step", "max_displacement_ratio", "penalty", "dynamic_ratio",
-                           "open_close_iterations", "plastic_iterations", "plastic_tolerance", "output_every",
-                           "plasticity"});
+                           "open_close_iterations", "plastic_iterations", "plastic_tolerance", "min_load_fraction",
+                           "geometry", "output_every", "plasticity"});
     AnalysisSettings& a = m.analysis;
     const std::string type = p.string(o, path, "type", std::string("static"));
     if (type == "static") a.kind = AnalysisSettings::Kind::Static;
@@ -597,6 +602,11 @@ void parse_analysis(Parser& p, const json& root, Model& m) {
     a.max_open_close_iterations = static_cast<int>(p.integer(o, path, "open_close_iterations", a.max_open_close_iterations));
     a.max_plastic_iterations = static_cast<int>(p.integer(o, path, "plastic_iterations", a.max_plastic_iterations));
     a.plastic_tolerance = p.number(o, path, "plastic_tolerance", a.plastic_tolerance);
+    a.min_load_fraction = p.number(o, path, "min_load_fraction", a.min_load_fraction);
+    const std::string geometry = p.string(o, path, "geometry", std::string("updated"));
+    if (geometry == "updated") a.geometry = AnalysisSettings::Geometry::Updated;
+    else if (geometry == "initial") a.geometry = AnalysisSettings::Geometry::Initial;
+    else p.error(path + "/geometry", "must be \"updated\" or \"initial\", got \"" + geometry + "\"");
     a.output_every = static_cast<int>(p.integer(o, path, "output_every", a.output_every));
     a.plasticity = p.boolean(o, path, "plasticity", a.plasticity);
 }

@@ -223,6 +223,7 @@ json to_json(const Model& m) {
     {
         const MeshControls& c = m.mesh;
         json o;
+        o["element"] = c.element == ElementType::T3 ? "t3" : c.element == ElementType::T6 ? "t6" : "auto";
         o["size"] = c.size;
         o["min_angle"] = to_degrees(c.min_angle);
         o["grading"] = c.grading;
@@ -258,6 +259,8 @@ json to_json(const Model& m) {
         o["open_close_iterations"] = a.max_open_close_iterations;
         o["plastic_iterations"] = a.max_plastic_iterations;
         o["plastic_tolerance"] = a.plastic_tolerance;
+        o["min_load_fraction"] = a.min_load_fraction;
+        o["geometry"] = a.geometry == AnalysisSettings::Geometry::Initial ? "initial" : "updated";
         o["output_every"] = a.output_every;
         o["plasticity"] = a.plasticity;
         root["analysis"] = std::move(o);

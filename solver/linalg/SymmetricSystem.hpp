@@ -20,11 +20,12 @@ struct SingularSystem : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// A set of equations coupled densely (an element's or a contact's degrees of freedom);
-/// entries are equation numbers, −1 for a fixed degree of freedom.
+/// A set of equations coupled densely (an element's or a contact's degrees of freedom, at most
+/// six nodes); entries are equation numbers, −1 for a fixed degree of freedom.
 struct CouplingGroup {
+    static constexpr int capacity = 12;
     int size = 0;
-    int equation[6] = {-1, -1, -1, -1, -1, -1};
+    int equation[capacity] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
 };
 
 class SymmetricSystem {

@@ -37,4 +37,11 @@ std::array<double, 4> Model::bounds() const {
     return box;
 }
 
+ElementType Model::element() const {
+    if (mesh.element != ElementType::Automatic) return mesh.element;
+    const bool may_yield = analysis.plasticity && std::any_of(materials.begin(), materials.end(),
+                                                              [](const Material& m) { return m.plastic; });
+    return may_yield ? ElementType::T6 : ElementType::T3;
+}
+
 }  // namespace mcdda

@@ -151,7 +151,15 @@ struct LocalSize {
     double radius = 0.0;  ///< distance within which `size` applies (m)
 };
 
+/// Finite element of the block interiors.
+enum class ElementType {
+    Automatic,  ///< six-node where any material may yield, three-node otherwise
+    T3,         ///< three-node constant-strain triangle
+    T6,         ///< six-node linear-strain triangle (straight edges)
+};
+
 struct MeshControls {
+    ElementType element = ElementType::Automatic;
     double size = 0.0;              ///< global target edge length (m); 0 = 1/20 of the model
     double min_angle = 25.0 * 3.14159265358979323846 / 180.0;  ///< (rad)
     double grading = 0.3;           ///< growth of the size with distance beyond a local radius
@@ -168,8 +176,17 @@ struct AnalysisSettings {
     double penalty = 0.0;                 ///< contact spring (N/m); 0 = automatic (from E)
     double dynamic_ratio = 1.0;           ///< velocity carried into the next step (dynamic)
     int max_open_close_iterations = 10;
-    int max_plastic_iterations = 200;
-    double plastic_tolerance = 1e-4;      ///< relative unbalanced force
+    int max_plastic_iterations = 200;     ///< equilibrium iterations of one load increment
+    double plastic_tolerance = 1e-4;      ///< out-of-balance force relative to the force scale
+    /// Static analysis: a load increment that does not converge is halved down to this fraction
+    /// of one step; failing there is a collapse between the last load carried and this one.
+    double min_load_fraction = 1.0 / 64.0;
+    /// Updated: element strains and loads on the shape at the start of each step (DDA, large
+    /// displacements and rotations). Initial: on the undeformed shape, the geometrically linear
+    /// (small-strain) theory of the closed-form plasticity solutions. Contacts always follow the
+    /// deformed shape.
+    enum class Geometry { Updated, Initial };
+    Geometry geometry = Geometry::Updated;
     int output_every = 10;                ///< save every n-th step (the last always saved)
     bool plasticity = true;               ///< false: every material stays elastic
 };
@@ -197,6 +214,10 @@ struct Model {
 
     /// Axis-aligned box of all region boundaries: xmin, ymin, xmax, ymax.
     std::array<double, 4> bounds() const;
+
+    /// The element the analysis uses: `mesh.element`, with Automatic resolved to T6 when
+    /// plasticity is on and some material may yield (T3 locks under plastic flow), T3 otherwise.
+    ElementType element() const;
 };
 
 }  // namespace mcdda

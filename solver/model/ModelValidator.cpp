@@ -202,6 +202,8 @@ void check_controls(Checker& c, const Model& m) {
     if (a.max_open_close_iterations < 1) c.error("/analysis/open_close_iterations", "must be at least 1");
     if (a.max_plastic_iterations < 1) c.error("/analysis/plastic_iterations", "must be at least 1");
     if (!(a.plastic_tolerance > 0.0)) c.error("/analysis/plastic_tolerance", "must be positive");
+    if (!(a.min_load_fraction > 0.0 && a.min_load_fraction <= 1.0))
+        c.error("/analysis/min_load_fraction", "must lie in (0, 1]");
     if (a.output_every < 1) c.error("/analysis/output_every", "must be at least 1");
 }
 

@@ -25,13 +25,21 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         try {
             report = simulation.advance();
         } catch (const PlasticCollapse& e) {
-            // The state is still the last converged step: its loads are the collapse load bracket.
-            std::string reached;
-            for (const auto& [name, value] : simulation.load_magnitudes())
-                reached += (reached.empty() ? "" : ", ") + name + " = " + std::to_string(value);
-            end = {RunStatus::Collapsed, "collapse at step " + std::to_string(simulation.state().step + 1) + ": " +
-                                             e.what() +
-                                             (reached.empty() ? std::string() : "; last converged load: " + reached)};
+            // The state is the last one carried; the collapse load lies between its loads and
+            // those of the smallest increment beyond it that could not be carried.
+            auto loads = [&](double position) {
+                std::string text;
+                for (const auto& [name, value] : simulation.load_magnitudes_at(position))
+                    text += (text.empty() ? "" : ", ") + name + " = " + std::to_string(value);
+                return text;
+            };
+            const std::string carried = loads(e.carried), not_carried = loads(e.not_carried);
+            end = {RunStatus::Collapsed,
+                   "collapse: " + std::string(e.what()) +
+                       (carried.empty() ? std::string()
+                                        : "; collapse load between " + carried + " (carried) and " + not_carried +
+                                              " (not carried)")};
+            if (output && simulation.state().step_fraction > 0.0) output->record_history(simulation);
             break;
         } catch (const std::exception& e) {
             end = {RunStatus::Failed,

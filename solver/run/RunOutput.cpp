@@ -91,7 +91,7 @@ void RunOutput::record_history(const Simulation& sim) {
         row << "\n";
         header_written_ = true;
     }
-    row << s.step << "," << s.time;
+    row << s.step + s.step_fraction << "," << s.time;
     for (const auto& [name, value] : loads) row << "," << value;
     for (int node : sim.boundary_conditions().measurement_nodes)
         row << "," << s.displacement[2 * node] << "," << s.displacement[2 * node + 1];
@@ -113,6 +113,22 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
                        {"contact", t.contact},   {"plasticity", t.plasticity},       {"total", t.total}};
         j["factorizations"] = t.factorizations;
         j["symbolic_analyses"] = t.symbolic_analyses;
+        const int steps = sim->state().step;
+        j["iterations"] = {{"total", t.iterations},
+                           {"per_step", steps > 0 ? static_cast<double>(t.iterations) / steps : 0.0},
+                           {"max_per_step", t.max_iterations},
+                           {"load_cuts", t.load_cuts}};
+        if (sim->collapse()) {
+            // The collapse load lies between the last load carried and the first not carried.
+            auto loads_at = [&](double position) {
+                nlohmann::json loads = nlohmann::json::object();
+                for (const auto& [name, value] : sim->load_magnitudes_at(position)) loads[name] = value;
+                return nlohmann::json{{"step", position}, {"loads", loads}};
+            };
+            j["collapse"] = {{"carried", loads_at(sim->collapse()->carried)},
+                             {"not_carried", loads_at(sim->collapse()->not_carried)}};
+        }
+        j["element"] = sim->mesh().quadratic() ? "t6" : "t3";
         j["model"] = {{"name", sim->model().name}, {"nodes", sim->mesh().nodes.size()},
                       {"elements", sim->mesh().triangles.size()}, {"blocks", sim->mesh().block_count()}};
     }

@@ -3,6 +3,7 @@
 #include "contact/ContactDetection.hpp"
 #include "contact/ContactLaw.hpp"
 #include "fem/PlaneStrain.hpp"
+#include "linalg/AndersonMixing.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -44,31 +45,56 @@ NewmarkParameters newmark_for(int step) {
 
 }  // namespace
 
-void initial_stresses(const Model& model, const Mesh& mesh, std::vector<Eigen::Vector3d>& stress,
-                      std::vector<double>& stress_zz) {
-    const std::size_t n = mesh.triangles.size();
-    stress.assign(n, Eigen::Vector3d::Zero());
-    stress_zz.assign(n, 0.0);
+void initial_stresses(const Model& model, const Mesh& mesh, const ElementAssembly& elements, PointStates& points) {
+    const int per_element = elements.points_per_element();
+    const std::size_t n = mesh.triangles.size() * per_element;
+    points.resize(n);
     const InitialStress& s = model.initial_stress;
     const double g = std::hypot(model.gravity.x, model.gravity.y);
-    for (std::size_t e = 0; e < n; ++e) {
+    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
         const Material& m = model.materials[mesh.triangle_material[e]];
-        Eigen::Vector3d sigma = Eigen::Vector3d::Zero();
-        if (s.kind == InitialStress::Kind::Uniform) {
-            sigma = Eigen::Vector3d(s.stress[0], s.stress[1], s.stress[2]);
-        } else if (s.kind == InitialStress::Kind::Gravity) {
-            const auto& t = mesh.triangles[e];
-            const double y = (mesh.nodes[t[0]].y + mesh.nodes[t[1]].y + mesh.nodes[t[2]].y) / 3.0;
-            const double vertical = m.density * g * std::max(0.0, s.surface_y - y);  // compressive magnitude
-            sigma = Eigen::Vector3d(-s.k0 * vertical, -vertical, 0.0);
+        for (int q = 0; q < per_element; ++q) {
+            const std::size_t p = e * per_element + q;
+            Eigen::Vector3d sigma = Eigen::Vector3d::Zero();
+            if (s.kind == InitialStress::Kind::Uniform) {
+                sigma = Eigen::Vector3d(s.stress[0], s.stress[1], s.stress[2]);
+            } else if (s.kind == InitialStress::Kind::Gravity) {
+                // At the integration point: a six-node element carries the linear gravity field exactly.
+                const double y = elements.point_position(mesh.nodes, static_cast<int>(e), q).y;
+                const double vertical = m.density * g * std::max(0.0, s.surface_y - y);  // compressive magnitude
+                sigma = Eigen::Vector3d(-s.k0 * vertical, -vertical, 0.0);
+            }
+            points.stress[p] = sigma;
+            // Plane strain: unless given, the out-of-plane stress that an elastic loading from
+            // zero in plane strain would give (εzz = 0).
+            points.stress_zz[p] = s.kind == InitialStress::Kind::Uniform && s.stress_zz
+                                      ? *s.stress_zz
+                                      : m.poisson_ratio * (sigma[0] + sigma[1]);
         }
-        stress[e] = sigma;
-        // Plane strain: unless given, the out-of-plane stress that an elastic loading from zero
-        // in plane strain would give (εzz = 0).
-        stress_zz[e] = s.kind == InitialStress::Kind::Uniform && s.stress_zz ? *s.stress_zz
-                                                                              : m.poisson_ratio * (sigma[0] + sigma[1]);
     }
 }
+
+namespace {
+
+/// Element values for output: the mean of the element's points, the highest plastic state.
+void element_averages(const PointStates& points, int per_element, SimulationState& state) {
+    const std::size_t elements = points.stress.size() / per_element;
+    state.stress.assign(elements, Eigen::Vector3d::Zero());
+    state.stress_zz.assign(elements, 0.0);
+    state.plastic_strain.assign(elements, 0.0);
+    state.plastic_state.assign(elements, 0);
+    for (std::size_t e = 0; e < elements; ++e) {
+        for (int q = 0; q < per_element; ++q) {
+            const std::size_t p = e * per_element + q;
+            state.stress[e] += points.stress[p] / per_element;
+            state.stress_zz[e] += points.stress_zz[p] / per_element;
+            state.plastic_strain[e] += points.plastic_strain[p] / per_element;
+            state.plastic_state[e] = std::max(state.plastic_state[e], points.plastic_state[p]);
+        }
+    }
+}
+
+}  // namespace
 
 Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
     if (mesh_.triangles.empty()) throw std::runtime_error("the model has no mesh");
@@ -83,11 +109,10 @@ Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
     }
     double stiffest = 0.0;
     for (const Material& m : model_.materials) {
-        elasticity_.push_back(plane_strain_elasticity(m.young_modulus, m.poisson_ratio));
-        yield_criteria_.emplace_back(m);
-        plastic_material_.push_back(model_.analysis.plasticity && m.plastic);
+        may_yield_ = may_yield_ || (model_.analysis.plasticity && m.plastic);
         stiffest = std::max(stiffest, m.young_modulus);
     }
+    elements_ = ElementAssembly(model_, mesh_);
     // Automatic penalty: four times the stiffest Young's modulus (N/m per m thickness). The
     // sliding and resting-block benchmarks are right from 1× to 10×; stiffer springs make the
     // contact iteration unstable (docs/penalty-and-time-step.md).
@@ -102,24 +127,35 @@ Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
     state_.velocity = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
     state_.acceleration = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(n));
     state_.time_step = model_.analysis.time_step;
-    initial_stresses(model_, mesh_, state_.stress, state_.stress_zz);
-    state_.plastic_strain.assign(mesh_.triangles.size(), 0.0);
-    state_.plastic_state.assign(mesh_.triangles.size(), 0);
+    initial_stresses(model_, mesh_, elements_, state_.points);
+    element_averages(state_.points, elements_.points_per_element(), state_);
+}
+
+std::vector<std::pair<std::string, double>> Simulation::load_magnitudes_at(double position) const {
+    const double time = state_.time + (position - state_.step - state_.step_fraction) * model_.analysis.time_step;
+    std::vector<std::pair<std::string, double>> out;
+    for (const PointLoad& l : model_.point_loads)
+        out.emplace_back(l.name, std::hypot(l.force.x, l.force.y) * load_factor(model_, l.table, position, time));
+    for (const EdgePressure& l : model_.edge_pressures)
+        out.emplace_back(l.name, l.pressure * load_factor(model_, l.table, position, time));
+    return out;
 }
 
 std::vector<std::pair<std::string, double>> Simulation::load_magnitudes() const {
-    std::vector<std::pair<std::string, double>> out;
-    for (const PointLoad& l : model_.point_loads)
-        out.emplace_back(l.name, std::hypot(l.force.x, l.force.y) * load_factor(model_, l.table, state_.step, state_.time));
-    for (const EdgePressure& l : model_.edge_pressures)
-        out.emplace_back(l.name, l.pressure * load_factor(model_, l.table, state_.step, state_.time));
-    return out;
+    return load_magnitudes_at(state_.step + state_.step_fraction);
 }
 
 CouplingGroup Simulation::coupling(std::initializer_list<int> nodes) const {
     CouplingGroup g;
     for (int node : nodes)
         for (int dir = 0; dir < 2; ++dir) g.equation[g.size++] = bc_.equation[2 * node + dir];
+    return g;
+}
+
+CouplingGroup Simulation::element_coupling(int e) const {
+    CouplingGroup g;
+    for (int a = 0; a < elements_.nodes_per_element(); ++a)
+        for (int dir = 0; dir < 2; ++dir) g.equation[g.size++] = bc_.equation[2 * elements_.node(e, a) + dir];
     return g;
 }
 
@@ -140,7 +176,7 @@ void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts)
     }
     std::vector<CouplingGroup> groups;
     groups.reserve(elements + contacts.size());
-    for (const auto& t : mesh_.triangles) groups.push_back(coupling({t[0], t[1], t[2]}));
+    for (int e = 0; e < elements; ++e) groups.push_back(element_coupling(e));
     groups.insert(groups.end(), contact_groups.begin(), contact_groups.end());
     // Reserve the couplings with the neighbouring edges too, where a sliding vertex goes next.
     std::vector<CouplingGroup> reserve;
@@ -154,72 +190,120 @@ void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts)
     system_.set_pattern(bc_.equation_count, groups, reserve);
 }
 
-Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, double dt, std::vector<Contact>& contacts,
-                                             int& iterations) {
-    const auto start_assembly = Clock::now();
-    plastic_iterations_ = 0;
-    rebuild_pattern_if_needed(contacts);
+namespace {
+
+/// Contact forces f − K·d of the closed contacts at increments d, added to `force`.
+void add_contact_forces(const std::vector<Contact>& contacts, const std::vector<ContactKinematics>& kinematics,
+                        const std::vector<ContactProperties>& properties, const Eigen::VectorXd& d,
+                        Eigen::VectorXd& force) {
+    Matrix6 kc;
+    Vector6 fc, local;
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        if (contacts[i].state == ContactState::Open) continue;
+        contact_terms(contacts[i], kinematics[i], properties[i], kc, fc);
+        for (int a = 0; a < 3; ++a)
+            for (int dir = 0; dir < 2; ++dir) local[2 * a + dir] = d[2 * kinematics[i].nodes[a] + dir];
+        fc.noalias() -= kc * local;
+        for (int a = 0; a < 3; ++a)
+            for (int dir = 0; dir < 2; ++dir) force[2 * kinematics[i].nodes[a] + dir] += fc[2 * a + dir];
+    }
+}
+
+/// Below this contraction of the out-of-balance force per iteration the factor in use is kept
+/// (a back-substitution is much cheaper than a factorisation); above it the tangent is
+/// refactorised. Measured on the Prandtl footing and Salençon tunnel (docs/plasticity.md).
+constexpr double keep_factor_contraction = 0.25;
+/// Equilibrium iterations without halving the out-of-balance force before a try counts as not
+/// converging (see equilibrate).
+constexpr int stall_window = 30;
+/// Corrections Anderson acceleration mixes (see equilibrate).
+constexpr int anderson_depth = 5;
+/// A displacement increment this many times the per-step limit, with material yielding, is a
+/// mechanism (see equilibrate).
+constexpr double mechanism_displacements = 20.0;
+
+}  // namespace
+
+bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, const std::vector<Contact>& contacts,
+                             const std::vector<ContactKinematics>& kinematics,
+                             const std::vector<ContactProperties>& properties, bool& factor_valid, Attempt& attempt) {
     const int elements = static_cast<int>(mesh_.triangles.size());
-    const Eigen::Index dofs = state_.displacement.size();
-
-    // Element part: stiffness, inertia and the out-of-balance force of the accumulated stress.
-    // It does not change during the open–close iterations, so it is assembled once per step.
-    system_.clear_values();
-    Eigen::VectorXd base_force = external;
-    const double beta = newmark_for(state_.step).beta;
-    const double inertia = 1.0 / (beta * dt * dt);
-    const bool carry_velocity = model_.analysis.kind == AnalysisSettings::Kind::Dynamic;
-    shapes_.resize(elements);
-    for (int e = 0; e < elements; ++e) {
-        const auto& t = mesh_.triangles[e];
-        const TriangleShape& s = shapes_[e] = triangle_shape(state_.nodes[t[0]], state_.nodes[t[1]], state_.nodes[t[2]]);
-        const Material& m = model_.materials[mesh_.triangle_material[e]];
-        Matrix6 k = s.area * s.B.transpose() * elasticity_[mesh_.triangle_material[e]] * s.B;
-        const Vector6 internal = s.area * s.B.transpose() * state_.stress[e];
-        const double mass = m.density * s.area;
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                for (int dir = 0; dir < 2; ++dir) k(2 * a + dir, 2 * b + dir) += inertia * mass * consistent_mass_factor(a, b);
-        system_.add(e, k.data());
-        for (int a = 0; a < 3; ++a)
-            for (int dir = 0; dir < 2; ++dir) {
-                double f = -internal[2 * a + dir];
-                if (carry_velocity)
-                    for (int b = 0; b < 3; ++b) {
-                        const int dof = 2 * t[b] + dir;
-                        f += mass * consistent_mass_factor(a, b) *
-                             (state_.velocity[dof] / (beta * dt) + (0.5 - beta) / beta * state_.acceleration[dof]);
-                    }
-                base_force[2 * t[a] + dir] += f;
+    const Eigen::Index dofs = d.size();
+    const double tolerance = model_.analysis.plastic_tolerance;
+    const double load_scale = base.cwiseAbs().maxCoeff();
+    Eigen::VectorXd internal, residual(dofs), rhs(bc_.equation_count);
+    double previous = std::numeric_limits<double>::infinity(), first_norm = 0.0, last_correction = 0.0;
+    AndersonMixing anderson(anderson_depth);
+    double best_norm = std::numeric_limits<double>::infinity(), best_correction = best_norm;
+    int best_at = 0, best_correction_at = 0;
+    bool tangent_usable = may_yield_ && elements_.has_tangent();
+    for (int k = 0;; ++k) {
+        // Refactorise when K is stale: contacts changed, or the last iteration contracted slowly.
+        const bool refactor = !factor_valid;
+        const ElementMatrix matrix =
+            refactor ? (tangent_usable ? ElementMatrix::Tangent : ElementMatrix::Elastic) : ElementMatrix::None;
+        auto t0 = Clock::now();
+        if (refactor) system_.clear_values();
+        const ElementAssembly::Evaluation eval = elements_.evaluate(d, state_.points, returned_, internal, matrix, &system_);
+        timings_.plasticity += seconds_since(t0);
+        attempt.yielding = eval.yielding;
+        t0 = Clock::now();
+        residual = base - internal;
+        add_contact_forces(contacts, kinematics, properties, d, residual);
+        double norm = 0.0;
+        for (Eigen::Index dof = 0; dof < dofs; ++dof)
+            if (bc_.equation[dof] >= 0) {
+                rhs[bc_.equation[dof]] = residual[dof];
+                norm = std::max(norm, std::fabs(residual[dof]));
             }
-    }
-    system_.save_values(element_values_);
-    timings_.assembly += seconds_since(start_assembly);
-
-    const auto start_contact = Clock::now();
-    std::vector<ContactKinematics> kinematics;
-    std::vector<ContactProperties> properties;
-    kinematics.reserve(contacts.size());
-    properties.reserve(contacts.size());
-    for (const Contact& c : contacts) {
-        kinematics.push_back(contact_kinematics(c, state_.nodes, topology_));
-        properties.push_back(contact_properties(c, kinematics.back(), model_, topology_, penalty_));
-    }
-    timings_.contact += seconds_since(start_contact);
-
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(dofs);
-    Eigen::VectorXd rhs(bc_.equation_count);
-    const int max_iterations = model_.analysis.max_open_close_iterations;
-    constexpr int max_friction_rounds = 10;
-    bool factor_valid = false;
-    int friction_rounds = 0;
-    std::vector<int> flips(contacts.size(), 0);
-    iterations = 1;
-    while (iterations <= max_iterations) {
-        // K changes only when a contact changes state: then assemble and factorise again.
-        if (!factor_valid) {
-            const auto t0 = Clock::now();
-            system_.restore_values(element_values_);
+        timings_.assembly += seconds_since(t0);
+        const double scale = std::max({eval.force_scale, load_scale, 1e-30});
+        // Converged: the out-of-balance force is small against the forces in play, and so is the
+        // last correction against the increment (a slow iteration leaves a small force but a
+        // large remaining displacement). The displacement yardstick is not below a hundredth of
+        // the displacement so far: in a step that only re-equilibrates, the increment is
+        // round-off and would never settle.
+        const double yardstick = std::max({d.cwiseAbs().maxCoeff(), 0.01 * state_.displacement.cwiseAbs().maxCoeff(),
+                                           1e-12 * topology_.model_size});
+        if (k > 0 && norm <= tolerance * scale && last_correction <= tolerance * yardstick) return true;
+        // Diverging: non-finite, or growing far beyond the start once the tangent has had a few
+        // corrections (a contact change alone may start from a large out-of-balance force).
+        if (k == 0) first_norm = norm;
+        const bool diverging = !std::isfinite(norm) || (k >= 3 && norm > 1e6 * std::max(first_norm, tolerance * scale));
+        // Stalled: neither the out-of-balance force nor the correction has halved for
+        // stall_window iterations. Converging iterations halve them every few iterations even
+        // through the elastic fallback; at a load beyond the model's capacity they creep for ever.
+        if (norm < 0.5 * best_norm) {
+            best_norm = norm;
+            best_at = k;
+        }
+        if (k > 0 && last_correction < 0.5 * best_correction) {
+            best_correction = last_correction;
+            best_correction_at = k;
+        }
+        // (Once the force is within tolerance only the correction lags: the iteration is settling,
+        // not stalled, and the iteration cap bounds it.)
+        const bool stalled = norm > tolerance * scale && k - std::max(best_at, best_correction_at) >= stall_window;
+        // A mechanism: yielding material and a displacement increment many times the largest a
+        // step may take. The load increment is past what the material can carry.
+        const double largest = d.cwiseAbs().maxCoeff();
+        const bool mechanism = eval.yielding > 0 && largest > mechanism_displacements * displacement_limit_;
+        if (diverging || stalled || mechanism || k >= model_.analysis.max_plastic_iterations) {
+            const std::string where = " (out-of-balance force " + std::to_string(norm / scale) +
+                                      " of the force scale, " + std::to_string(eval.yielding) +
+                                      " integration points yielding)";
+            if (diverging) attempt.why = "the equilibrium iterations diverged";
+            else if (mechanism)
+                attempt.why = "a mechanism formed: the displacement increment reached " + std::to_string(largest) +
+                              " m with material yielding";
+            else if (stalled)
+                attempt.why = "the equilibrium iterations stalled after " + std::to_string(k) + where;
+            else
+                attempt.why = "the equilibrium iterations did not converge within " + std::to_string(k) + where;
+            return false;
+        }
+        if (refactor) {
+            t0 = Clock::now();
             Matrix6 kc;
             Vector6 fc;
             for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -228,52 +312,123 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
                 system_.add(elements + static_cast<int>(i), kc.data());
             }
             timings_.assembly += seconds_since(t0);
-            const auto t1 = Clock::now();
-            system_.factorize();
-            timings_.factorization += seconds_since(t1);
+            t0 = Clock::now();
+            try {
+                system_.factorize();
+            } catch (const SingularSystem&) {
+                timings_.factorization += seconds_since(t0);
+                if (matrix != ElementMatrix::Tangent) throw;
+                // A tangent that is not positive definite (a mechanism forming): go on with the
+                // elastic matrix.
+                tangent_usable = false;
+                factor_valid = false;
+                --k;
+                continue;
+            }
+            timings_.factorization += seconds_since(t0);
             factor_valid = true;
         }
+        Eigen::VectorXd delta = solve_reduced(rhs);
+        ++attempt.iterations;
+        // With the elastic matrix (non-associated flow, or a tangent that is not positive
+        // definite) the iteration is a fixed point d ← d + K⁻¹R(d) that contracts slowly once
+        // much of the model yields: Anderson acceleration (Walker & Ni 2011) mixes the last
+        // corrections; it costs a small least-squares problem per iteration. Once the force is
+        // within tolerance only the displacement is settling: plain corrections then (mixed ones
+        // wander along directions the force hardly sees, such as a loosened block).
+        if (!tangent_usable && eval.yielding > 0 && norm > tolerance * scale) delta = anderson.next(d, delta);
+        else anderson.reset();
+        // Backtracking on the out-of-balance force: a full Newton correction through a softening
+        // (perfectly plastic) tangent overshoots and can spread yield over the whole model.
+        double step = 1.0;
+        // Not with the elastic matrix (the initial-stress iteration): its full steps converge
+        // while the largest nodal force may rise on the way.
+        if (tangent_usable && (eval.yielding > 0 || matrix == ElementMatrix::Tangent)) {
+            for (int cut = 0; cut < 6; ++cut) {
+                const Eigen::VectorXd trial = d + step * delta;
+                t0 = Clock::now();
+                elements_.evaluate(trial, state_.points, returned_, internal, ElementMatrix::None, nullptr);
+                timings_.plasticity += seconds_since(t0);
+                Eigen::VectorXd r = base - internal;
+                add_contact_forces(contacts, kinematics, properties, trial, r);
+                double trial_norm = 0.0;
+                for (Eigen::Index dof = 0; dof < dofs; ++dof)
+                    if (bc_.equation[dof] >= 0) trial_norm = std::max(trial_norm, std::fabs(r[dof]));
+                if (trial_norm <= norm || trial_norm <= tolerance * scale) break;
+                step *= 0.5;
+            }
+        }
+        d += step * delta;
+        last_correction = step * delta.cwiseAbs().maxCoeff();
+        // The factor is kept while it contracts the out-of-balance force well enough.
+        if (k > 0 && tangent_usable && norm > keep_factor_contraction * previous) factor_valid = false;
+        previous = norm;
+    }
+}
+
+Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external, const Eigen::VectorXd* start_external,
+                                                 double lambda, double dt, std::vector<Contact>& contacts) {
+    Attempt attempt;
+    const auto start_assembly = Clock::now();
+    rebuild_pattern_if_needed(contacts);
+    const Eigen::Index dofs = state_.displacement.size();
+    const double beta = newmark_for(state_.step).beta;
+    // Shi's static DDA keeps the mass term M/(βΔt²) (velocities reset every step): it holds
+    // blocks that only contacts restrain while they settle. A small-strain static analysis is a
+    // pure equilibrium problem: no load may be carried by inertia there.
+    const bool equilibrium_only = model_.analysis.kind == AnalysisSettings::Kind::Static &&
+                                  model_.analysis.geometry == AnalysisSettings::Geometry::Initial;
+    elements_.prepare(element_nodes(), equilibrium_only ? 0.0 : 1.0 / (beta * dt * dt));
+    Eigen::VectorXd base = external;
+    if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic)
+        elements_.add_inertia_load(state_.velocity, state_.acceleration, beta, dt, base);
+    timings_.assembly += seconds_since(start_assembly);
+
+    const auto start_contact = Clock::now();
+    std::vector<ContactKinematics> kinematics;
+    std::vector<ContactProperties> properties;
+    kinematics.reserve(contacts.size());
+    properties.reserve(contacts.size());
+    for (const Contact& c : contacts) {
+        kinematics.push_back(kinematics_of(c));
+        properties.push_back(contact_properties(c, kinematics.back(), model_, topology_, penalty_));
+    }
+    timings_.contact += seconds_since(start_contact);
+
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(dofs);
+    if (start_external && lambda < 1.0) {
+        // Only the share λ of the out-of-balance force at the start of the increment is applied
+        // (an excavation's release, the rest of an unconverged step): the remainder stays as a
+        // load that the next increment removes.
+        Eigen::VectorXd internal;
         const auto t0 = Clock::now();
-        Eigen::VectorXd force = base_force;
-        Matrix6 kc;
-        Vector6 fc;
-        for (std::size_t i = 0; i < contacts.size(); ++i) {
-            if (contacts[i].state == ContactState::Open) continue;
-            contact_terms(contacts[i], kinematics[i], properties[i], kc, fc);
-            for (int a = 0; a < 3; ++a)
-                for (int dir = 0; dir < 2; ++dir) force[2 * kinematics[i].nodes[a] + dir] += fc[2 * a + dir];
-        }
-        for (Eigen::Index dof = 0; dof < dofs; ++dof)
-            if (bc_.equation[dof] >= 0) rhs[bc_.equation[dof]] = force[dof];
-        timings_.assembly += seconds_since(t0);
+        elements_.evaluate(d, state_.points, returned_, internal, ElementMatrix::None, nullptr);
+        timings_.plasticity += seconds_since(t0);
+        Eigen::VectorXd unbalance = *start_external - internal;
+        add_contact_forces(contacts, kinematics, properties, d, unbalance);
+        base -= (1.0 - lambda) * unbalance;
+    }
 
-        d = solve_reduced(rhs);
-
-        // Plastic loop (initial stress method, Table 1 steps 7–16): the stress the yield surface
-        // cannot carry becomes a body load, re-solved with the same factor until the
-        // increments settle; every iteration costs one back-substitution.
-        Eigen::VectorXd plastic_load = Eigen::VectorXd::Zero(dofs);
-        int yielding = update_stresses(d, &plastic_load);
-        for (int k = 1; yielding > 0; ++k) {
-            if (k > model_.analysis.max_plastic_iterations)
-                throw PlasticCollapse("the plastic iterations did not converge within " +
-                                      std::to_string(model_.analysis.max_plastic_iterations) + " (" +
-                                      std::to_string(yielding) + " elements yielding)");
-            Eigen::VectorXd loaded = rhs;
-            for (Eigen::Index dof = 0; dof < dofs; ++dof)
-                if (bc_.equation[dof] >= 0) loaded[bc_.equation[dof]] += plastic_load[dof];
-            const Eigen::VectorXd next = solve_reduced(loaded);
-            const double change = (next - d).cwiseAbs().maxCoeff();
-            // Relative to the increment, but not below a hundredth of the displacement so far: in
-            // a step that only re-equilibrates, the increment is round-off and would never settle.
-            const double size = std::max({next.cwiseAbs().maxCoeff(), 0.01 * state_.displacement.cwiseAbs().maxCoeff(),
-                                          1e-12 * topology_.model_size});
-            d = next;
-            ++plastic_iterations_;
-            plastic_load.setZero();
-            yielding = update_stresses(d, &plastic_load);
-            if (change <= model_.analysis.plastic_tolerance * size) break;
+    const int max_iterations = model_.analysis.max_open_close_iterations;
+    constexpr int max_friction_rounds = 10;
+    bool factor_valid = false;
+    int friction_rounds = 0;
+    std::vector<int> flips(contacts.size(), 0);
+    int& iterations = attempt.open_close_iterations;
+    iterations = 1;
+    while (iterations <= max_iterations) {
+        try {
+            if (!equilibrate(d, base, contacts, kinematics, properties, factor_valid, attempt)) {
+                attempt.outcome = Outcome::NotConverged;
+                attempt.d = d;
+                return attempt;
+            }
+        } catch (const SingularSystem& e) {
+            attempt.outcome = Outcome::Singular;
+            attempt.why = e.what();
+            return attempt;
         }
+        attempt.d = d;
 
         const auto t3 = Clock::now();
         int changes = 0;
@@ -319,18 +474,20 @@ Eigen::VectorXd Simulation::solve_increments(const Eigen::VectorXd& external, do
         if (changes > 0) {
             // At the iteration limit a handful of changes among many contacts is accepted (they
             // take effect next step); more means the step is too large: Δt is cut (Shi).
-            if (iterations == max_iterations && changes <= std::max(2, static_cast<int>(contacts.size() / 500))) return d;
+            if (iterations == max_iterations && changes <= std::max(2, static_cast<int>(contacts.size() / 500)))
+                return attempt;
             factor_valid = false;
             ++iterations;
             continue;
         }
         // Friction of sliding contacts was taken from the normal forces of the previous solve;
-        // repeat with the same factor until they agree (a back-substitution each).
-        if (friction_change <= 1e-3 * friction_used || ++friction_rounds > max_friction_rounds) return d;
+        // repeat until they agree (with the same factor).
+        if (friction_change <= 1e-3 * friction_used || ++friction_rounds > max_friction_rounds) return attempt;
         undo_marginal();
     }
-    iterations = max_iterations + 1;  // not settled
-    return d;
+    attempt.outcome = Outcome::Unsettled;
+    attempt.why = "contacts do not settle";
+    return attempt;
 }
 
 Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs) {
@@ -343,56 +500,32 @@ Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs) {
     return d;
 }
 
-int Simulation::update_stresses(const Eigen::VectorXd& d, Eigen::VectorXd* plastic_load) {
-    const auto start = Clock::now();
-    const int elements = static_cast<int>(mesh_.triangles.size());
-    returned_.resize(elements);
-    int yielding = 0;
-    for (int e = 0; e < elements; ++e) {
-        const auto& t = mesh_.triangles[e];
-        const int material = mesh_.triangle_material[e];
-        const TriangleShape& shape = shapes_[e];
-        Vector6 de;
-        for (int a = 0; a < 3; ++a)
-            for (int dir = 0; dir < 2; ++dir) de[2 * a + dir] = d[2 * t[a] + dir];
-        // Elastic trial on the start-of-step geometry (updated Lagrangian, small increments).
-        const Eigen::Vector3d increment = elasticity_[material] * (shape.B * de);
-        const Eigen::Vector3d& old = state_.stress[e];
-        const PlaneStress trial{old[0] + increment[0], old[1] + increment[1], old[2] + increment[2],
-                                state_.stress_zz[e] + model_.materials[material].poisson_ratio * (increment[0] + increment[1])};
-        ReturnResult& r = returned_[e];
-        if (plastic_material_[material]) {
-            r = yield_criteria_[material].return_map(trial);
-        } else {
-            r = ReturnResult{};
-            r.stress = trial;
-        }
-        if (!r.plastic) continue;
-        ++yielding;
-        if (plastic_load) {
-            const Eigen::Vector3d excess(trial.xx - r.stress.xx, trial.yy - r.stress.yy, trial.xy - r.stress.xy);
-            const Vector6 f = shape.area * shape.B.transpose() * excess;
-            for (int a = 0; a < 3; ++a)
-                for (int dir = 0; dir < 2; ++dir) (*plastic_load)[2 * t[a] + dir] += f[2 * a + dir];
-        }
-    }
-    timings_.plasticity += seconds_since(start);
-    return yielding;
+ContactKinematics Simulation::kinematics_of(const Contact& c) const {
+    if (model_.analysis.geometry == AnalysisSettings::Geometry::Updated)
+        return contact_kinematics(c, state_.nodes, topology_);
+    // Small displacements: the pairing, normal and shear directions of the undeformed shape; the
+    // gap moves with the relative displacement along that normal (linear in the displacements).
+    ContactKinematics k = contact_kinematics(c, mesh_.nodes, topology_);
+    for (int a = 0; a < 3; ++a)
+        for (int dir = 0; dir < 2; ++dir) k.gap += k.normal[2 * a + dir] * state_.displacement[2 * k.nodes[a] + dir];
+    return k;
 }
 
 void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts) {
     // Stresses as returned for the accepted increments.
-    for (std::size_t e = 0; e < mesh_.triangles.size(); ++e) {
-        const ReturnResult& r = returned_[e];
-        state_.stress[e] = Eigen::Vector3d(r.stress.xx, r.stress.yy, r.stress.xy);
-        state_.stress_zz[e] = r.stress.zz;
-        state_.plastic_strain[e] += r.equivalent_plastic_strain;
-        if (r.plastic) state_.plastic_state[e] = 2;
-        else if (state_.plastic_state[e] == 2) state_.plastic_state[e] = 1;
+    PointStates& points = state_.points;
+    for (std::size_t p = 0; p < points.stress.size(); ++p) {
+        const ReturnResult& r = returned_[p];
+        points.stress[p] = Eigen::Vector3d(r.stress.xx, r.stress.yy, r.stress.xy);
+        points.stress_zz[p] = r.stress.zz;
+        points.plastic_strain[p] += r.equivalent_plastic_strain;
+        if (r.plastic) points.plastic_state[p] = 2;
+        else if (points.plastic_state[p] == 2) points.plastic_state[p] = 1;
     }
+    element_averages(points, elements_.points_per_element(), state_);
     state_.contacts = contacts;
     for (Contact& c : state_.contacts) {
-        const ContactKinematics k = contact_kinematics(c, state_.nodes, topology_);
+        const ContactKinematics k = kinematics_of(c);
         Vector6 local;
         for (int a = 0; a < 3; ++a)
             for (int dir = 0; dir < 2; ++dir) local[2 * a + dir] = d[2 * k.nodes[a] + dir];
@@ -403,8 +536,7 @@ void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<C
         state_.nodes[i].y += d[2 * i + 1];
     }
     state_.displacement += d;
-    if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic)
-    {
+    if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic) {
         // Newmark: a1 from the increment, then v1; Shi's scheme is the case β = ½, γ = 1.
         const auto [beta, gamma] = newmark_for(state_.step);
         const Eigen::VectorXd a1 = (d - dt * state_.velocity - dt * dt * (0.5 - beta) * state_.acceleration) /
@@ -412,64 +544,177 @@ void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<C
         state_.velocity = model_.analysis.dynamic_ratio *
                           (state_.velocity + dt * ((1.0 - gamma) * state_.acceleration + gamma * a1));
         state_.acceleration = model_.analysis.dynamic_ratio * a1;
-    }
-    else
-    {
+    } else {
         state_.velocity.setZero();  // static: kinetic damping, velocities reset every step
         state_.acceleration.setZero();
     }
-    state_.step += 1;
-    state_.time += dt;
 }
+
+void Simulation::finish_report(StepReport& report, double largest) {
+    report.step = state_.step;
+    report.time = state_.time;
+    report.max_increment = std::max(report.max_increment, largest);
+    report.yielding = 0;
+    for (unsigned char p : state_.plastic_state) report.yielding += p == 2;
+    report.open = report.sliding = report.locked = 0;
+    for (const Contact& c : state_.contacts) {
+        report.open += c.state == ContactState::Open;
+        report.sliding += c.state == ContactState::Sliding;
+        report.locked += c.state == ContactState::Locked;
+    }
+    timings_.iterations += report.plastic_iterations;
+    timings_.max_iterations = std::max(timings_.max_iterations, report.plastic_iterations);
+    timings_.factorizations = system_.factorizations();
+    timings_.symbolic_analyses = system_.symbolic_analyses();
+}
+
+namespace {
+
+double largest_increment(const Eigen::VectorXd& d) {
+    double largest = 0.0;
+    for (Eigen::Index i = 0; i + 1 < d.size(); i += 2) largest = std::max(largest, std::hypot(d[i], d[i + 1]));
+    return largest;
+}
+
+std::string describe_position(double position) {
+    const int step = static_cast<int>(std::floor(position + 1e-12));
+    const double fraction = position - step;
+    if (fraction < 1e-9) return "step " + std::to_string(step);
+    return "step " + std::to_string(step + 1) + " at " + std::to_string(static_cast<int>(std::round(100 * fraction))) +
+           " % of its load increment";
+}
+
+}  // namespace
 
 StepReport Simulation::advance() {
     const auto start = Clock::now();
+    StepReport report;
+    try {
+        report = model_.analysis.kind == AnalysisSettings::Kind::Static ? advance_static() : advance_dynamic();
+    } catch (const PlasticCollapse& e) {
+        collapse_ = CollapseBracket{e.carried, e.not_carried};
+        timings_.total += seconds_since(start);
+        timings_.factorizations = system_.factorizations();
+        timings_.symbolic_analyses = system_.symbolic_analyses();
+        throw;
+    } catch (...) {
+        timings_.total += seconds_since(start);
+        timings_.factorizations = system_.factorizations();
+        timings_.symbolic_analyses = system_.symbolic_analyses();
+        throw;
+    }
+    timings_.total += seconds_since(start);
+    return report;
+}
+
+StepReport Simulation::advance_static() {
+    StepReport report;
+    report.load_increments = 0;
+    const double largest_step = model_.analysis.time_step;
+    const double floor = model_.analysis.min_load_fraction;
+    double increment = 1.0 - state_.step_fraction;  // of the step's load, this try
+    int cuts = 0;
+    while (true) {
+        const double dt = state_.time_step;
+        const double from = state_.step + state_.step_fraction;
+        const double remaining = 1.0 - state_.step_fraction;
+        increment = std::min(increment, remaining);
+        const double to = from + increment;
+        const auto t0 = Clock::now();
+        std::vector<Contact> contacts = detect_contacts(element_nodes(), mesh_, topology_, 2.5 * displacement_limit_,
+                                                        state_.contacts, Eigen::VectorXd(), contact_tolerance_);
+        timings_.contact += seconds_since(t0);
+        // Loads at the increment's end; the time follows the load position (Δt per whole step).
+        const Eigen::VectorXd external =
+            external_forces(model_, mesh_, element_nodes(), topology_, bc_, to, state_.time + increment * largest_step);
+        const Eigen::VectorXd start_external =
+            external_forces(model_, mesh_, element_nodes(), topology_, bc_, from, state_.time);
+        Attempt attempt = solve_increments(external, &start_external, increment / remaining, dt, contacts);
+        report.plastic_iterations += attempt.iterations;
+        const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
+        const bool too_large = attempt.outcome == Outcome::Converged && largest > displacement_limit_;
+        // A matrix that is singular while the material yields is a mechanism forming: a load
+        // question too (a block without supports and yielding nothing gets a smaller Δt below).
+        const bool plastic_failure = attempt.outcome == Outcome::NotConverged ||
+                                     (attempt.outcome == Outcome::Singular && attempt.yielding > 0) ||
+                                     (too_large && attempt.yielding > 0);
+        if (plastic_failure && !(too_large && increment <= floor)) {
+            // Smaller load increments, never a smaller Δt: inertia must not carry the load.
+            if (increment > floor * (1.0 + 1e-9)) {
+                increment = std::max(floor, 0.5 * increment);
+                ++timings_.load_cuts;
+                continue;
+            }
+            throw PlasticCollapse("the load could not be carried beyond " + describe_position(from) + " (" +
+                                      attempt.why + " for a load increment of " + std::to_string(increment) +
+                                      " of a step)",
+                                  from, to);
+        }
+        if ((attempt.outcome == Outcome::Singular && attempt.yielding == 0) || attempt.outcome == Outcome::Unsettled ||
+            (too_large && attempt.yielding == 0)) {
+            // Contacts that do not settle, a block held by nothing but inertia, or a step too
+            // large for the contact linearisation: a smaller Δt (Shi's static DDA). Plasticity
+            // is not involved here.
+            last_singular_ = attempt.outcome == Outcome::Singular ? attempt.why : std::string();
+            const double factor = too_large ? std::clamp(0.9 * std::sqrt(displacement_limit_ / largest), 0.1, 0.5) : 0.5;
+            state_.time_step = dt * factor;
+            report.time_step_cuts++;
+            if (++cuts > max_time_step_cuts || state_.time_step < 1e-9 * largest_step)
+                throw std::runtime_error("the time step fell below its floor at step " + std::to_string(state_.step + 1) +
+                                         (last_singular_.empty() ? " (contacts do not settle)" : ": " + last_singular_));
+            continue;
+        }
+        commit(attempt.d, dt, contacts);
+        ++report.load_increments;
+        report.open_close_iterations += attempt.open_close_iterations;
+        report.max_increment = std::max(report.max_increment, largest);
+        state_.time += increment * largest_step;
+        state_.step_fraction += increment;
+        if (largest < 0.5 * displacement_limit_ && attempt.open_close_iterations <= 2)
+            state_.time_step = std::min(largest_step, dt * 1.25);
+        if (state_.step_fraction >= 1.0 - 1e-9) {
+            state_.step += 1;
+            state_.step_fraction = 0.0;
+            report.time_step = dt;
+            finish_report(report, largest);
+            return report;
+        }
+        increment = std::min(2.0 * increment, 1.0 - state_.step_fraction);  // grow back after a cut
+    }
+}
+
+StepReport Simulation::advance_dynamic() {
     StepReport report;
     const double largest_step = model_.analysis.time_step;
     for (int cut = 0; cut <= max_time_step_cuts; ++cut) {
         const double dt = state_.time_step;
         const auto t0 = Clock::now();
-        std::vector<Contact> contacts =
-            detect_contacts(state_.nodes, mesh_, topology_, 2.5 * displacement_limit_, state_.contacts,
-                            model_.analysis.kind == AnalysisSettings::Kind::Dynamic ? state_.velocity * dt
-                                                                                     : Eigen::VectorXd(),
-                            contact_tolerance_);
+        std::vector<Contact> contacts = detect_contacts(element_nodes(), mesh_, topology_, 2.5 * displacement_limit_,
+                                                        state_.contacts, state_.velocity * dt, contact_tolerance_);
         timings_.contact += seconds_since(t0);
         const Eigen::VectorXd external =
-            external_forces(model_, mesh_, state_.nodes, topology_, bc_, state_.step + 1, state_.time + dt);
-        int iterations = 0;
-        Eigen::VectorXd d;
-        try {
-            d = solve_increments(external, dt, contacts, iterations);
-        } catch (const PlasticCollapse&) {
+            external_forces(model_, mesh_, element_nodes(), topology_, bc_, state_.step + 1, state_.time + dt);
+        Attempt attempt = solve_increments(external, nullptr, 1.0, dt, contacts);
+        report.plastic_iterations += attempt.iterations;
+        if (attempt.outcome == Outcome::NotConverged) {
             // Between blocks, rock asked to carry too much is often a wrong contact guess at this
-            // Δt (a joint that should open or slide); a smaller Δt adds inertia and lets the
-            // contacts sort themselves out, as for unsettled contacts. Without contacts, or once
-            // Δt is tiny, it is a collapse.
+            // Δt (a joint that should open or slide); a smaller Δt lets the contacts sort
+            // themselves out. Without contacts, or once Δt is tiny, it is a collapse.
             const bool any_contact = std::any_of(contacts.begin(), contacts.end(),
                                                  [](const Contact& c) { return c.state != ContactState::Open; });
-            if (!any_contact || dt < plastic_collapse_time_step * largest_step) throw;
-            d = Eigen::VectorXd::Zero(state_.displacement.size());
-            iterations = 0;  // not settled: Δt is halved below
-        } catch (const SingularSystem& e) {
-            // A block that lost its contacts is free: only inertia holds it, and at this Δt too
-            // little of it. A smaller Δt adds inertia (M/βΔt²); give up only when Δt is tiny.
-            last_singular_ = e.what();
-            d = Eigen::VectorXd::Constant(state_.displacement.size(), std::numeric_limits<double>::infinity());
-            iterations = 0;
+            if (!any_contact || dt < plastic_collapse_time_step * largest_step)
+                throw PlasticCollapse("the load could not be carried at step " + std::to_string(state_.step + 1) +
+                                          " (" + attempt.why + ")",
+                                      state_.step, state_.step + 1);
         }
-        timings_.factorizations = system_.factorizations();
-        timings_.symbolic_analyses = system_.symbolic_analyses();
-        if (!d.allFinite() && last_singular_.empty())
-            throw std::runtime_error("the solution diverged (non-finite displacements)");
-        double largest = 0.0;
-        for (Eigen::Index i = 0; i + 1 < d.size(); i += 2) largest = std::max(largest, std::hypot(d[i], d[i + 1]));
-        const bool settled = iterations > 0 && iterations <= model_.analysis.max_open_close_iterations;
-        if (largest > displacement_limit_ || !settled) {
+        if (attempt.outcome == Outcome::Singular) last_singular_ = attempt.why;
+        const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
+        if (attempt.outcome != Outcome::Converged || largest > displacement_limit_) {
             // Too large a step, or contacts that do not settle: a smaller Δt (Shi).
-            const double factor = !d.allFinite() ? 0.1
-                                  : settled      ? std::clamp(0.9 * std::sqrt(displacement_limit_ / largest), 0.1, 0.5)
-                                                 : 0.5;
+            const double factor = attempt.outcome == Outcome::Singular ? 0.1
+                                  : attempt.outcome == Outcome::Converged
+                                      ? std::clamp(0.9 * std::sqrt(displacement_limit_ / largest), 0.1, 0.5)
+                                      : 0.5;
             state_.time_step = dt * factor;
             report.time_step_cuts++;
             if (state_.time_step < 1e-9 * largest_step)
@@ -479,23 +724,15 @@ StepReport Simulation::advance() {
             last_singular_.clear();
             continue;
         }
-        commit(d, dt, contacts);
-        report.step = state_.step;
-        report.time = state_.time;
+        commit(attempt.d, dt, contacts);
+        state_.step += 1;
+        state_.time += dt;
         report.time_step = dt;
-        report.open_close_iterations = iterations;
-        report.max_increment = largest;
-        report.plastic_iterations = plastic_iterations_;
-        for (unsigned char p : state_.plastic_state) report.yielding += p == 2;
-        for (const Contact& c : state_.contacts) {
-            report.open += c.state == ContactState::Open;
-            report.sliding += c.state == ContactState::Sliding;
-            report.locked += c.state == ContactState::Locked;
-        }
+        report.open_close_iterations = attempt.open_close_iterations;
+        finish_report(report, largest);
         // Grow Δt back towards its set value while steps are comfortably small.
-        if (largest < 0.5 * displacement_limit_ && iterations <= 2)
+        if (largest < 0.5 * displacement_limit_ && attempt.open_close_iterations <= 2)
             state_.time_step = std::min(largest_step, dt * 1.25);
-        timings_.total += seconds_since(start);
         return report;
     }
     throw std::runtime_error("step " + std::to_string(state_.step + 1) + " could not be completed after " +

@@ -1,28 +1,34 @@
 #pragma once
 /// \file Simulation.hpp
-/// The MC-DDA time-stepping driver. One call of advance() is one accepted time step, following
-/// the paper's Table 1:
+/// The MC-DDA time-stepping driver. One call of advance() is one accepted step, following the
+/// paper's Table 1:
 ///   1. contact detection (candidates carried over with their states)
-///   2. open–close loop:
-///        assemble K = Σ elastic + M/(βΔt²) + contact springs; F = loads − ∫Bᵀσ0 + inertia + contacts
-///        factorise K (CHOLMOD)
-///        solve; plastic loop: return mapping of every element, the difference between trial and
-///          returned stress as a body load, re-solve with the same factor, until the increments
-///          settle (or report collapse)
-///        check the displacement limit (cut Δt and repeat the step if exceeded)
+///   2. open–close loop, warm-started from the last increments:
+///        equilibrium iterations (equilibrate): stresses of every integration point by the
+///          return mapping, out-of-balance force R = F − ∫Bᵀσ − contacts − inertia, and a
+///          correction K δ = R: Newton with the algorithmic tangent for associated flow
+///          (refactorised only while convergence is slow), the elastic matrix with Anderson
+///          acceleration for non-associated flow, until R and δ are within tolerance
 ///        check every contact; stop when no state changed
-///   3. commit: coordinates += d, stresses += D·B·d, velocities, contact springs.
+///   3. commit: coordinates += d, stresses as returned, velocities, contact springs.
+/// A static step whose equilibrium iterations fail is retried with a smaller load increment
+/// (bisection to analysis.min_load_fraction of a step); failing there is a collapse between the
+/// last load carried and the first not carried. Δt is never cut for plasticity in a static
+/// analysis: inertia (M/βΔt²) must not carry load there. Dynamic steps cut Δt (Shi).
 
 #include "Preprocess.hpp"
 #include "contact/Contact.hpp"
+#include "contact/ContactLaw.hpp"
 #include "fem/BoundaryConditions.hpp"
 #include "fem/MeshTopology.hpp"
 #include "fem/PlaneStrain.hpp"
 #include "linalg/SymmetricSystem.hpp"
+#include "fem/ElementAssembly.hpp"
 #include "material/MohrCoulomb.hpp"
 
 #include <Eigen/Dense>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -31,9 +37,13 @@ namespace mcdda {
 
 /// Seconds spent in each part of the computation, summed over all steps.
 struct RunTimings {
+    /// `plasticity`: stress updates (return mapping) and internal forces of every iteration.
     double assembly = 0.0, factorization = 0.0, solve = 0.0, contact = 0.0, plasticity = 0.0, total = 0.0;
     int factorizations = 0;
     int symbolic_analyses = 0;
+    int iterations = 0;        ///< equilibrium iterations of all accepted steps
+    int max_iterations = 0;    ///< the most in one accepted step
+    int load_cuts = 0;         ///< load increments halved (static)
 };
 
 /// The evolving state of a run: coordinates, displacements, velocities, stresses, contacts.
@@ -45,18 +55,26 @@ struct SimulationState {
     Eigen::VectorXd displacement;       ///< total since the start (m), 2 per node
     Eigen::VectorXd velocity;           ///< (m/s), 2 per node
     Eigen::VectorXd acceleration;       ///< (m/s²), 2 per node (dynamic analysis)
-    std::vector<Eigen::Vector3d> stress;  ///< per element (σxx, σyy, τxy), Pa, tension positive
-    std::vector<double> stress_zz;        ///< per element σzz (plane strain), Pa
-    std::vector<double> plastic_strain;   ///< per element accumulated equivalent plastic strain
-    /// Per element: 0 never yielded, 1 yielded in an earlier step but elastic now, 2 yielding now.
+    /// Static analysis: the part of the next step's load increment already applied, in [0, 1).
+    double step_fraction = 0.0;
+    /// Per element, for output (averages of the element's integration points; the plastic state
+    /// is the highest of them):
+    std::vector<Eigen::Vector3d> stress;  ///< (σxx, σyy, τxy), Pa, tension positive
+    std::vector<double> stress_zz;        ///< σzz (plane strain), Pa
+    std::vector<double> plastic_strain;   ///< accumulated equivalent plastic strain
+    /// 0 never yielded, 1 yielded in an earlier step but elastic now, 2 yielding now.
     std::vector<unsigned char> plastic_state;
+    PointStates points;                   ///< the same at every integration point
     std::vector<Contact> contacts;
 };
 
-/// The plastic iterations of a step did not converge: the model collapsed (static analysis) or
-/// the load exceeds what it can carry.
+/// The equilibrium iterations of a step did not converge even for the smallest load increment:
+/// the model cannot carry the load. The state stays at the last load carried.
 struct PlasticCollapse : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    PlasticCollapse(const std::string& what, double carried_at, double failed_at)
+        : std::runtime_error(what), carried(carried_at), not_carried(failed_at) {}
+    double carried = 0.0;      ///< load position (steps, fractional) of the last state carried
+    double not_carried = 0.0;  ///< the smallest position tried beyond it that could not be carried
 };
 
 /// What one accepted step did.
@@ -66,7 +84,8 @@ struct StepReport {
     int open_close_iterations = 0;
     int time_step_cuts = 0;
     int open = 0, sliding = 0, locked = 0;
-    int plastic_iterations = 0;  ///< summed over the open–close iterations of the step
+    int plastic_iterations = 0;  ///< equilibrium iterations, summed over open–close iterations and load increments
+    int load_increments = 1;     ///< increments the step's load was applied in (static)
     int yielding = 0;            ///< elements yielding in this step
     double max_increment = 0.0;  ///< largest nodal displacement increment (m)
 };
@@ -76,6 +95,8 @@ public:
     /// Sets up a run of a preprocessed (meshed) model. Throws std::runtime_error naming the
     /// problem when the model cannot be solved (supports that catch no node, …).
     explicit Simulation(const Preprocessed& model);
+    Simulation(const Simulation&) = delete;  // elements_ points into model_ and mesh_
+    Simulation& operator=(const Simulation&) = delete;
 
     /// Advances one accepted step. Throws PlasticCollapse when the plastic iterations do not
     /// converge, std::runtime_error when the step cannot be completed otherwise (Δt cut below its
@@ -93,41 +114,69 @@ public:
 
     /// Current magnitude of each point load and edge pressure, in model order.
     std::vector<std::pair<std::string, double>> load_magnitudes() const;
+    /// The same at a load position (steps, fractional) of a static analysis.
+    std::vector<std::pair<std::string, double>> load_magnitudes_at(double position) const;
+
+    /// After advance() threw PlasticCollapse: the load positions (steps) of the bracket
+    /// [last carried, first not carried]; empty otherwise.
+    struct CollapseBracket {
+        double carried = 0.0, not_carried = 0.0;
+    };
+    const std::optional<CollapseBracket>& collapse() const { return collapse_; }
 
 private:
-    Eigen::VectorXd solve_increments(const Eigen::VectorXd& external, double dt, std::vector<Contact>& contacts,
-                                     int& iterations);
+    /// How one try of a load increment ended.
+    enum class Outcome { Converged, NotConverged, Unsettled, Singular };
+    struct Attempt {
+        Outcome outcome = Outcome::Converged;
+        Eigen::VectorXd d;
+        int open_close_iterations = 0;
+        int iterations = 0;  ///< equilibrium iterations
+        int yielding = 0;
+        std::string why;     ///< for failures
+    };
+    /// Solves the increments of one try: loads `external`; a static increment applies only the
+    /// share `lambda` of the out-of-balance force found at its start (`start_external` there).
+    Attempt solve_increments(const Eigen::VectorXd& external, const Eigen::VectorXd* start_external, double lambda,
+                             double dt, std::vector<Contact>& contacts);
+    /// Equilibrium iterations for fixed contact states (see the file comment); true when
+    /// converged, d updated in place.
+    bool equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, const std::vector<Contact>& contacts,
+                     const std::vector<ContactKinematics>& kinematics,
+                     const std::vector<ContactProperties>& properties, bool& factor_valid, Attempt& attempt);
     Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs);  ///< back-substitution, full-size result
-    /// Elastic trial stresses of every element for increments `d`, returned onto the yield surface
-    /// where plastic (into returned_); adds Σ A Bᵀ(σtrial − σ) to `plastic_load`. Returns the
-    /// number of yielding elements.
-    int update_stresses(const Eigen::VectorXd& d, Eigen::VectorXd* plastic_load);
     void rebuild_pattern_if_needed(const std::vector<Contact>& contacts);
-    CouplingGroup coupling(std::initializer_list<int> nodes) const;  ///< equations of up to 3 nodes
+    CouplingGroup coupling(std::initializer_list<int> nodes) const;  ///< equations of up to 6 nodes
+    CouplingGroup element_coupling(int e) const;
     void commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts);
+    /// Contact geometry at the start of the step (analysis.geometry).
+    ContactKinematics kinematics_of(const Contact& c) const;
+    /// The coordinates element strains and loads are taken on (analysis.geometry).
+    const std::vector<Point2>& element_nodes() const {
+        return model_.analysis.geometry == AnalysisSettings::Geometry::Initial ? mesh_.nodes : state_.nodes;
+    }
+    StepReport advance_static();
+    StepReport advance_dynamic();
+    void finish_report(StepReport& report, double largest);
 
     Model model_;
     Mesh mesh_;
     MeshTopology topology_;
     BoundaryConditions bc_;
-    std::vector<Eigen::Matrix3d> elasticity_;  ///< per material
     double penalty_ = 0.0;                     ///< contact spring (N/m)
     double displacement_limit_ = 0.0;          ///< largest increment per step (m)
     double contact_tolerance_ = 0.0;           ///< slip (m) above which a new contact starts sliding
     SimulationState state_;
     SymmetricSystem system_;
-    std::vector<double> element_values_;       ///< matrix values of elements and inertia, per step
-    std::vector<TriangleShape> shapes_;        ///< element shapes on the start-of-step geometry
-    std::vector<MohrCoulomb> yield_criteria_;  ///< per material
-    std::vector<char> plastic_material_;       ///< per material: may yield in this analysis
-    std::vector<ReturnResult> returned_;       ///< per element, for the last increments solved
-    int plastic_iterations_ = 0;               ///< of the current step  ///< the contact groups the pattern was built for
+    ElementAssembly elements_;
+    bool may_yield_ = false;                   ///< some material may yield in this analysis
+    std::vector<ReturnResult> returned_;       ///< per integration point, for the last increments solved
     RunTimings timings_;
     std::string last_singular_;  ///< why the last try's matrix could not be factorised
+    std::optional<CollapseBracket> collapse_;
 };
 
-/// Initial stress of every element from the model's in-situ stress (tension positive).
-void initial_stresses(const Model& model, const Mesh& mesh, std::vector<Eigen::Vector3d>& stress,
-                      std::vector<double>& stress_zz);
+/// Initial stress of every integration point from the model's in-situ stress (tension positive).
+void initial_stresses(const Model& model, const Mesh& mesh, const ElementAssembly& elements, PointStates& points);
 
 }  // namespace mcdda

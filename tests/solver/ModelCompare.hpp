@@ -118,6 +118,7 @@ public:
                  eq(p + "/name", x.name, y.name);
                  eq(p + "/point", x.point, y.point);
              });
+        eq("/mesh/element", static_cast<int>(a.mesh.element), static_cast<int>(b.mesh.element));
         eq("/mesh/size", a.mesh.size, b.mesh.size);
         eq("/mesh/min_angle", a.mesh.min_angle, b.mesh.min_angle);
         eq("/mesh/grading", a.mesh.grading, b.mesh.grading);
@@ -139,6 +140,7 @@ public:
         eq("/analysis/open_close_iterations", u.max_open_close_iterations, v.max_open_close_iterations);
         eq("/analysis/plastic_iterations", u.max_plastic_iterations, v.max_plastic_iterations);
         eq("/analysis/plastic_tolerance", u.plastic_tolerance, v.plastic_tolerance);
+        eq("/analysis/min_load_fraction", u.min_load_fraction, v.min_load_fraction);
         eq("/analysis/output_every", u.output_every, v.output_every);
         eq("/analysis/plasticity", u.plasticity, v.plasticity);
         return out_.str();

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 namespace mcdda::test {
 
 Point2 History::at(double t, int k) const {
@@ -61,6 +63,30 @@ Run run_text(const std::string& json, const std::vector<std::string>& overrides,
         return run(std::move(p), steps);
     }
     return run(preprocess_model(*read.model), steps);
+}
+
+CollapseRun run_to_collapse(const std::string& file, const std::vector<std::string>& overrides) {
+    const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/" + file, overrides);
+    CollapseRun r;
+    if (!p.ok) {
+        ADD_FAILURE() << file << " rejected";
+        return r;
+    }
+    Simulation s(p);
+    const int node = s.boundary_conditions().measurement_nodes.at(0);
+    try {
+        while (s.state().step < p.model.analysis.steps) {
+            s.advance();
+            r.load.push_back(s.load_magnitudes()[0].second);
+            r.settlement.push_back(-s.state().displacement[2 * node + 1]);
+        }
+    } catch (const PlasticCollapse& e) {
+        r.collapsed = true;
+        r.carried = s.load_magnitudes_at(e.carried)[0].second;
+        r.not_carried = s.load_magnitudes_at(e.not_carried)[0].second;
+        std::cout << file << ": " << e.what() << "\n";
+    }
+    return r;
 }
 
 Point2 centroid(const Simulation& s, int e) {

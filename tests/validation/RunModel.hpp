@@ -32,6 +32,17 @@ Run run_example(const std::string& file, const std::vector<std::string>& overrid
 /// The same for model text.
 Run run_text(const std::string& json, const std::vector<std::string>& overrides = {}, int steps = 0);
 
+/// A static run loaded until it collapses: the collapse bracket and the load–settlement curve of
+/// the first load (point load or edge pressure) and the first measurement point.
+struct CollapseRun {
+    bool collapsed = false;
+    double carried = 0.0, not_carried = 0.0;  ///< magnitude of the first load at the bracket's ends
+    std::vector<double> load, settlement;     ///< per accepted step: magnitude, −uy (m)
+};
+
+/// Runs examples/<file> with overrides step by step until PlasticCollapse or its last step.
+CollapseRun run_to_collapse(const std::string& file, const std::vector<std::string>& overrides = {});
+
 /// Centroid of element `e` in the current configuration.
 Point2 centroid(const Simulation& s, int e);
 

@@ -1,7 +1,12 @@
 // Circular tunnel in a Mohr–Coulomb medium (Salençon; the paper's parameters; docs/examples.md):
 // P0 = 10 MPa, Pi = 0, E = 5000 MPa, ν = 0.2, a = 1 m, c = 0.5 MPa, φ = 30°, ψ = 0.
-// Closed form: plastic radius 2.505 m, wall displacement 11.65 mm, stresses below.
+// Closed form: plastic radius 2.505 m, stresses below. The wall displacement is compared with the
+// 1-D axisymmetric solution that keeps σzz in the yield condition (AxisymmetricTunnel.hpp):
+// Salençon's 11.65 mm assumes σzz intermediate, which fails near the wall. The model's outer
+// boundary, a 20 m square loaded by P0, lies between the circles of 20 m and 28 m, so the 1-D
+// solutions with traction at b = 20 m and b = 40 m bracket its wall displacement.
 
+#include "AxisymmetricTunnel.hpp"
 #include "RunModel.hpp"
 
 #include <gtest/gtest.h>
@@ -32,6 +37,23 @@ std::pair<double, double> closed_form(double r) {
 
 }  // namespace
 
+/// Wall displacements of the 1-D references with traction at b = 40 m and b = 20 m (m).
+static std::pair<double, double> reference_bracket(double dilation_angle) {
+    mcdda::test::AxisymmetricTunnelSpec spec;
+    spec.dilation_angle = dilation_angle;
+    spec.b = 40.0;
+    const double far = mcdda::test::solve_axisymmetric_tunnel(spec).wall_displacement;
+    spec.b = 20.0;
+    const double near = mcdda::test::solve_axisymmetric_tunnel(spec).wall_displacement;
+    return {far, near};
+}
+
+/// Inward wall displacement: mean of the springline and crown measurement points.
+static double wall_displacement(const mcdda::test::Run& run) {
+    const Point2 wall = run.history.points.back()[0], crown = run.history.points.back()[1];
+    return 0.5 * (-wall.x - crown.y);
+}
+
 TEST(Salencon, PlasticRadiusWallDisplacementAndStresses) {
     EXPECT_NEAR(R0, 2.505, 0.001);
     auto run = mcdda::test::run_example("salencon-tunnel.json", {}, 3);
@@ -48,10 +70,8 @@ TEST(Salencon, PlasticRadiusWallDisplacementAndStresses) {
     }
     const double plastic_radius = std::sqrt(a * a + 4.0 * yielded_area / M_PI);
 
-    // Wall displacement: the measurement points at the springline and the crown.
-    const Point2 wall = run.history.points.back()[0], crown = run.history.points.back()[1];
-    const double wall_displacement = 0.5 * (-wall.x - crown.y);
-
+    const double wall = wall_displacement(run);
+    const auto [far, near] = reference_bracket(0.0);
     // Stresses: the problem is axisymmetric, so elements at all angles are averaged in rings of
     // 0.1 m (r ≥ 1.2 a), numerical and closed form alike.
     std::map<int, std::array<double, 5>> rings;  // count, σr, σθ, σr closed, σθ closed
@@ -80,12 +100,27 @@ TEST(Salencon, PlasticRadiusWallDisplacementAndStresses) {
         worst_hoop = std::max(worst_hoop, std::fabs(ring[2] - ring[4]) / std::fabs(ring[4]));
     }
     std::cout << "Salençon: plastic radius " << plastic_radius << " m (closed form " << R0 << ", error "
-              << 100 * (plastic_radius - R0) / R0 << " %); wall displacement " << wall_displacement * 1000
-              << " mm (11.65, error " << 100 * (wall_displacement - 0.01165) / 0.01165
-              << " %); largest ring error for r ≥ 1.2a: radial " << 100 * worst_radial << " %, hoop "
+              << 100 * (plastic_radius - R0) / R0 << " %); wall displacement " << wall * 1000 << " mm (1-D σzz-aware reference "
+              << far * 1000 << " at b = 40 m to " << near * 1000 << " at b = 20 m; Salençon 11.65)"
+              << "; largest ring error for r ≥ 1.2a: radial " << 100 * worst_radial << " %, hoop "
               << 100 * worst_hoop << " %\n";
-    EXPECT_NEAR(plastic_radius, R0, 0.03 * R0);
-    EXPECT_NEAR(wall_displacement, 0.01165, 0.05 * 0.01165);
+    EXPECT_NEAR(plastic_radius, R0, 0.01 * R0);  // issue 9 acceptance: 1 %
+    EXPECT_GT(wall, 0.99 * far);
+    EXPECT_LT(wall, 1.01 * near);
     EXPECT_LT(worst_radial, 0.05);
     EXPECT_LT(worst_hoop, 0.05);
+}
+
+// Dilatant variant (ψ = φ = 30°): stable, so it completes with the default settings (no false
+// collapse), and the wall moves as the 1-D solution with dilation says (about 5 times ψ = 0).
+TEST(Salencon, DilatantVariantCompletesAndMatchesReference) {
+    auto run = mcdda::test::run_example("salencon-tunnel.json", {"/materials/0/dilation_angle=30"}, 3);
+    ASSERT_TRUE(run.simulation);
+    ASSERT_EQ(run.simulation->state().step, 3);
+    const double wall = wall_displacement(run);
+    const auto [far, near] = reference_bracket(30.0 * M_PI / 180.0);
+    std::cout << "Salençon, ψ = 30°: wall displacement " << wall * 1000 << " mm (1-D reference " << far * 1000
+              << " at b = 40 m to " << near * 1000 << " at b = 20 m)\n";
+    EXPECT_GT(wall, 0.99 * far);
+    EXPECT_LT(wall, 1.01 * near);
 }

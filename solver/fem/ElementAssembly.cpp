@@ -1,0 +1,173 @@
+#include "fem/ElementAssembly.hpp"
+
+#include "fem/PlaneStrain.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcdda {
+
+void PointStates::resize(std::size_t n) {
+    stress.assign(n, Eigen::Vector3d::Zero());
+    stress_zz.assign(n, 0.0);
+    plastic_strain.assign(n, 0.0);
+    plastic_state.assign(n, 0);
+}
+
+ElementAssembly::ElementAssembly(const Model& model, const Mesh& mesh)
+    : model_(&model), mesh_(&mesh), quadratic_(mesh.quadratic()) {
+    for (const Material& m : model.materials) {
+        elasticity_.push_back(plane_strain_elasticity(m.young_modulus, m.poisson_ratio));
+        laws_.emplace_back(m);
+        may_yield_.push_back(model.analysis.plasticity && m.plastic);
+        associated_.push_back(m.dilation_angle == m.friction_angle);
+        has_tangent_ = has_tangent_ || (may_yield_.back() && associated_.back());
+    }
+}
+
+Point2 ElementAssembly::point_position(const std::vector<Point2>& nodes, int e, int q) const {
+    const auto& t = mesh_->triangles[e];
+    const std::array<double, 3> l = quadratic_ ? Triangle6::point(q) : Triangle3::point(q);
+    Point2 p{0.0, 0.0};
+    for (int i = 0; i < 3; ++i) {
+        p.x += l[i] * nodes[t[i]].x;
+        p.y += l[i] * nodes[t[i]].y;
+    }
+    return p;
+}
+
+template <int N>
+void ElementAssembly::prepare_elements(const std::vector<Point2>& nodes) {
+    auto& geometry = [this]() -> auto& {
+        if constexpr (N == 3) return linear_;
+        else return quadratic_geometry_;
+    }();
+    const int elements = element_count();
+    geometry.resize(elements);
+    for (int e = 0; e < elements; ++e) {
+        const auto& t = mesh_->triangles[e];
+        geometry[e] = TriangleElement<N>::geometry(nodes[t[0]], nodes[t[1]], nodes[t[2]]);
+    }
+}
+
+void ElementAssembly::prepare(const std::vector<Point2>& nodes, double inertia) {
+    inertia_ = inertia;
+    if (quadratic_) prepare_elements<6>(nodes);
+    else prepare_elements<3>(nodes);
+}
+
+void ElementAssembly::add_inertia_load(const Eigen::VectorXd& velocity, const Eigen::VectorXd& acceleration,
+                                       double beta, double dt, Eigen::VectorXd& force) const {
+    const int n = nodes_per_element();
+    for (int e = 0; e < element_count(); ++e) {
+        const double mass = model_->materials[mesh_->triangle_material[e]].density *
+                            (quadratic_ ? quadratic_geometry_[e].area : linear_[e].area);
+        if (mass == 0.0) continue;
+        for (int a = 0; a < n; ++a)
+            for (int dir = 0; dir < 2; ++dir) {
+                double f = 0.0;
+                for (int b = 0; b < n; ++b) {
+                    const int dof = 2 * node(e, b) + dir;
+                    const double m = quadratic_ ? Triangle6::mass(a, b) : Triangle3::mass(a, b);
+                    f += mass * m * (velocity[dof] / (beta * dt) + (0.5 - beta) / beta * acceleration[dof]);
+                }
+                force[2 * node(e, a) + dir] += f;
+            }
+    }
+}
+
+template <int N>
+ElementAssembly::Evaluation ElementAssembly::evaluate_elements(const Eigen::VectorXd& d, const PointStates& old,
+                                                               std::vector<ReturnResult>& returned,
+                                                               Eigen::VectorXd& internal, ElementMatrix matrix,
+                                                               SymmetricSystem* system) const {
+    using Element = TriangleElement<N>;
+    const auto& geometry = [this]() -> const auto& {
+        if constexpr (N == 3) return linear_;
+        else return quadratic_geometry_;
+    }();
+    const int elements = element_count();
+    const Eigen::Index dofs = d.size();
+    internal.setZero(dofs);
+    Eigen::VectorXd magnitude = Eigen::VectorXd::Zero(dofs);
+    returned.resize(static_cast<std::size_t>(elements) * Element::points);
+    Evaluation result;
+    typename Element::Forces de, f;
+    typename Element::Stiffness k;
+    int nodes[N];
+    for (int e = 0; e < elements; ++e) {
+        const int material = mesh_->triangle_material[e];
+        const typename Element::Geometry& g = geometry[e];
+        const Eigen::Matrix3d& D = elasticity_[material];
+        const double nu = model_->materials[material].poisson_ratio;
+        for (int a = 0; a < N; ++a) {
+            nodes[a] = node(e, a);
+            de[2 * a] = d[2 * nodes[a]];
+            de[2 * a + 1] = d[2 * nodes[a] + 1];
+        }
+        f.setZero();
+        if (matrix != ElementMatrix::None) k.setZero();
+        for (int q = 0; q < Element::points; ++q) {
+            const int p = e * Element::points + q;
+            const double w = g.weight(q);
+            // Elastic trial on the start-of-step geometry (updated Lagrangian, small increments).
+            const Eigen::Vector3d increment = D * (g.B[q] * de);
+            const Eigen::Vector3d& s0 = old.stress[p];
+            const PlaneStress trial{s0[0] + increment[0], s0[1] + increment[1], s0[2] + increment[2],
+                                    old.stress_zz[p] + nu * (increment[0] + increment[1])};
+            ReturnResult& r = returned[p];
+            Eigen::Matrix3d tangent;
+            if (may_yield_[material]) {
+                const bool want_tangent = matrix == ElementMatrix::Tangent;
+                const bool associated = associated_[material];
+                r = laws_[material].return_map(trial, want_tangent && associated ? &tangent : nullptr);
+            } else {
+                r = ReturnResult{};
+                r.stress = trial;
+            }
+            if (r.plastic) ++result.yielding;
+            const Eigen::Vector3d sigma(r.stress.xx, r.stress.yy, r.stress.xy);
+            f.noalias() += w * g.B[q].transpose() * sigma;
+            if (matrix == ElementMatrix::Tangent && r.plastic && associated_[material]) {
+                // Symmetric up to round-off for ψ = φ. Non-associated points keep D (below): the
+                // symmetric part of their tangent is indefinite, and the associated law's
+                // tangent was measured not to converge (Lavarak cavern); the initial-stress
+                // iteration with D does.
+                const Eigen::Matrix3d C = 0.5 * (tangent + tangent.transpose());
+                k.noalias() += w * g.B[q].transpose() * C * g.B[q];
+            } else if (matrix != ElementMatrix::None) {
+                k.noalias() += w * g.B[q].transpose() * D * g.B[q];
+            }
+        }
+        const double mass = inertia_ > 0.0 ? inertia_ * model_->materials[material].density * g.area : 0.0;
+        if (mass > 0.0) {
+            for (int a = 0; a < N; ++a)
+                for (int b = 0; b < N; ++b) {
+                    const double m = mass * Element::mass(a, b);
+                    f[2 * a] += m * de[2 * b];
+                    f[2 * a + 1] += m * de[2 * b + 1];
+                    if (matrix != ElementMatrix::None) {
+                        k(2 * a, 2 * b) += m;
+                        k(2 * a + 1, 2 * b + 1) += m;
+                    }
+                }
+        }
+        for (int a = 0; a < N; ++a)
+            for (int dir = 0; dir < 2; ++dir) {
+                internal[2 * nodes[a] + dir] += f[2 * a + dir];
+                magnitude[2 * nodes[a] + dir] += std::fabs(f[2 * a + dir]);
+            }
+        if (matrix != ElementMatrix::None) system->add(e, k.data());
+    }
+    result.force_scale = dofs ? magnitude.maxCoeff() : 0.0;
+    return result;
+}
+
+ElementAssembly::Evaluation ElementAssembly::evaluate(const Eigen::VectorXd& d, const PointStates& old,
+                                                      std::vector<ReturnResult>& returned, Eigen::VectorXd& internal,
+                                                      ElementMatrix matrix, SymmetricSystem* system) const {
+    return quadratic_ ? evaluate_elements<6>(d, old, returned, internal, matrix, system)
+                      : evaluate_elements<3>(d, old, returned, internal, matrix, system);
+}
+
+}  // namespace mcdda

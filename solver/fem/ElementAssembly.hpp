@@ -1,0 +1,96 @@
+#pragma once
+/// \file ElementAssembly.hpp
+/// The block interiors as one piece: for displacement increments d of a step, the stress at
+/// every integration point (elastic trial σ0 + D·B·d, returned onto the yield surface by the
+/// material), the internal forces ∫Bᵀσ + M d/(βΔt²), and, when asked, the element matrices
+/// (the algorithmic tangent or the elastic stiffness, plus inertia) scattered into the global
+/// system. Works on three- and six-node triangles alike (TriangleElement.hpp).
+
+#include "fem/TriangleElement.hpp"
+#include "linalg/SymmetricSystem.hpp"
+#include "material/MohrCoulomb.hpp"
+#include "mesh/Mesh.hpp"
+#include "model/Model.hpp"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace mcdda {
+
+/// Stress and plastic history at every integration point (point q of element e is
+/// e·points_per_element + q). Stress tension positive (Pa).
+struct PointStates {
+    std::vector<Eigen::Vector3d> stress;  ///< σxx, σyy, τxy
+    std::vector<double> stress_zz;
+    std::vector<double> plastic_strain;   ///< accumulated equivalent plastic strain
+    /// 0 never yielded, 1 yielded in an earlier step but elastic now, 2 yielding now.
+    std::vector<unsigned char> plastic_state;
+
+    void resize(std::size_t n);
+};
+
+/// Which element matrices evaluate() assembles.
+enum class ElementMatrix {
+    None,     ///< forces only
+    Elastic,  ///< ∫BᵀDB: the initial-stress (modified Newton) iteration
+    Tangent,  ///< ∫BᵀCB with C the algorithmic tangent of the return mapping (ψ = φ), else D
+};
+
+class ElementAssembly {
+public:
+    ElementAssembly() = default;
+    ElementAssembly(const Model& model, const Mesh& mesh);
+
+    int nodes_per_element() const { return quadratic_ ? 6 : 3; }
+    int points_per_element() const { return quadratic_ ? Triangle6::points : Triangle3::points; }
+    int element_count() const { return static_cast<int>(mesh_->triangles.size()); }
+    /// The nodes of element e: corners, then (six-node) the midside nodes of edges 01, 12, 20.
+    int node(int e, int a) const { return a < 3 ? mesh_->triangles[e][a] : mesh_->midside[e][a - 3]; }
+    /// Position of integration point q of element e on coordinates `nodes`.
+    Point2 point_position(const std::vector<Point2>& nodes, int e, int q) const;
+
+    /// Element geometry on the start-of-step coordinates, the inertia coefficient 1/(βΔt²)
+    /// (0: none) for this try of the step.
+    void prepare(const std::vector<Point2>& nodes, double inertia);
+
+    /// Inertia forces M·(v/(βΔt) + (½ − β)/β·a) of a dynamic step (constant over the step).
+    void add_inertia_load(const Eigen::VectorXd& velocity, const Eigen::VectorXd& acceleration, double beta,
+                          double dt, Eigen::VectorXd& force) const;
+
+    /// Some material may yield with associated flow (ψ = φ): ElementMatrix::Tangent differs from
+    /// the elastic matrix there (non-associated points keep the elastic stiffness).
+    bool has_tangent() const { return has_tangent_; }
+
+    struct Evaluation {
+        int yielding = 0;          ///< integration points on the yield surface
+        double force_scale = 0.0;  ///< largest Σ|element force| at a degree of freedom (N/m)
+    };
+
+    /// Stresses of `old` advanced by increments d into `returned` (one result per point),
+    /// internal forces into `internal` (resized, zeroed); element matrices into `system`
+    /// (group e for element e) unless `matrix` is None.
+    Evaluation evaluate(const Eigen::VectorXd& d, const PointStates& old, std::vector<ReturnResult>& returned,
+                        Eigen::VectorXd& internal, ElementMatrix matrix, SymmetricSystem* system) const;
+
+private:
+    template <int N>
+    Evaluation evaluate_elements(const Eigen::VectorXd& d, const PointStates& old, std::vector<ReturnResult>& returned,
+                                 Eigen::VectorXd& internal, ElementMatrix matrix, SymmetricSystem* system) const;
+    template <int N>
+    void prepare_elements(const std::vector<Point2>& nodes);
+
+    const Model* model_ = nullptr;
+    const Mesh* mesh_ = nullptr;
+    bool quadratic_ = false;
+    std::vector<Eigen::Matrix3d> elasticity_;  ///< per material
+    std::vector<MohrCoulomb> laws_;            ///< per material
+    std::vector<char> associated_;             ///< per material: ψ = φ
+    bool has_tangent_ = false;
+    std::vector<char> may_yield_;              ///< per material
+    std::vector<Triangle3::Geometry> linear_;  ///< per element, three-node meshes
+    std::vector<Triangle6::Geometry> quadratic_geometry_;  ///< per element, six-node meshes
+    double inertia_ = 0.0;
+};
+
+}  // namespace mcdda
