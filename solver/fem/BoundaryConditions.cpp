@@ -33,6 +33,7 @@ BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& me
         for (std::size_t k = 0; k < n; ++k)
             if (std::hypot(mesh.nodes[k].x - q.x, mesh.nodes[k].y - q.y) <= tolerance) fixed[2 * k] = fixed[2 * k + 1] = 1;
     }
+    bc.roller_nodes.assign(model.rollers.size(), {});
     for (std::size_t i = 0; i < model.rollers.size(); ++i) {
         const Roller& r = model.rollers[i];
         int caught = 0;
@@ -40,6 +41,7 @@ BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& me
             if (!on_segment(mesh.nodes[node], r.from, r.to, tolerance)) continue;
             if (r.fix_x) fixed[2 * node] = 1;
             if (r.fix_y) fixed[2 * node + 1] = 1;
+            bc.roller_nodes[i].push_back(node);
             ++caught;
         }
         if (caught == 0)

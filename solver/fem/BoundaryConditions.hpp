@@ -30,6 +30,7 @@ struct BoundaryConditions {
     std::vector<NodalLoad> point_loads;
     std::vector<PressureEdge> pressure_edges;
     std::vector<int> measurement_nodes;  ///< one node per Model::measurement_points entry
+    std::vector<std::vector<int>> roller_nodes;  ///< per Model::rollers entry, the nodes it holds
 
     bool fixed(int node, int direction) const { return equation[2 * node + direction] < 0; }
 };

@@ -462,7 +462,7 @@ void parse_supports_and_loads(Parser& p, const json& root, Model& m, const std::
         const json& o = rollers[i];
         Roller r;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, {"name", "from", "to", "fixed"});
+            p.check_keys(o, path, {"name", "from", "to", "fixed", "displacement", "table"});
             r.name = p.string(o, path, "name", "roller " + std::to_string(i + 1));
             r.from = p.point(o, path, "from");
             r.to = p.point(o, path, "to");
@@ -471,6 +471,8 @@ void parse_supports_and_loads(Parser& p, const json& root, Model& m, const std::
             r.fix_y = fixed_dir == "y" || fixed_dir == "xy";
             if (!r.fix_x && !r.fix_y && !fixed_dir.empty())
                 p.error(path + "/fixed", "must be \"x\", \"y\" or \"xy\", got \"" + fixed_dir + "\"");
+            if (o.contains("displacement")) r.displacement = p.point(o, path, "displacement");
+            r.table = optional_reference(p, o, path, "table", table_names, "load table");
         }
         m.rollers.push_back(r);
     }

@@ -168,6 +168,8 @@ json to_json(const Model& m) {
             o["from"] = point(r.from);
             o["to"] = point(r.to);
             o["fixed"] = r.fix_x && r.fix_y ? "xy" : r.fix_x ? "x" : r.fix_y ? "y" : "";
+            if (r.moves()) o["displacement"] = point(r.displacement);
+            if (r.table >= 0) o["table"] = name_of(m.load_tables, r.table, "load table");
             list.push_back(std::move(o));
         }
         root["rollers"] = std::move(list);

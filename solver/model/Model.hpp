@@ -110,6 +110,11 @@ struct Roller {
     Point2 from, to;
     bool fix_x = false;
     bool fix_y = false;
+    /// Prescribed displacement of the fixed directions (m), times the table's factor: the
+    /// support moves (displacement control, e.g. a footing pushed down). Zero: a fixed support.
+    Point2 displacement{0.0, 0.0};
+    int table = -1;  ///< index into Model::load_tables; −1 = constant factor 1
+    bool moves() const { return displacement.x != 0.0 || displacement.y != 0.0; }
 };
 
 /// A point load (N per m thickness) applied at the node nearest to `point`.

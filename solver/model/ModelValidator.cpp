@@ -150,6 +150,9 @@ void check_boundary_conditions(Checker& c, const Model& m) {
         c.point(r.from, path + "/from");
         c.point(r.to, path + "/to");
         if (r.from.x == r.to.x && r.from.y == r.to.y) c.error(path, "from and to are the same point");
+        c.point(r.displacement, path + "/displacement");
+        if ((r.displacement.x != 0.0 && !r.fix_x) || (r.displacement.y != 0.0 && !r.fix_y))
+            c.error(path + "/displacement", "prescribes a direction the roller does not fix (\"fixed\" must include it)");
     }
     for (std::size_t i = 0; i < m.point_loads.size(); ++i)
         c.point(m.point_loads[i].point, "/point_loads/" + std::to_string(i) + "/point");
@@ -258,6 +261,7 @@ void check_load_tables(Checker& c, const Model& m) {
         if (table < -1 || table >= static_cast<int>(tables.size()))
             c.error(path + "/table", "refers to a missing load table (index " + std::to_string(table) + ")");
     };
+    for (std::size_t i = 0; i < m.rollers.size(); ++i) reference(m.rollers[i].table, "/rollers/" + std::to_string(i));
     for (std::size_t i = 0; i < m.point_loads.size(); ++i)
         reference(m.point_loads[i].table, "/point_loads/" + std::to_string(i));
     for (std::size_t i = 0; i < m.edge_pressures.size(); ++i)

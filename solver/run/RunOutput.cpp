@@ -88,6 +88,9 @@ void RunOutput::record_history(const Simulation& sim) {
         row << "step,time";
         for (const auto& [name, value] : loads) row << ",load:" << name;
         for (const MeasurementPoint& m : model.measurement_points) row << "," << m.name << ":ux," << m.name << ":uy";
+        // Moving supports (displacement control): their displacement and the force they exert.
+        for (const Roller& r : model.rollers)
+            if (r.moves()) row << "," << r.name << ":ux," << r.name << ":uy," << r.name << ":fx," << r.name << ":fy";
         row << "\n";
         header_written_ = true;
     }
@@ -95,6 +98,14 @@ void RunOutput::record_history(const Simulation& sim) {
     for (const auto& [name, value] : loads) row << "," << value;
     for (int node : sim.boundary_conditions().measurement_nodes)
         row << "," << s.displacement[2 * node] << "," << s.displacement[2 * node + 1];
+    for (std::size_t i = 0; i < model.rollers.size(); ++i) {
+        const Roller& r = model.rollers[i];
+        if (!r.moves()) continue;
+        const double factor = load_factor(model, r.table, s.step + s.step_fraction, s.time);
+        const Point2 f = i < s.roller_reactions.size() ? s.roller_reactions[i] : Point2{0.0, 0.0};
+        row << "," << (r.fix_x ? r.displacement.x * factor : 0.0) << "," << (r.fix_y ? r.displacement.y * factor : 0.0)
+            << "," << f.x << "," << f.y;
+    }
     row << "\n";
     // One write and a flush per row: a run that stops leaves whole rows only.
     history_ << row.str() << std::flush;

@@ -265,7 +265,10 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         // round-off and would never settle.
         const double yardstick = std::max({d.cwiseAbs().maxCoeff(), 0.01 * state_.displacement.cwiseAbs().maxCoeff(),
                                            1e-12 * topology_.model_size});
-        if (k > 0 && norm <= tolerance * scale && last_correction <= tolerance * yardstick) return true;
+        if (k > 0 && norm <= tolerance * scale && last_correction <= tolerance * yardstick) {
+            attempt.residual = residual;
+            return true;
+        }
         // Diverging: non-finite, or growing far beyond the start once the tangent has had a few
         // corrections (a contact change alone may start from a large out-of-balance force).
         if (k == 0) first_norm = norm;
@@ -366,8 +369,33 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
     }
 }
 
+Eigen::VectorXd Simulation::prescribed_increments(double position, double time) const {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(state_.displacement.size());
+    for (std::size_t i = 0; i < model_.rollers.size(); ++i) {
+        const Roller& r = model_.rollers[i];
+        if (!r.moves()) continue;
+        const double factor = load_factor(model_, r.table, position, time);
+        for (int node : bc_.roller_nodes[i]) {
+            if (r.fix_x) d[2 * node] = r.displacement.x * factor - state_.displacement[2 * node];
+            if (r.fix_y) d[2 * node + 1] = r.displacement.y * factor - state_.displacement[2 * node + 1];
+        }
+    }
+    return d;
+}
+
+void Simulation::record_reactions(const Eigen::VectorXd& residual) {
+    state_.roller_reactions.assign(model_.rollers.size(), Point2{0.0, 0.0});
+    if (residual.size() != state_.displacement.size()) return;
+    for (std::size_t i = 0; i < model_.rollers.size(); ++i)
+        for (int node : bc_.roller_nodes[i]) {
+            if (model_.rollers[i].fix_x) state_.roller_reactions[i].x -= residual[2 * node];
+            if (model_.rollers[i].fix_y) state_.roller_reactions[i].y -= residual[2 * node + 1];
+        }
+}
+
 Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external, const Eigen::VectorXd* start_external,
-                                                 double lambda, double dt, std::vector<Contact>& contacts) {
+                                                 double lambda, double dt, std::vector<Contact>& contacts,
+                                                 const Eigen::VectorXd& prescribed) {
     Attempt attempt;
     const auto start_assembly = Clock::now();
     rebuild_pattern_if_needed(contacts);
@@ -395,18 +423,22 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     }
     timings_.contact += seconds_since(start_contact);
 
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(dofs);
+    // Supports that move (displacement control) take their increments from the start; the
+    // corrections never change them (they are not equations).
+    Eigen::VectorXd d = prescribed;
+    Eigen::VectorXd shift = Eigen::VectorXd::Zero(dofs);  // the part of the start's unbalance left for later
     if (start_external && lambda < 1.0) {
         // Only the share λ of the out-of-balance force at the start of the increment is applied
         // (an excavation's release, the rest of an unconverged step): the remainder stays as a
         // load that the next increment removes.
         Eigen::VectorXd internal;
         const auto t0 = Clock::now();
-        elements_.evaluate(d, state_.points, returned_, internal, ElementMatrix::None, nullptr);
+        elements_.evaluate(Eigen::VectorXd::Zero(dofs), state_.points, returned_, internal, ElementMatrix::None, nullptr);
         timings_.plasticity += seconds_since(t0);
         Eigen::VectorXd unbalance = *start_external - internal;
-        add_contact_forces(contacts, kinematics, properties, d, unbalance);
-        base -= (1.0 - lambda) * unbalance;
+        add_contact_forces(contacts, kinematics, properties, Eigen::VectorXd::Zero(dofs), unbalance);
+        shift = -(1.0 - lambda) * unbalance;
+        base += shift;
     }
 
     const int max_iterations = model_.analysis.max_open_close_iterations;
@@ -429,6 +461,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
             return attempt;
         }
         attempt.d = d;
+        attempt.residual -= shift;  // reactions balance the loads actually applied
 
         const auto t3 = Clock::now();
         int changes = 0;
@@ -629,7 +662,8 @@ StepReport Simulation::advance_static() {
             external_forces(model_, mesh_, element_nodes(), topology_, bc_, to, state_.time + increment * largest_step);
         const Eigen::VectorXd start_external =
             external_forces(model_, mesh_, element_nodes(), topology_, bc_, from, state_.time);
-        Attempt attempt = solve_increments(external, &start_external, increment / remaining, dt, contacts);
+        Attempt attempt = solve_increments(external, &start_external, increment / remaining, dt, contacts,
+                                           prescribed_increments(to, state_.time + increment * largest_step));
         report.plastic_iterations += attempt.iterations;
         const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
         const bool too_large = attempt.outcome == Outcome::Converged && largest > displacement_limit_;
@@ -665,6 +699,7 @@ StepReport Simulation::advance_static() {
             continue;
         }
         commit(attempt.d, dt, contacts);
+        record_reactions(attempt.residual);
         ++report.load_increments;
         report.open_close_iterations += attempt.open_close_iterations;
         report.max_increment = std::max(report.max_increment, largest);
@@ -694,7 +729,8 @@ StepReport Simulation::advance_dynamic() {
         timings_.contact += seconds_since(t0);
         const Eigen::VectorXd external =
             external_forces(model_, mesh_, element_nodes(), topology_, bc_, state_.step + 1, state_.time + dt);
-        Attempt attempt = solve_increments(external, nullptr, 1.0, dt, contacts);
+        Attempt attempt =
+            solve_increments(external, nullptr, 1.0, dt, contacts, prescribed_increments(state_.step + 1, state_.time + dt));
         report.plastic_iterations += attempt.iterations;
         if (attempt.outcome == Outcome::NotConverged) {
             // Between blocks, rock asked to carry too much is often a wrong contact guess at this
@@ -725,6 +761,7 @@ StepReport Simulation::advance_dynamic() {
             continue;
         }
         commit(attempt.d, dt, contacts);
+        record_reactions(attempt.residual);
         state_.step += 1;
         state_.time += dt;
         report.time_step = dt;

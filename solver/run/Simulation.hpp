@@ -66,6 +66,8 @@ struct SimulationState {
     std::vector<unsigned char> plastic_state;
     PointStates points;                   ///< the same at every integration point
     std::vector<Contact> contacts;
+    /// Per Model::rollers entry: the force (N/m) the support exerts on the model, x and y.
+    std::vector<Point2> roller_reactions;
 };
 
 /// The equilibrium iterations of a step did not converge even for the smallest load increment:
@@ -134,11 +136,17 @@ private:
         int iterations = 0;  ///< equilibrium iterations
         int yielding = 0;
         std::string why;     ///< for failures
+        Eigen::VectorXd residual;  ///< out-of-balance force at d (converged: the support reactions, negated)
     };
     /// Solves the increments of one try: loads `external`; a static increment applies only the
     /// share `lambda` of the out-of-balance force found at its start (`start_external` there).
     Attempt solve_increments(const Eigen::VectorXd& external, const Eigen::VectorXd* start_external, double lambda,
-                             double dt, std::vector<Contact>& contacts);
+                             double dt, std::vector<Contact>& contacts, const Eigen::VectorXd& prescribed);
+    /// Increments of the degrees of freedom held by moving rollers that take them to their
+    /// prescribed displacement at load position `position` (zero elsewhere).
+    Eigen::VectorXd prescribed_increments(double position, double time) const;
+    /// Sums the support reactions of every roller from the out-of-balance force of a converged try.
+    void record_reactions(const Eigen::VectorXd& residual);
     /// Equilibrium iterations for fixed contact states (see the file comment); true when
     /// converged, d updated in place.
     bool equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, const std::vector<Contact>& contacts,

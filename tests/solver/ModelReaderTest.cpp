@@ -2,6 +2,7 @@
 
 #include "TestModels.hpp"
 #include "io/ModelReader.hpp"
+#include "model/ModelValidator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -162,4 +163,29 @@ TEST(ModelReader, MissingFileIsAnErrorNotAnException) {
     EXPECT_FALSE(r.model);
     ASSERT_EQ(r.diagnostics.size(), 1u);
     EXPECT_NE(r.diagnostics[0].message.find("cannot open"), std::string::npos);
+}
+
+TEST(ModelReader, MovingRollerPrescribesDisplacementOfItsFixedDirections) {
+    const std::string ramp = R"(/load_tables=[{"name": "mm", "variable": "step", "points": [[0, 0], [1, 1]],
+                                               "extrapolate": true}])";
+    const ReadResult r = read_model_text(
+        square_model_json(),
+        {ramp, R"(/rollers/-={"name": "jack", "from": [0, 10], "to": [10, 10], "fixed": "y",
+                               "displacement": [0, -0.001], "table": "mm"})"});
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    const Roller& jack = r.model->rollers.back();
+    EXPECT_TRUE(jack.moves());
+    EXPECT_EQ(jack.displacement.y, -0.001);
+    EXPECT_EQ(jack.table, 0);
+    EXPECT_FALSE(r.model->rollers.front().moves());
+
+    // A displacement in a direction the roller leaves free is refused, naming the field.
+    const ReadResult bad = read_model_text(
+        square_model_json(),
+        {ramp, R"(/rollers/-={"name": "jack", "from": [0, 10], "to": [10, 10], "fixed": "x",
+                               "displacement": [0, -0.001]})"});
+    ASSERT_TRUE(bad.model) << all_messages(bad.diagnostics);  // well-formed; the validator refuses it
+    std::vector<Diagnostic> d;
+    validate_model(*bad.model, d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/rollers/1/displacement", "does not fix")) << all_messages(d);
 }

@@ -56,3 +56,29 @@ TEST(Prandtl, CollapseAtTwoPlusPiIndependentOfLoadStepAndIterationCap) {
     expect_prandtl(other, "10 kPa steps, 4x iteration cap");
     EXPECT_NEAR(other.carried, shipped.carried, 0.002 * prandtl);
 }
+
+// Displacement control: the footing's top is pushed down 10 mm per step instead of loaded. The
+// support reaction climbs to a plateau at the collapse load (no bisection or collapse needed).
+TEST(Prandtl, DisplacementControlReachesThePlateau) {
+    const std::string push = R"({"name": "footing push", "from": [0, 1], "to": [2, 1], "fixed": "y",
+                                 "displacement": [0, -0.01], "table": "5 kPa per step"})";
+    const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/prandtl-footing.json",
+                                           {"/edge_pressures=[]", "/rollers/-=" + push, "/analysis/steps=100"});
+    ASSERT_TRUE(p.ok);
+    Simulation s(p);
+    const std::size_t roller = p.model.rollers.size() - 1;
+    std::vector<double> q;  // q/cu: the reaction over the half width B/2 = 2 m
+    while (s.state().step < p.model.analysis.steps) {
+        s.advance();
+        q.push_back(-s.state().roller_reactions.at(roller).y / 2.0 / cu);
+    }
+    const std::size_t n = q.size();
+    std::cout << "displacement control: q/cu = " << q[n / 4] << " at " << 0.01 * (n / 4 + 1) << " m, " << q.back()
+              << " at " << 0.01 * n << " m (2 + π = " << prandtl << ", error " << 100 * (q.back() / prandtl - 1)
+              << " %)\n";
+    for (std::size_t i = 1; i < n; ++i) EXPECT_GE(q[i], q[i - 1]) << "step " << i;
+    EXPECT_NEAR(q.back(), prandtl, 0.01 * prandtl);
+    // A plateau: the last 10 cm (of 1 m) add less than 0.2 % where the first 10 cm gave a third.
+    EXPECT_LT(q[n - 1] - q[n - 11], 0.002 * q.back());
+    EXPECT_GT(q[9], 0.3 * q.back());
+}
