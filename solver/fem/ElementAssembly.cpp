@@ -17,11 +17,8 @@ void PointStates::resize(std::size_t n) {
 ElementAssembly::ElementAssembly(const Model& model, const Mesh& mesh)
     : model_(&model), mesh_(&mesh), quadratic_(mesh.quadratic()) {
     for (const Material& m : model.materials) {
-        elasticity_.push_back(plane_strain_elasticity(m.young_modulus, m.poisson_ratio));
-        laws_.emplace_back(m);
-        may_yield_.push_back(model.analysis.plasticity && m.plastic);
-        associated_.push_back(m.dilation_angle == m.friction_angle);
-        has_tangent_ = has_tangent_ || (may_yield_.back() && associated_.back());
+        laws_.push_back(make_constitutive_law(m, model.analysis.plasticity));
+        has_tangent_ = has_tangent_ || (laws_.back()->may_yield() && laws_.back()->symmetric_tangent());
     }
 }
 
@@ -98,7 +95,8 @@ ElementAssembly::Evaluation ElementAssembly::evaluate_elements(const Eigen::Vect
     for (int e = 0; e < elements; ++e) {
         const int material = mesh_->triangle_material[e];
         const typename Element::Geometry& g = geometry[e];
-        const Eigen::Matrix3d& D = elasticity_[material];
+        const ConstitutiveLaw& law = *laws_[material];
+        const Eigen::Matrix3d& D = law.elasticity();
         const double nu = model_->materials[material].poisson_ratio;
         for (int a = 0; a < N; ++a) {
             nodes[a] = node(e, a);
@@ -117,18 +115,12 @@ ElementAssembly::Evaluation ElementAssembly::evaluate_elements(const Eigen::Vect
                                     old.stress_zz[p] + nu * (increment[0] + increment[1])};
             ReturnResult& r = returned[p];
             Eigen::Matrix3d tangent;
-            if (may_yield_[material]) {
-                const bool want_tangent = matrix == ElementMatrix::Tangent;
-                const bool associated = associated_[material];
-                r = laws_[material].return_map(trial, want_tangent && associated ? &tangent : nullptr);
-            } else {
-                r = ReturnResult{};
-                r.stress = trial;
-            }
+            const bool want_tangent = matrix == ElementMatrix::Tangent && law.symmetric_tangent();
+            r = law.return_map(trial, want_tangent ? &tangent : nullptr);
             if (r.plastic) ++result.yielding;
             const Eigen::Vector3d sigma(r.stress.xx, r.stress.yy, r.stress.xy);
             f.noalias() += w * g.B[q].transpose() * sigma;
-            if (matrix == ElementMatrix::Tangent && r.plastic && associated_[material]) {
+            if (want_tangent && r.plastic) {
                 // Symmetric up to round-off for ψ = φ. Non-associated points keep D (below): the
                 // symmetric part of their tangent is indefinite, and the associated law's
                 // tangent was measured not to converge (Lavarak cavern); the initial-stress

@@ -8,7 +8,7 @@
 
 #include "fem/TriangleElement.hpp"
 #include "linalg/SymmetricSystem.hpp"
-#include "material/MohrCoulomb.hpp"
+#include "material/ConstitutiveLaw.hpp"
 #include "mesh/Mesh.hpp"
 #include "model/Model.hpp"
 
@@ -83,11 +83,8 @@ private:
     const Model* model_ = nullptr;
     const Mesh* mesh_ = nullptr;
     bool quadratic_ = false;
-    std::vector<Eigen::Matrix3d> elasticity_;  ///< per material
-    std::vector<MohrCoulomb> laws_;            ///< per material
-    std::vector<char> associated_;             ///< per material: ψ = φ
-    bool has_tangent_ = false;
-    std::vector<char> may_yield_;              ///< per material
+    std::vector<std::unique_ptr<ConstitutiveLaw>> laws_;  ///< per material
+    bool has_tangent_ = false;                 ///< see has_tangent()
     std::vector<Triangle3::Geometry> linear_;  ///< per element, three-node meshes
     std::vector<Triangle6::Geometry> quadratic_geometry_;  ///< per element, six-node meshes
     double inertia_ = 0.0;

@@ -1,5 +1,7 @@
 #include "material/MohrCoulomb.hpp"
 
+#include "fem/PlaneStrain.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -39,6 +41,7 @@ MohrCoulomb::MohrCoulomb(double E, double nu, double c, double phi, double psi, 
       sin_phi_(std::sin(phi)), cos_phi_(std::cos(phi)), sin_psi_(std::sin(psi)), tensile_strength_(tensile),
       tolerance_(1e-10 * std::max({c, tensile, 1e-6 * E, 1.0})) {
     elasticity_ = lambda_ * Eigen::Matrix3d::Ones() + 2 * shear_modulus_ * Eigen::Matrix3d::Identity();
+    plane_strain_ = plane_strain_elasticity(E, nu);  // the same D, bit for bit, as every other law
     compliance_ = elasticity_.inverse();
     auto mohr_coulomb = [&](int major, int minor) {
         Plane p;

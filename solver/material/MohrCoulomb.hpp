@@ -10,6 +10,7 @@
 ///   f = (σ1 − σ3) + (σ1 + σ3) sin φ − 2 c cos φ ≤ 0,  σ1 ≥ σ2 ≥ σ3 including σzz,
 /// plastic potential g: the same with ψ; tension cut-off σ1 ≤ σt when σt > 0.
 
+#include "material/ConstitutiveLaw.hpp"
 #include "model/Model.hpp"
 
 #include <Eigen/Dense>
@@ -18,20 +19,7 @@
 
 namespace mcdda {
 
-/// A plane-strain stress state: σxx, σyy, τxy, σzz (Pa, tension positive).
-struct PlaneStress {
-    double xx = 0.0, yy = 0.0, xy = 0.0, zz = 0.0;
-};
-
-/// What the return mapping did.
-struct ReturnResult {
-    PlaneStress stress;                  ///< returned stress (the trial stress when elastic)
-    bool plastic = false;                ///< the trial stress was outside the yield surface
-    double equivalent_plastic_strain = 0.0;  ///< √(2/3 Δεp:Δεp) of this return
-    int active_surfaces = 0;             ///< 1 plane, 2 edge, 3 apex (or cut-off combinations)
-};
-
-class MohrCoulomb {
+class MohrCoulomb final : public ConstitutiveLaw {
 public:
     MohrCoulomb(double young_modulus, double poisson_ratio, double cohesion, double friction_angle,
                 double dilation_angle, double tensile_strength);
@@ -48,7 +36,11 @@ public:
     /// tangent dσ/dΔε, 3×3 in Voigt order (xx, yy, xy) with engineering shear strain, for a
     /// plane-strain increment (Δεzz = 0) of σtrial = σold + D Δε. It is the plane-strain D when
     /// elastic, symmetric for ψ = φ and not symmetric otherwise (the caller symmetrises, if it must).
-    ReturnResult return_map(const PlaneStress& trial, Eigen::Matrix3d* tangent) const;
+    ReturnResult return_map(const PlaneStress& trial, Eigen::Matrix3d* tangent) const override;
+
+    const Eigen::Matrix3d& elasticity() const override { return plane_strain_; }
+    bool may_yield() const override { return true; }
+    bool symmetric_tangent() const override { return sin_psi_ == sin_phi_; }
 
     /// Principal stresses (σ1 ≥ σ2 ≥ σ3) of a plane-strain state.
     static std::array<double, 3> principal(const PlaneStress& s);
@@ -77,6 +69,7 @@ private:
     double tensile_strength_;
     double tolerance_;
     Eigen::Matrix3d elasticity_;   ///< D in principal space: λ11ᵀ + 2G I
+    Eigen::Matrix3d plane_strain_; ///< D in Voigt order (xx, yy, xy)
     Eigen::Matrix3d compliance_;   ///< D⁻¹
     std::array<Plane, 6> planes_;  ///< Mohr–Coulomb 1–3, 1–2, 2–3, then the cut-off σ1, σ2, σ3
     int plane_count_ = 3;          ///< 6 with a cut-off
