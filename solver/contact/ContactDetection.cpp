@@ -36,9 +36,13 @@ public:
 
 private:
     long index(double v) const { return static_cast<long>(std::floor(v / cell_)); }
-    static long long key(long i, long k) { return (static_cast<long long>(i) << 32) ^ (k & 0xffffffffLL); }
+    // Unsigned arithmetic: shifting a negative index (models with negative coordinates) left is
+    // undefined behaviour (UBSan flagged it); the key stays one-to-one on the cell indices.
+    static unsigned long long key(long i, long k) {
+        return (static_cast<unsigned long long>(i) << 32) ^ (static_cast<unsigned long long>(k) & 0xffffffffULL);
+    }
     double cell_;
-    std::unordered_map<long long, std::vector<int>> cells_;
+    std::unordered_map<unsigned long long, std::vector<int>> cells_;
 };
 
 }  // namespace
