@@ -104,7 +104,8 @@ Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
     if (has_errors(diagnostics)) {
         std::string text;
         for (const Diagnostic& d : diagnostics)
-            if (d.severity == Diagnostic::Severity::Error) text += (text.empty() ? "" : "; ") + format_diagnostic(d);
+            if (d.severity == Diagnostic::Severity::Error)  // the caller says "error: " once
+                text += (text.empty() ? "" : "; ") + (d.path.empty() ? d.message : d.path + ": " + d.message);
         throw std::runtime_error(text);
     }
     double stiffest = 0.0;
