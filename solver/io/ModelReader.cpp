@@ -5,6 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
+
+#include <cstring>
+
+#include <cstdlib>
+
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -622,6 +628,30 @@ std::pair<std::size_t, std::size_t> line_and_column(const std::string& text, std
     return {line, column};
 }
 
+/// Byte offset and text of the first number literal outside strings that overflows a double.
+std::pair<std::size_t, std::string> first_overflowing_number(const std::string& text) {
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
+        if (in_string) {
+            if (ch == '\\') ++i;
+            else if (ch == '"') in_string = false;
+            continue;
+        }
+        if (ch == '"') {
+            in_string = true;
+            continue;
+        }
+        if (ch != '-' && !std::isdigit(static_cast<unsigned char>(ch))) continue;
+        std::size_t end = i;
+        while (end < text.size() && std::strchr("+-.eE0123456789", text[end]) != nullptr) ++end;
+        const std::string literal = text.substr(i, end - i);
+        if (!std::isfinite(std::strtod(literal.c_str(), nullptr))) return {i, literal};
+        i = end - 1;
+    }
+    return {0, "?"};
+}
+
 }  // namespace
 
 ReadResult read_model_text(const std::string& text, const std::vector<std::string>& overrides,
@@ -640,6 +670,15 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
         result.diagnostics.push_back({Diagnostic::Severity::Error, "",
                                       source + ":" + std::to_string(line) + ":" + std::to_string(column) +
                                           ": malformed JSON: " + what});
+        return result;
+    } catch (const json::out_of_range&) {
+        // A number beyond the range of a double (1e400): nlohmann gives no position, so the
+        // first such literal is found here.
+        const auto [byte, literal] = first_overflowing_number(text);
+        const auto [line, column] = line_and_column(text, byte);
+        result.diagnostics.push_back({Diagnostic::Severity::Error, "",
+                                      source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                                          ": number " + literal + " is too large (beyond ±1.8e308)"});
         return result;
     }
     apply_overrides(root, overrides, result.diagnostics);

@@ -189,3 +189,23 @@ TEST(ModelReader, MovingRollerPrescribesDisplacementOfItsFixedDirections) {
     validate_model(*bad.model, d);
     EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/rollers/1/displacement", "does not fix")) << all_messages(d);
 }
+
+TEST(ModelReader, NumberTooLargeForADoubleNamesLineAndColumn) {
+    std::string text = square_model_json();
+    const std::size_t at = text.find("\"young_modulus\"");
+    ASSERT_NE(at, std::string::npos);
+    const std::size_t value = text.find(':', at) + 2;
+    const std::size_t end = text.find_first_of(",}", value);
+    text.replace(value, end - value, "1e400");
+    const ReadResult r = read_model_text(text, {}, "big.json");
+    EXPECT_FALSE(r.model);
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    const std::string& m = r.diagnostics[0].message;
+    EXPECT_NE(m.find("number 1e400 is too large"), std::string::npos) << m;
+    // The position is the literal's: line and column of "1e400" in the text.
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < value; ++i) {
+        if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+    }
+    EXPECT_NE(m.find("big.json:" + std::to_string(line) + ":" + std::to_string(column) + ":"), std::string::npos) << m;
+}
