@@ -2,12 +2,30 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+
 namespace mcdda {
 
 namespace {
 
 Diagnostic override_error(const std::string& pointer, const std::string& message) {
     return {Diagnostic::Severity::Error, pointer, "--set: " + message};
+}
+
+/// The JSON library's pointer errors in words (its own text names exception ids).
+std::string pointer_problem(const nlohmann::json::exception& e, const std::string& pointer) {
+    switch (e.id) {
+        case 107: return "a pointer starts with '/', e.g. /materials/0/cohesion (got \"" + pointer + "\")";
+        case 108: return "'~' in a pointer must be followed by 0 ('~') or 1 ('/')";
+        case 109: return "an array index in the pointer is not a number";
+        case 401:
+        case 403:
+        case 404: return "no such field in the model";
+        default: break;
+    }
+    std::string what = e.what();
+    const auto bracket = what.find("] ");
+    return bracket == std::string::npos ? what : what.substr(bracket + 2);
 }
 
 }  // namespace
@@ -65,7 +83,7 @@ void apply_overrides(nlohmann::json& document, const std::vector<std::string>& a
                     pointer_text, parent.to_string() + " is neither an object nor an array"));
             }
         } catch (const json::exception& e) {
-            diagnostics.push_back(override_error(pointer_text, e.what()));
+            diagnostics.push_back(override_error(pointer_text, pointer_problem(e, pointer_text)));
         } catch (const std::exception& e) {
             diagnostics.push_back(override_error(pointer_text, e.what()));
         }

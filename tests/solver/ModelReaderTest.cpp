@@ -209,3 +209,12 @@ TEST(ModelReader, NumberTooLargeForADoubleNamesLineAndColumn) {
     }
     EXPECT_NE(m.find("big.json:" + std::to_string(line) + ":" + std::to_string(column) + ":"), std::string::npos) << m;
 }
+
+TEST(ModelReader, BadOverridePointersAreExplainedInWords) {
+    const ReadResult r = read_model_text(square_model_json(), {"materials/0/cohesion=1", "/materials/~2/x=1"});
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "materials/0/cohesion", "a pointer starts with '/'"))
+        << all_messages(r.diagnostics);
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/materials/~2/x", "must be followed by 0"))
+        << all_messages(r.diagnostics);
+    for (const Diagnostic& d : r.diagnostics) EXPECT_EQ(d.message.find("json.exception"), std::string::npos) << d.message;
+}
