@@ -47,20 +47,23 @@ int run_run(const Request& r) {
 
     std::string stem = std::filesystem::path(r.model).stem().string();
     if (stem.empty()) stem = "model";
+    // Set up before the output folder is touched: a run refused here leaves earlier results in
+    // the folder as they were.
+    std::unique_ptr<Simulation> simulation;
+    try {
+        simulation = std::make_unique<Simulation>(p);
+    } catch (const std::exception& e) {
+        std::cerr << r.model << ": error: " << e.what() << "\n";
+        if (std::filesystem::exists(std::filesystem::path(r.out) / "summary.json"))
+            std::cerr << "the results already in " << r.out << " are left as they were\n";
+        return exit_model_error;
+    }
     std::unique_ptr<RunOutput> output;
     try {
         output = std::make_unique<RunOutput>(r.out, stem);
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return exit_output_error;
-    }
-    std::unique_ptr<Simulation> simulation;
-    try {
-        simulation = std::make_unique<Simulation>(p);
-    } catch (const std::exception& e) {
-        std::cerr << r.model << ": error: " << e.what() << "\n";
-        output->write_summary(nullptr, RunStatus::Failed, e.what());
-        return exit_model_error;
     }
     if (!r.quiet)
         std::cout << "running " << r.model << ": " << p.statistics.elements << " elements, " << p.statistics.blocks
