@@ -86,7 +86,12 @@ int run_run(const Request& r) {
     const std::string& message = end.message;
     progress.finish();
     std::signal(SIGINT, previous_handler);
-    output->write_summary(simulation.get(), status, message);
+    try {
+        output->write_summary(simulation.get(), status, message);
+    } catch (const std::exception& e) {  // the folder became unwritable or full during the run
+        std::cerr << "error: cannot write the run's summary: " << e.what() << "\n";
+        return exit_output_error;
+    }
     if (status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(status) << ": " << message << "\n";
     if (!r.quiet)
         std::cout << status_name(status) << ": " << simulation->state().step << " steps, t = " << simulation->state().time

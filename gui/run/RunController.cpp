@@ -73,11 +73,12 @@ void RunController::start()
     std::unique_ptr<Simulation> simulation;
     try {
         if (!p.ok) throw std::runtime_error("the model has errors: it cannot be run");
+        // Set up before the output folder is touched: a run refused here leaves earlier
+        // results in the folder as they were.
+        simulation = std::make_unique<Simulation>(p);
         if (!output_folder_.isEmpty())
             output = std::make_unique<RunOutput>(output_folder_.toStdString(), stem_.toStdString());
-        simulation = std::make_unique<Simulation>(p);
     } catch (const std::exception& e) {
-        if (output) output->write_summary(nullptr, RunStatus::Failed, e.what());
         emit finished(RunStatus::Failed, QString::fromStdString(e.what()));
         return;
     }
