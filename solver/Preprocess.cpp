@@ -1,5 +1,6 @@
 #include "Preprocess.hpp"
 
+#include "fem/BoundaryConditions.hpp"
 #include "geometry/BlockCutter.hpp"
 #include "geometry/JointSets.hpp"
 #include "geometry/PolygonChecks.hpp"
@@ -36,6 +37,8 @@ void run_pipeline(Preprocessed& p, PreprocessStage last) {
         p.seconds_cut = seconds_since(t);
         if (!has_errors(p.diagnostics) && p.blocks.empty())
             p.diagnostics.push_back({Diagnostic::Severity::Error, "/regions", "the regions form no block"});
+        // What the run would refuse, refused here already (so `mcdda check` does).
+        if (!has_errors(p.diagnostics)) check_supports_on_blocks(p.model, p.blocks, p.diagnostics);
         if (has_errors(p.diagnostics) || last != PreprocessStage::Mesh) {
             p.ok = !has_errors(p.diagnostics);
             return;

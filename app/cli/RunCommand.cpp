@@ -43,7 +43,15 @@ int run_run(const Request& r) {
     const Preprocessed p = preprocess_file(r.model, r.overrides, PreprocessStage::Mesh);
     for (const Diagnostic& d : p.diagnostics)
         if (d.severity == Diagnostic::Severity::Error || !r.quiet) std::cerr << r.model << ": " << format_diagnostic(d) << "\n";
-    if (!p.ok) return exit_model_error;
+    // A refused run leaves the folder alone; say so when it holds earlier results.
+    const auto note_kept_results = [&] {
+        if (std::filesystem::exists(std::filesystem::path(r.out) / "summary.json"))
+            std::cerr << "the results already in " << r.out << " are left as they were\n";
+    };
+    if (!p.ok) {
+        note_kept_results();
+        return exit_model_error;
+    }
 
     std::string stem = std::filesystem::path(r.model).stem().string();
     if (stem.empty()) stem = "model";
@@ -54,8 +62,7 @@ int run_run(const Request& r) {
         simulation = std::make_unique<Simulation>(p);
     } catch (const std::exception& e) {
         std::cerr << r.model << ": error: " << e.what() << "\n";
-        if (std::filesystem::exists(std::filesystem::path(r.out) / "summary.json"))
-            std::cerr << "the results already in " << r.out << " are left as they were\n";
+        note_kept_results();
         return exit_model_error;
     }
     std::unique_ptr<RunOutput> output;

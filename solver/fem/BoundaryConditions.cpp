@@ -8,7 +8,51 @@ namespace {
 
 bool on_segment(Point2 p, Point2 a, Point2 b, double tolerance) { return distance_to_segment(p, a, b) <= tolerance; }
 
+/// True when some block boundary runs along [a, b]: a ring edge collinear with it over a
+/// positive length, or (`vertex_enough`) a ring vertex on it.
+bool along_block_boundary(const std::vector<Block>& blocks, Point2 a, Point2 b, double tolerance, bool vertex_enough) {
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    if (length == 0.0) return false;
+    const double tx = (b.x - a.x) / length, ty = (b.y - a.y) / length;
+    auto along = [&](Point2 p) { return (p.x - a.x) * tx + (p.y - a.y) * ty; };
+    auto off_line = [&](Point2 p) { return std::fabs((p.x - a.x) * ty - (p.y - a.y) * tx); };
+    auto check_ring = [&](const Ring& ring) {
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+            const Point2 p = ring[i], q = ring[(i + 1) % ring.size()];
+            if (vertex_enough && on_segment(p, a, b, tolerance)) return true;
+            if (off_line(p) > tolerance || off_line(q) > tolerance) continue;
+            const double lo = std::max(0.0, std::min(along(p), along(q)));
+            const double hi = std::min(length, std::max(along(p), along(q)));
+            if (hi - lo > tolerance) return true;
+        }
+        return false;
+    };
+    for (const Block& block : blocks) {
+        if (check_ring(block.outer)) return true;
+        for (const Ring& hole : block.holes)
+            if (check_ring(hole)) return true;
+    }
+    return false;
+}
+
 }  // namespace
+
+void check_supports_on_blocks(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics) {
+    const auto box = model.bounds();
+    const double tolerance = 1e-6 * std::hypot(box[2] - box[0], box[3] - box[1]);
+    for (std::size_t i = 0; i < model.rollers.size(); ++i) {
+        const Roller& r = model.rollers[i];
+        if (!along_block_boundary(blocks, r.from, r.to, tolerance, true))
+            diagnostics.push_back({Diagnostic::Severity::Error, "/rollers/" + std::to_string(i),
+                                   "roller \"" + r.name + "\" lies along no block boundary"});
+    }
+    for (std::size_t i = 0; i < model.edge_pressures.size(); ++i) {
+        const EdgePressure& e = model.edge_pressures[i];
+        if (!along_block_boundary(blocks, e.from, e.to, tolerance, false))
+            diagnostics.push_back({Diagnostic::Severity::Error, "/edge_pressures/" + std::to_string(i),
+                                   "pressure \"" + e.name + "\" lies along no block boundary"});
+    }
+}
 
 BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& mesh, const MeshTopology& topology,
                                               std::vector<Diagnostic>& diagnostics) {

@@ -35,6 +35,11 @@ struct BoundaryConditions {
     bool fixed(int node, int direction) const { return equation[2 * node + direction] < 0; }
 };
 
+/// Before meshing: rollers and edge pressures that lie along no boundary of the cut blocks are
+/// errors naming the item (the check `mcdda check` makes; locate_boundary_conditions makes the
+/// same one on the mesh).
+void check_supports_on_blocks(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics);
+
 /// Locates supports, loads and measurement points. Supports and loads that catch no node are
 /// errors naming the item.
 BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& mesh, const MeshTopology& topology,

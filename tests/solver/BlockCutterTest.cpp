@@ -138,3 +138,25 @@ TEST(BlockCutter, JointedTunnelBlocksTileTheRegion) {
     }
     EXPECT_GE(blocks_touching_tunnel, 4);
 }
+
+// What the run would refuse is refused after cutting already (what `mcdda check` runs): supports
+// and pressures that lie along no block boundary.
+TEST(BlockCutter, SupportsAndPressuresOffEveryBlockBoundaryAreRefusedBeforeMeshing) {
+    const Preprocessed ok = preprocess_text(
+        square_model_json(),
+        {R"(/edge_pressures=[{"name": "top", "from": [2, 10], "to": [8, 10], "pressure": 1e5}])",
+         R"(/rollers/-={"name": "corner", "from": [10, 10], "to": [12, 12], "fixed": "x"})"},
+        PreprocessStage::Cut);
+    EXPECT_TRUE(ok.ok) << all_messages(ok.diagnostics);  // along an edge; through a corner vertex
+
+    const Preprocessed bad = preprocess_text(
+        square_model_json(),
+        {R"(/edge_pressures=[{"name": "inside", "from": [2, 5], "to": [8, 5], "pressure": 1e5}])",
+         R"(/rollers/-={"name": "away", "from": [20, 0], "to": [30, 0], "fixed": "y"})"},
+        PreprocessStage::Cut);
+    EXPECT_FALSE(bad.ok);
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/rollers/1", "lies along no block boundary"))
+        << all_messages(bad.diagnostics);
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/edge_pressures/0", "lies along no block boundary"))
+        << all_messages(bad.diagnostics);
+}
