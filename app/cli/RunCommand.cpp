@@ -45,7 +45,8 @@ int run_run(const Request& r) {
         if (d.severity == Diagnostic::Severity::Error || !r.quiet) std::cerr << r.model << ": " << format_diagnostic(d) << "\n";
     // A refused run leaves the folder alone; say so when it holds earlier results.
     const auto note_kept_results = [&] {
-        if (std::filesystem::exists(std::filesystem::path(r.out) / "summary.json"))
+        std::error_code ec;  // an unreadable folder is no reason to fail differently
+        if (std::filesystem::exists(std::filesystem::path(r.out) / "summary.json", ec))
             std::cerr << "the results already in " << r.out << " are left as they were\n";
     };
     if (!p.ok) {
