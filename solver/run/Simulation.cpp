@@ -661,9 +661,12 @@ StepReport Simulation::advance_static() {
         // Loads at the increment's end; the time follows the load position (Δt per whole step).
         const Eigen::VectorXd external =
             external_forces(model_, mesh_, element_nodes(), topology_, bc_, to, state_.time + increment * largest_step);
-        const Eigen::VectorXd start_external =
-            external_forces(model_, mesh_, element_nodes(), topology_, bc_, from, state_.time);
-        Attempt attempt = solve_increments(external, &start_external, increment / remaining, dt, contacts,
+        // The loads at the increment's start matter only when it is a part of what remains.
+        const double lambda = increment / remaining;
+        Eigen::VectorXd start_external;
+        if (lambda < 1.0)
+            start_external = external_forces(model_, mesh_, element_nodes(), topology_, bc_, from, state_.time);
+        Attempt attempt = solve_increments(external, lambda < 1.0 ? &start_external : nullptr, lambda, dt, contacts,
                                            prescribed_increments(to, state_.time + increment * largest_step));
         report.plastic_iterations += attempt.iterations;
         const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;

@@ -24,7 +24,6 @@
 #include "fem/PlaneStrain.hpp"
 #include "linalg/SymmetricSystem.hpp"
 #include "fem/ElementAssembly.hpp"
-#include "material/MohrCoulomb.hpp"
 
 #include <Eigen/Dense>
 
