@@ -1,8 +1,8 @@
 #pragma once
 /// \file SymmetricSystem.hpp
 /// The global system K d = F: a fixed sparsity pattern assembled by scattering small dense
-/// blocks into precomputed slots (no sorting per step), factorised by CHOLMOD (supernodal
-/// Cholesky). The symbolic analysis is kept while the pattern is unchanged and the numeric
+/// blocks into precomputed slots (no sorting per step), factorised by CHOLMOD (Cholesky;
+/// CHOLMOD picks the simplicial or the supernodal method from the factor's density). The symbolic analysis is kept while the pattern is unchanged and the numeric
 /// factor is kept for any number of right-hand sides (the plastic iterations).
 
 #include <Eigen/Sparse>
@@ -68,6 +68,10 @@ public:
     /// Solves with the last factorisation.
     Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
 
+    /// True when a factorisation succeeded since the pattern was last set: solve() may be used,
+    /// with the values of that factorisation (set_groups and add do not change it).
+    bool has_factor() const { return has_factor_; }
+
     int factorizations() const { return factorizations_; }
     int symbolic_analyses() const { return analyses_; }
     const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
@@ -83,6 +87,7 @@ private:
     int slot_of(int i, int j) const;  ///< position of entry (i, j) in the values, or −1
     std::unique_ptr<CholmodFactor> factor_;
     bool analysed_ = false;
+    bool has_factor_ = false;
     int factorizations_ = 0;
     int analyses_ = 0;
 };

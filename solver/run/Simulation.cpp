@@ -215,8 +215,11 @@ void add_contact_forces(const std::vector<Contact>& contacts, const std::vector<
 /// refactorised. Measured on the Prandtl footing and Salençon tunnel (docs/plasticity.md).
 constexpr double keep_factor_contraction = 0.25;
 /// Equilibrium iterations without halving the out-of-balance force before a try counts as not
-/// converging (see equilibrate).
+/// converging (see equilibrate): the fixed-point iteration with the elastic matrix, and Newton
+/// (which halves it every iteration or two while converging; past the load a perfectly plastic
+/// model can carry, its line search creeps along the mechanism).
 constexpr int stall_window = 30;
+constexpr int newton_stall_window = 10;
 /// Corrections Anderson acceleration mixes (see equilibrate).
 constexpr int anderson_depth = 5;
 /// A displacement increment this many times the per-step limit, with material yielding, is a
@@ -238,6 +241,8 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
     double best_norm = std::numeric_limits<double>::infinity(), best_correction = best_norm;
     int best_at = 0, best_correction_at = 0;
     bool tangent_usable = may_yield_ && elements_.has_tangent();
+    const bool any_closed = std::any_of(contacts.begin(), contacts.end(),
+                                        [](const Contact& c) { return c.state != ContactState::Open; });
     for (int k = 0;; ++k) {
         // Refactorise when K is stale: contacts changed, or the last iteration contracted slowly.
         const bool refactor = !factor_valid;
@@ -287,7 +292,8 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         }
         // (Once the force is within tolerance only the correction lags: the iteration is settling,
         // not stalled, and the iteration cap bounds it.)
-        const bool stalled = norm > tolerance * scale && k - std::max(best_at, best_correction_at) >= stall_window;
+        const bool stalled = norm > tolerance * scale &&
+                             k - std::max(best_at, best_correction_at) >= (tangent_usable ? newton_stall_window : stall_window);
         // A mechanism: yielding material and a displacement increment many times the largest a
         // step may take. The load increment is past what the material can carry.
         const double largest = d.cwiseAbs().maxCoeff();
@@ -331,6 +337,8 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
             }
             timings_.factorization += seconds_since(t0);
             factor_valid = true;
+            held_.tangent = matrix == ElementMatrix::Tangent;
+            held_.closed = closed_signature(contacts);
         }
         Eigen::VectorXd delta = solve_reduced(rhs);
         ++attempt.iterations;
@@ -338,9 +346,13 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         // definite) the iteration is a fixed point d ← d + K⁻¹R(d) that contracts slowly once
         // much of the model yields: Anderson acceleration (Walker & Ni 2011) mixes the last
         // corrections; it costs a small least-squares problem per iteration. Once the force is
-        // within tolerance only the displacement is settling: plain corrections then (mixed ones
-        // wander along directions the force hardly sees, such as a loosened block).
-        if (!tangent_usable && eval.yielding > 0 && norm > tolerance * scale) delta = anderson.next(d, delta);
+        // within tolerance only the displacement is settling: plain corrections then where
+        // contacts are closed (mixed ones wander along directions the force hardly sees, such as
+        // a loosened block); without closed contacts mixing goes on (plain corrections of a
+        // non-associated plastic zone can drift for hundreds of iterations when no mass term
+        // damps them, as in a small-strain static analysis: Salençon's tunnel).
+        if (!tangent_usable && eval.yielding > 0 && (norm > tolerance * scale || !any_closed))
+            delta = anderson.next(d, delta);
         else anderson.reset();
         // Backtracking on the out-of-balance force: a full Newton correction through a softening
         // (perfectly plastic) tangent overshoots and can spread yield over the whole model.
@@ -444,7 +456,15 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
 
     const int max_iterations = model_.analysis.max_open_close_iterations;
     constexpr int max_friction_rounds = 10;
-    bool factor_valid = false;
+    // The factor of the last converged increment, when nothing it depends on has changed: the
+    // element matrices of a small-strain static analysis stay on the undeformed shape with no
+    // mass term, so only the closed contacts and (for Newton) the tangent differ. The elastic
+    // iteration needs the exact elastic matrix; Newton takes the last tangent as its first
+    // matrix and refactorises when it contracts slowly (equilibrate).
+    const bool newton = may_yield_ && elements_.has_tangent();
+    bool factor_valid = equilibrium_only && held_.usable && system_.has_factor() && (newton || !held_.tangent) &&
+                        held_.closed == closed_signature(contacts);
+    held_.usable = false;  // until this try converges
     int friction_rounds = 0;
     std::vector<int> flips(contacts.size(), 0);
     int& iterations = attempt.open_close_iterations;
@@ -509,19 +529,31 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
             // At the iteration limit a handful of changes among many contacts is accepted (they
             // take effect next step); more means the step is too large: Δt is cut (Shi).
             if (iterations == max_iterations && changes <= std::max(2, static_cast<int>(contacts.size() / 500)))
-                return attempt;
+                return attempt;  // the factor is of states that changed: not held
             factor_valid = false;
             ++iterations;
             continue;
         }
         // Friction of sliding contacts was taken from the normal forces of the previous solve;
         // repeat until they agree (with the same factor).
-        if (friction_change <= 1e-3 * friction_used || ++friction_rounds > max_friction_rounds) return attempt;
+        if (friction_change <= 1e-3 * friction_used || ++friction_rounds > max_friction_rounds) {
+            held_.usable = true;
+            return attempt;
+        }
         undo_marginal();
     }
     attempt.outcome = Outcome::Unsettled;
     attempt.why = "contacts do not settle";
     return attempt;
+}
+
+std::vector<long long> Simulation::closed_signature(const std::vector<Contact>& contacts) const {
+    std::vector<long long> closed;
+    const long long edges = static_cast<long long>(topology_.edges.size()) + 1;
+    for (const Contact& c : contacts)
+        if (c.state != ContactState::Open)
+            closed.push_back((static_cast<long long>(c.node) * edges + c.edge) * 4 + static_cast<int>(c.state));
+    return closed;
 }
 
 Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs) {
@@ -688,8 +720,17 @@ StepReport Simulation::advance_static() {
                                       " of a step)",
                                   from, to);
         }
+        // Small-strain static: there is no mass term, so a smaller Δt changes nothing; an increment
+        // beyond the displacement limit (which guards contact detection) takes a smaller share
+        // of the load instead, and is accepted at the floor.
+        const bool equilibrium_only = model_.analysis.geometry == AnalysisSettings::Geometry::Initial;
+        if (too_large && attempt.yielding == 0 && equilibrium_only && increment > floor * (1.0 + 1e-9)) {
+            increment = std::max(floor, std::min(0.5, 0.9 * displacement_limit_ / largest) * increment);
+            ++timings_.load_cuts;
+            continue;
+        }
         if ((attempt.outcome == Outcome::Singular && attempt.yielding == 0) || attempt.outcome == Outcome::Unsettled ||
-            (too_large && attempt.yielding == 0)) {
+            (too_large && attempt.yielding == 0 && !equilibrium_only)) {
             // Contacts that do not settle, a block held by nothing but inertia, or a step too
             // large for the contact linearisation: a smaller Δt (Shi's static DDA). Plasticity
             // is not involved here.

@@ -10,6 +10,9 @@
 ///          (refactorised only while convergence is slow), the elastic matrix with Anderson
 ///          acceleration for non-associated flow, until R and δ are within tolerance
 ///        check every contact; stop when no state changed
+///      In a small-strain static analysis the factor of the last converged increment starts the
+///      next one when the closed contacts are the same: it is that increment's tangent (a far
+///      better first correction than the elastic matrix) or, for the elastic matrix, exact.
 ///   3. commit: coordinates += d, stresses as returned, velocities, contact springs.
 /// A static step whose equilibrium iterations fail is retried with a smaller load increment
 /// (bisection to analysis.min_load_fraction of a step); failing there is a collapse between the
@@ -180,6 +183,15 @@ private:
     std::vector<ReturnResult> returned_;       ///< per integration point, for the last increments solved
     RunTimings timings_;
     std::string last_singular_;  ///< why the last try's matrix could not be factorised
+    /// What the factor held by system_ was computed from, for the next increment (see the file
+    /// comment): usable only after a converged try, with the same closed contacts.
+    struct HeldFactor {
+        bool usable = false;
+        bool tangent = false;  ///< the algorithmic tangent, not the elastic matrix
+        std::vector<long long> closed;  ///< per closed contact: node, edge and state, packed
+    };
+    HeldFactor held_;
+    std::vector<long long> closed_signature(const std::vector<Contact>& contacts) const;
     std::optional<CollapseBracket> collapse_;
 };
 

@@ -88,7 +88,9 @@ TEST(BlockMesher, EveryExampleMeshesAtItsRequestedAngle) {
         const double requested = p.model.mesh.min_angle * 180.0 / M_PI;
         const double achievable = std::min(requested, p.statistics.min_input_angle_deg);
         EXPECT_GE(p.statistics.min_angle_deg, achievable - 1e-9) << file;
-        EXPECT_GT(p.statistics.elements, 1000) << file;
+        // Real meshes, not a handful of triangles (the coarsest example, the flexible footing
+        // of the speed benchmark, has 498).
+        EXPECT_GT(p.statistics.elements, 400) << file;
     }
 }
 

@@ -1,7 +1,8 @@
 // Rigid smooth strip footing on weightless undrained clay (the paper's parameters,
 // docs/examples.md): the pressure grows step by step until the soil fails; Prandtl:
 // q/cu = 2 + π = 5.142. The collapse load must belong to the soil, not to the solver's
-// settings: the same bracket for another load step and for four times the iteration cap.
+// settings: the same bracket for another load step and for four times the iteration cap. The
+// flexible footing (examples/prandtl-flexible-footing.json) fails at the same load.
 
 #include "RunModel.hpp"
 
@@ -19,9 +20,9 @@ const double prandtl = 2.0 + M_PI;
 
 using mcdda::test::CollapseRun;
 
-/// The Prandtl example with overrides; loads as q/cu.
-CollapseRun run_footing(const std::vector<std::string>& overrides) {
-    CollapseRun r = mcdda::test::run_to_collapse("prandtl-footing.json", overrides);
+/// A Prandtl example with overrides; loads as q/cu.
+CollapseRun run_footing(const std::vector<std::string>& overrides, const std::string& file = "prandtl-footing.json") {
+    CollapseRun r = mcdda::test::run_to_collapse(file, overrides);
     for (double& q : r.load) q /= cu;
     r.carried /= cu;
     r.not_carried /= cu;
@@ -55,6 +56,25 @@ TEST(Prandtl, CollapseAtTwoPlusPiIndependentOfLoadStepAndIterationCap) {
     const CollapseRun other = run_footing({"/edge_pressures/0/pressure=10000", "/analysis/plastic_iterations=2000"});
     expect_prandtl(other, "10 kPa steps, 4x iteration cap");
     EXPECT_NEAR(other.carried, shipped.carried, 0.002 * prandtl);
+}
+
+// The flexible footing (a pressure on the soil, no footing block) on the load sequence of the
+// reference program of scripts/bench-prandtl.sh: 200 kPa in the first step (an elastic increment
+// beyond the displacement limit, once a "time step fell below its floor" failure), then 100, 50,
+// 50, 50, 30 and 1 kPa per step. Bisecting the last increment to 1/64 or not at all (the
+// reference's resolution) must give overlapping brackets.
+TEST(Prandtl, FlexibleFootingOnTheReferenceLoadSequence) {
+    const std::vector<std::string> sequence = {
+        "/edge_pressures/0/pressure=1000", "/analysis/steps=80",
+        "/load_tables/0/points=[[0,0],[1,200],[2,300],[3,350],[4,400],[5,450],[6,480],[7,481]]"};
+    const CollapseRun bisected = run_footing(sequence, "prandtl-flexible-footing.json");
+    expect_prandtl(bisected, "flexible footing, reference load sequence");
+    std::vector<std::string> whole = sequence;
+    whole.push_back("/analysis/min_load_fraction=1");
+    const CollapseRun unbisected = run_footing(whole, "prandtl-flexible-footing.json");
+    expect_prandtl(unbisected, "flexible footing, reference load sequence, no bisection");
+    EXPECT_GE(bisected.carried, unbisected.carried);
+    EXPECT_LT(bisected.carried, unbisected.not_carried);
 }
 
 // Displacement control: the footing's top is pushed down 10 mm per step instead of loaded. The

@@ -4,7 +4,11 @@
 //
 // First recorded on the initial-stress engine (commit 2df2356), re-recorded on the equilibrium-
 // iteration engine of issue 9 (Newton with the consistent tangent for ψ = φ, Anderson-accelerated
-// elastic iterations otherwise, load bisection, stricter contact detection), three-node triangles.
+// elastic iterations otherwise, load bisection, stricter contact detection), three-node triangles;
+// the Prandtl case again when Newton began its increments with the last converged tangent (its
+// stresses moved by less than the equilibrium tolerance); Lavarak (moved by ~1e-5 relative) when
+// the Anderson mixing of models without closed contacts went on below the force tolerance, and
+// Salençon when its example became small-strain (`"geometry": "initial"`).
 // After a deliberate change, rerun with MCDDA_RECORD_BASELINE=1 and state the reason in the commit.
 //
 //   MCDDA_RECORD_BASELINE=1 ./mcdda_validation_tests --gtest_filter='*RegressionBaseline*'
