@@ -2,6 +2,7 @@
 
 #include "fem/BoundaryConditions.hpp"
 #include "geometry/BlockCutter.hpp"
+#include "geometry/BlockFeatures.hpp"
 #include "geometry/JointSets.hpp"
 #include "geometry/PolygonChecks.hpp"
 #include "io/ModelReader.hpp"
@@ -38,6 +39,7 @@ void run_pipeline(Preprocessed& p, PreprocessStage last) {
         if (!has_errors(p.diagnostics) && p.blocks.empty())
             p.diagnostics.push_back({Diagnostic::Severity::Error, "/regions", "the regions form no block"});
         // What the run would refuse, refused here already (so `mcdda check` does).
+        if (!has_errors(p.diagnostics)) check_block_features(p.model, p.blocks, p.diagnostics);
         if (!has_errors(p.diagnostics)) check_supports_on_blocks(p.model, p.blocks, p.diagnostics);
         if (has_errors(p.diagnostics) || last != PreprocessStage::Mesh) {
             p.ok = !has_errors(p.diagnostics);

@@ -101,6 +101,8 @@ int run_run(const Request& r) {
         return exit_output_error;
     }
     if (status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(status) << ": " << message << "\n";
+    if (status != RunStatus::Completed && status != RunStatus::Collapsed && !output->kept_results().empty())
+        std::cerr << "the earlier results are kept in " << output->kept_results() << "\n";
     if (!r.quiet)
         std::cout << status_name(status) << ": " << simulation->state().step << " steps, t = " << simulation->state().time
                   << " s; results in " << r.out << "\n";

@@ -135,6 +135,8 @@ void RunController::start()
             message += (message.empty() ? "" : "; ") + std::string("cannot write the summary: ") + e.what();
         }
     }
+    if (output && status != RunStatus::Completed && status != RunStatus::Collapsed && !output->kept_results().empty())
+        message += (message.empty() ? "" : "; ") + std::string("the earlier results are kept in ") + output->kept_results();
     emit finished(status, QString::fromStdString(message));
 }
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -59,6 +60,18 @@ void render_scene_png(const std::function<void(vtkRenderer*)>& build, int width,
     if (!folder.empty() && !std::filesystem::is_directory(folder))
         throw std::runtime_error(who + ": cannot write " + path + ": folder " + folder.string() +
                                  " does not exist");
+    // Whether the file can be written is known before rendering, with the system's reason
+    // (VTK's PNG writer reports any failure to open as "Ran out of disk space").
+    if (std::FILE* probe = std::fopen(temporary.string().c_str(), "wb")) {
+        std::fclose(probe);
+    } else {
+        const std::string reason = std::strerror(errno);
+        throw std::runtime_error(who + ": cannot write " + path + ": " + reason);
+    }
+    struct RemoveTemporary {  // whatever fails below, no stray .tmp file stays behind
+        const std::filesystem::path& file;
+        ~RemoveTemporary() { remove_quietly(file); }
+    } cleanup{temporary};
 
     vtkNew<vtkRenderWindow> window;
     window->SetDisplayId(connection.get());
@@ -87,7 +100,11 @@ void render_scene_png(const std::function<void(vtkRenderer*)>& build, int width,
     writer->SetFileName(temporary.string().c_str());
     writer->SetInputConnection(grab->GetOutputPort());
     errno = 0;
+    // Failures are reported below in words; VTK's own log lines would only repeat them.
+    const int warnings = vtkObject::GetGlobalWarningDisplay();
+    vtkObject::SetGlobalWarningDisplay(0);
     writer->Write();
+    vtkObject::SetGlobalWarningDisplay(warnings);
     if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temporary)) {
         const std::string reason = errno != 0 ? std::strerror(errno) : "the PNG writer failed";
         remove_quietly(temporary);

@@ -1,6 +1,7 @@
 #include "fem/BoundaryConditions.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace mcdda {
 
@@ -35,6 +36,34 @@ bool along_block_boundary(const std::vector<Block>& blocks, Point2 a, Point2 b, 
     return false;
 }
 
+/// True when `p` lies in a block or within `tolerance` of a block's boundary.
+bool on_some_block(const std::vector<Block>& blocks, Point2 p, double tolerance) {
+    auto inside = [&](const Ring& ring) {  // crossing number
+        bool in = false;
+        for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+            const Point2 a = ring[i], b = ring[j];
+            if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+        }
+        return in;
+    };
+    auto near = [&](const Ring& ring) {
+        for (std::size_t i = 0; i < ring.size(); ++i)
+            if (on_segment(p, ring[i], ring[(i + 1) % ring.size()], tolerance)) return true;
+        return false;
+    };
+    for (const Block& block : blocks) {
+        if (block.outer.size() < 3) continue;
+        if (near(block.outer)) return true;
+        bool in = inside(block.outer);
+        for (const Ring& hole : block.holes) {
+            if (near(hole)) return true;
+            if (in && inside(hole)) in = false;
+        }
+        if (in) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 void check_supports_on_blocks(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics) {
@@ -52,6 +81,23 @@ void check_supports_on_blocks(const Model& model, const std::vector<Block>& bloc
             diagnostics.push_back({Diagnostic::Severity::Error, "/edge_pressures/" + std::to_string(i),
                                    "pressure \"" + e.name + "\" lies along no block boundary"});
     }
+    // Points go to the nearest node, wherever they are: one outside every block is a mistake
+    // (a typo in a coordinate) that would otherwise load, fix or measure some corner silently.
+    auto check_point = [&](Point2 p, const std::string& path, const std::string& what) {
+        if (on_some_block(blocks, p, 1e3 * tolerance)) return;
+        std::ostringstream text;
+        text << what << " at (" << p.x << ", " << p.y << ") lies outside every block";
+        diagnostics.push_back({Diagnostic::Severity::Error, path, text.str()});
+    };
+    for (std::size_t i = 0; i < model.point_loads.size(); ++i)
+        check_point(model.point_loads[i].point, "/point_loads/" + std::to_string(i) + "/point",
+                    "point load \"" + model.point_loads[i].name + "\"");
+    for (std::size_t i = 0; i < model.fixed_points.size(); ++i)
+        check_point(model.fixed_points[i].point, "/fixed_points/" + std::to_string(i) + "/point",
+                    "fixed point \"" + model.fixed_points[i].name + "\"");
+    for (std::size_t i = 0; i < model.measurement_points.size(); ++i)
+        check_point(model.measurement_points[i].point, "/measurement_points/" + std::to_string(i) + "/point",
+                    "measurement point \"" + model.measurement_points[i].name + "\"");
 }
 
 BoundaryConditions locate_boundary_conditions(const Model& model, const Mesh& mesh, const MeshTopology& topology,

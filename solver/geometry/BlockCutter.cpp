@@ -1,5 +1,6 @@
 #include "geometry/BlockCutter.hpp"
 
+#include "geometry/BlockFeatures.hpp"
 #include "geometry/PolygonChecks.hpp"
 #include "model/ModelValidator.hpp"
 
@@ -14,6 +15,7 @@
 #include <queue>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace mcdda {
 
@@ -114,6 +116,85 @@ std::string length_text(double metres) {
     return out.str();
 }
 
+
+/// The joints' polylines with every region vertex that lies within `tolerance` of a joint made
+/// a vertex of it: a joint drawn through a corner (a joint set through a tunnel's polygon) then
+/// passes exactly through it instead of a rounding error away, which would leave an edge of
+/// 1e-16 m that no mesher can resolve. The joint moves by less than the tolerance.
+std::vector<std::vector<Point2>> joints_through_nearby_vertices(const Model& model, double tolerance) {
+    std::vector<Point2> anchors;
+    for (const Region& r : model.regions) {
+        anchors.insert(anchors.end(), r.boundary.begin(), r.boundary.end());
+        for (const Ring& h : r.holes) anchors.insert(anchors.end(), h.begin(), h.end());
+    }
+    std::vector<std::vector<Point2>> out;
+    out.reserve(model.joints.size());
+    if (anchors.empty() || !(tolerance > 0.0)) {
+        for (const Joint& j : model.joints) out.push_back(j.points);
+        return out;
+    }
+    Point2 low = anchors.front(), high = low;
+    for (const Point2& p : anchors) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    // Anchors binned in cells sized so that there are about as many cells as anchors.
+    const double extent = std::max(high.x - low.x, high.y - low.y);
+    const double cell = std::max(extent / std::max(1.0, std::sqrt(static_cast<double>(anchors.size()))), 4.0 * tolerance);
+    auto index = [&](double v, double origin) { return static_cast<long long>(std::floor((v - origin) / cell)); };
+    auto key = [](long long i, long long j) { return (i << 32) ^ (j & 0xffffffffLL); };
+    std::unordered_map<long long, std::vector<int>> bins;
+    for (std::size_t k = 0; k < anchors.size(); ++k) bins[key(index(anchors[k].x, low.x), index(anchors[k].y, low.y))].push_back(static_cast<int>(k));
+    for (const Joint& joint : model.joints) {
+        // The polyline's points and the anchors near each segment, in order along it.
+        std::vector<std::pair<Point2, bool>> sequence;  // point, is an anchor
+        for (std::size_t s = 0; s < joint.points.size(); ++s) {
+            const Point2 a = joint.points[s];
+            sequence.push_back({a, false});
+            if (s + 1 == joint.points.size()) break;
+            const Point2 b = joint.points[s + 1];
+            const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+            if (!(length2 > 0.0)) continue;
+            std::vector<std::pair<double, int>> near;  // position along the segment, anchor
+            std::set<int> seen;
+            const int pieces = static_cast<int>(std::ceil(std::sqrt(length2) / cell)) + 1;
+            for (int p = 0; p <= pieces; ++p) {
+                const double t = static_cast<double>(p) / pieces;
+                const long long i = index(a.x + t * dx, low.x), j = index(a.y + t * dy, low.y);
+                for (long long di = -1; di <= 1; ++di)
+                    for (long long dj = -1; dj <= 1; ++dj) {
+                        const auto it = bins.find(key(i + di, j + dj));
+                        if (it == bins.end()) continue;
+                        for (int k : it->second) {
+                            if (!seen.insert(k).second) continue;
+                            const Point2 q = anchors[k];
+                            const double u = std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / length2, 0.0, 1.0);
+                            if (std::hypot(q.x - (a.x + u * dx), q.y - (a.y + u * dy)) < tolerance) near.push_back({u, k});
+                        }
+                    }
+            }
+            std::sort(near.begin(), near.end());
+            for (const auto& [u, k] : near) sequence.push_back({anchors[k], true});
+        }
+        // Points closer than the tolerance merge, into the anchor where there is one.
+        std::vector<Point2> path;
+        bool last_is_anchor = false;
+        for (const auto& [q, is_anchor] : sequence) {
+            if (!path.empty() && std::hypot(q.x - path.back().x, q.y - path.back().y) < tolerance) {
+                if (is_anchor && !last_is_anchor) {
+                    path.back() = q;
+                    last_is_anchor = true;
+                }
+                continue;
+            }
+            path.push_back(q);
+            last_is_anchor = is_anchor;
+        }
+        out.push_back(std::move(path));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagnostics) {
@@ -122,8 +203,19 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
         add_ring(curves, model.regions[r].boundary, region_id(static_cast<int>(r)));
         for (const Ring& h : model.regions[r].holes) add_ring(curves, h, region_id(static_cast<int>(r)));
     }
+    double size = 0.0;
+    if (!model.regions.empty() && !model.regions.front().boundary.empty()) {
+        Point2 low = model.regions.front().boundary.front(), high = low;
+        for (const Region& r : model.regions)
+            for (const Point2& p : r.boundary) {
+                low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+                high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+            }
+        size = std::hypot(high.x - low.x, high.y - low.y);
+    }
+    const auto joint_paths = joints_through_nearby_vertices(model, smallest_feature_ratio * size);
     for (std::size_t j = 0; j < model.joints.size(); ++j) {
-        const auto& pts = model.joints[j].points;
+        const auto& pts = joint_paths[j];
         for (std::size_t k = 1; k < pts.size(); ++k) {
             if (pts[k].x == pts[k - 1].x && pts[k].y == pts[k - 1].y) continue;
             curves.emplace_back(Kernel::Segment_2({pts[k - 1].x, pts[k - 1].y}, {pts[k].x, pts[k].y}),

@@ -65,7 +65,22 @@ public:
             if (!known.count(it.key())) {
                 std::string list;
                 for (const char* k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
-                error(path + "/" + it.key(), "unknown key \"" + it.key() + "\" (expected one of: " + list + ")");
+                // The key as JSON text (quotes, escapes); a very long one is shortened and named
+                // by its parent's pointer, so that a 10 MB key is not printed (twice).
+                constexpr std::size_t longest = 60;
+                const std::string& key = it.key();
+                if (key.size() <= longest) {
+                    std::string escaped;  // JSON pointer escapes: ~ → ~0, / → ~1
+                    for (char c : key) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+                    error(path + "/" + escaped,
+                          "unknown key " + json(key).dump() + " (expected one of: " + list + ")");
+                } else {
+                    std::size_t cut = longest;  // not inside a UTF-8 sequence
+                    while (cut > 0 && (static_cast<unsigned char>(key[cut]) & 0xC0) == 0x80) --cut;
+                    error(path.empty() ? "/" : path,
+                          "unknown key " + json(key.substr(0, cut)).dump() + "... (" + std::to_string(key.size()) +
+                              " characters; expected one of: " + list + ")");
+                }
             }
         }
     }

@@ -9,6 +9,14 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 constexpr double max_coordinate = 1e7;  // m; beyond this the model is surely in the wrong units
+// Beyond these a value is no physical input but a typo or a unit error; the solver would spend
+// minutes on it or overflow (issue 10). The pressure at the Earth's centre is 3.6e11 Pa, the
+// stiffest solid (diamond) has E ≈ 1.2e12 Pa, the densest metal 22,600 kg/m³, and geotechnical
+// centrifuges spin at up to a few hundred g.
+constexpr double max_stress = 1e12;    // Pa: strengths, pressures, in-situ stresses
+constexpr double max_modulus = 1e14;   // Pa: leaves room for "rigid" footings and plates
+constexpr double max_density = 1e5;    // kg/m³
+constexpr double max_gravity = 1e4;    // m/s², about 1,000 g
 
 std::string num(double v) {
     std::ostringstream out;
@@ -30,6 +38,13 @@ public:
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::fabs(p.x) > max_coordinate ||
             std::fabs(p.y) > max_coordinate)
             error(path, "coordinates (" + num(p.x) + ", " + num(p.y) + ") are beyond ±1e7 m");
+    }
+
+    /// An error when |value| exceeds `limit` (finite values only; others are checked elsewhere).
+    void at_most(double value, double limit, const std::string& path, const std::string& what, const std::string& unit) {
+        if (std::isfinite(value) && std::fabs(value) > limit)
+            error(path, what + " of " + num(value) + " " + unit + " is beyond any physical value (at most " + num(limit) +
+                            " " + unit + "): check the units");
     }
 
 private:
@@ -59,6 +74,10 @@ void check_materials(Checker& c, const Model& m) {
             c.error(path, "a plastic material needs cohesion or friction (both are zero)");
         if (m.analysis.kind == AnalysisSettings::Kind::Dynamic && !(mat.density > 0.0))
             c.error(path + "/density", "a dynamic analysis needs a positive density (or unit weight)");
+        c.at_most(mat.young_modulus, max_modulus, path + "/young_modulus", "Young's modulus", "Pa");
+        c.at_most(mat.density, max_density, path + "/density", "density", "kg/m³");
+        c.at_most(mat.cohesion, max_stress, path + "/cohesion", "cohesion", "Pa");
+        c.at_most(mat.tensile_strength, max_stress, path + "/tensile_strength", "tensile strength", "Pa");
     }
     for (std::size_t i = 0; i < m.joint_materials.size(); ++i) {
         const JointMaterial& j = m.joint_materials[i];
@@ -160,6 +179,26 @@ void check_boundary_conditions(Checker& c, const Model& m) {
         const EdgePressure& e = m.edge_pressures[i];
         const std::string path = "/edge_pressures/" + std::to_string(i);
         if (e.from.x == e.to.x && e.from.y == e.to.y) c.error(path, "from and to are the same point");
+        c.at_most(e.pressure, max_stress, path + "/pressure", "pressure", "Pa");
+    }
+    c.at_most(std::hypot(m.gravity.x, m.gravity.y), max_gravity, "/gravity", "gravity", "m/s²");
+    if (m.initial_stress.kind == InitialStress::Kind::Uniform) {
+        const char* keys[] = {"sxx", "syy", "sxy"};
+        for (int k = 0; k < 3; ++k)
+            c.at_most(m.initial_stress.stress[k], max_stress, std::string("/initial_stress/") + keys[k], "in-situ stress", "Pa");
+        if (m.initial_stress.stress_zz) c.at_most(*m.initial_stress.stress_zz, max_stress, "/initial_stress/szz", "in-situ stress", "Pa");
+    }
+    if (m.initial_stress.kind == InitialStress::Kind::Gravity) {
+        if (!(std::fabs(m.initial_stress.surface_y) <= max_coordinate))
+            c.error("/initial_stress/surface_y", "surface_y " + num(m.initial_stress.surface_y) + " m is beyond ±1e7 m");
+        // The vertical stress at the model's lowest point.
+        double lowest = m.initial_stress.surface_y, heaviest = 0.0;
+        for (const Region& r : m.regions)
+            for (const Point2& p : r.boundary) lowest = std::min(lowest, p.y);
+        for (const Material& mat : m.materials) heaviest = std::max(heaviest, mat.density);
+        const double deepest = heaviest * std::hypot(m.gravity.x, m.gravity.y) * (m.initial_stress.surface_y - lowest);
+        if (std::fabs(m.initial_stress.surface_y) <= max_coordinate)
+            c.at_most(deepest, max_stress, "/initial_stress/surface_y", "the in-situ vertical stress at the model's base", "Pa");
     }
     for (std::size_t i = 0; i < m.load_tables.size(); ++i) {
         const LoadTable& t = m.load_tables[i];

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -26,21 +27,68 @@ const char* status_name(RunStatus s) {
     return "unknown";
 }
 
+namespace {
+
+/// Did the run whose summary.json is in `directory` end with results (completed or collapsed)?
+bool ended_with_results(const fs::path& directory) {
+    std::ifstream in(directory / "summary.json");
+    if (!in) return false;  // killed: no summary was written
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.is_object() || !j.contains("status") || !j["status"].is_string()) return false;
+    const std::string status = j["status"].get<std::string>();
+    return status == status_name(RunStatus::Completed) || status == status_name(RunStatus::Collapsed);
+}
+
+}  // namespace
+
 RunOutput::RunOutput(std::string directory, std::string model_stem)
     : directory_(std::move(directory)), stem_(std::move(model_stem)) {
     std::error_code ec;
     fs::create_directories(directory_, ec);
     if (!fs::is_directory(directory_))
         throw std::runtime_error("cannot create the output directory " + directory_ + ": " + ec.message());
-    // Results of an earlier run in the same directory would mix with these.
-    for (const auto& entry : fs::directory_iterator(directory_)) {
+    // An earlier run's files: collections and steps, the history and the summary.
+    const fs::path dir(directory_);
+    std::vector<fs::path> earlier;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
         const std::string name = entry.path().filename().string();
-        if (name.rfind(stem_ + "_", 0) == 0 && entry.path().extension() == ".vtu") fs::remove(entry.path(), ec);
+        if (!entry.is_regular_file()) continue;
+        // Step files of any model: <stem>_NNNNNN.vtu (the mesh command's <stem>.vtu stays).
+        const bool step_file = name.size() > 11 && name.compare(name.size() - 4, 4, ".vtu") == 0 &&
+                               name[name.size() - 11] == '_' &&
+                               std::all_of(name.end() - 10, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
+        if (name == "history.csv" || name == "summary.json" || entry.path().extension() == ".pvd" || step_file)
+            earlier.push_back(entry.path());
     }
-    const std::string history = (fs::path(directory_) / "history.csv").string();
+    if (ec) throw std::runtime_error("cannot read the output directory " + directory_ + ": " + ec.message());
+    // Nothing may be lost if this run is killed or fails: the earlier results move aside, and
+    // the ones kept from a run before stay when the earlier run left none of its own.
+    const fs::path keep = dir / "previous";
+    const bool keep_earlier = !earlier.empty() && (ended_with_results(dir) || !fs::exists(keep));
+    if (keep_earlier) {
+        fs::remove_all(keep, ec);
+        if (!ec) fs::create_directory(keep, ec);
+        if (ec) throw std::runtime_error("cannot write into the output directory " + directory_ + ": " + ec.message());
+        for (const fs::path& p : earlier) {
+            fs::rename(p, keep / p.filename(), ec);
+            if (ec) throw std::runtime_error("cannot move the earlier results into " + keep.string() + ": " + ec.message());
+        }
+    } else {
+        for (const fs::path& p : earlier) {
+            fs::remove(p, ec);
+            if (ec) throw std::runtime_error("cannot write into the output directory " + directory_ + ": " + ec.message());
+        }
+    }
+    const std::string history = (dir / "history.csv").string();
     history_.open(history, std::ios::trunc);
     if (!history_) throw std::runtime_error("cannot write " + history);
     history_ << std::setprecision(10);
+}
+
+std::string RunOutput::kept_results() const {
+    std::error_code ec;
+    const fs::path keep = fs::path(directory_) / "previous";
+    return fs::is_directory(keep, ec) ? keep.string() : std::string();
 }
 
 void RunOutput::save_step(const Simulation& sim) {
@@ -145,6 +193,11 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
     }
     write_file_atomically((fs::path(directory_) / "summary.json").string(),
                           [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+    // This run's results replace the kept ones.
+    if (status == RunStatus::Completed || status == RunStatus::Collapsed) {
+        std::error_code ec;
+        fs::remove_all(fs::path(directory_) / "previous", ec);
+    }
 }
 
 }  // namespace mcdda

@@ -7,6 +7,11 @@
 ///                              plastic_state (0 never, 1 earlier, 2 now yielding), plastic_strain
 ///   DIR/history.csv            one row per step: step, time, load:<name>, <point>:ux, <point>:uy
 ///   DIR/summary.json           status, message, steps, time, timing breakdown
+/// A run into a folder that holds an earlier run's files first moves them into DIR/previous/
+/// (replacing what was kept there, unless the earlier run itself ended without results:
+/// killed, failed or cancelled, when the kept ones stay). They are deleted when the new run
+/// completes or collapses, and stay when it fails, is cancelled or killed: a rerun never loses
+/// the last good results.
 
 #include "run/Simulation.hpp"
 
@@ -23,7 +28,8 @@ const char* status_name(RunStatus s);
 
 class RunOutput {
 public:
-    /// Creates DIR (and parents); throws std::runtime_error when it cannot.
+    /// Creates DIR (and parents) and moves an earlier run's files aside (see the file comment);
+    /// throws std::runtime_error, with nothing changed, when it cannot.
     RunOutput(std::string directory, std::string model_stem);
 
     /// Writes the state as a saved step and adds it to the .pvd collection.
@@ -32,8 +38,11 @@ public:
     /// Appends the history row of the current step (writes the header first).
     void record_history(const Simulation& simulation);
 
-    /// Writes summary.json.
+    /// Writes summary.json; a completed or collapsed run then deletes DIR/previous/.
     void write_summary(const Simulation* simulation, RunStatus status, const std::string& message);
+
+    /// The folder holding an earlier run's results while they are kept ("" when none).
+    std::string kept_results() const;
 
     const std::string& directory() const { return directory_; }
     int saved_steps() const { return static_cast<int>(saved_.size()); }

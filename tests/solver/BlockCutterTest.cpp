@@ -159,4 +159,68 @@ TEST(BlockCutter, SupportsAndPressuresOffEveryBlockBoundaryAreRefusedBeforeMeshi
         << all_messages(bad.diagnostics);
     EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/edge_pressures/0", "lies along no block boundary"))
         << all_messages(bad.diagnostics);
+
+    // Points outside every block (a typo in a coordinate) went to the nearest node silently.
+    const Preprocessed points = preprocess_text(
+        square_model_json(),
+        {R"(/point_loads=[{"name": "push", "point": [500, 5], "force": [1, 0]}])",
+         R"(/fixed_points=[{"name": "pin", "point": [5, -3]}])",
+         R"(/measurement_points=[{"name": "inside", "point": [5, 5]}, {"name": "corner", "point": [10, 10]},
+                                 {"name": "off", "point": [11, 5]}])"},
+        PreprocessStage::Cut);
+    EXPECT_FALSE(points.ok);
+    EXPECT_TRUE(has_diagnostic(points.diagnostics, Severity::Error, "/point_loads/0/point",
+                               "point load \"push\" at (500, 5) lies outside every block"))
+        << all_messages(points.diagnostics);
+    EXPECT_TRUE(has_diagnostic(points.diagnostics, Severity::Error, "/fixed_points/0/point", "outside every block"));
+    EXPECT_TRUE(has_diagnostic(points.diagnostics, Severity::Error, "/measurement_points/2/point", "outside every block"));
+    EXPECT_FALSE(has_diagnostic(points.diagnostics, Severity::Error, "/measurement_points/0/point", "outside"));
+    EXPECT_FALSE(has_diagnostic(points.diagnostics, Severity::Error, "/measurement_points/1/point", "outside"));
+}
+
+// Features far below the model's size cannot be meshed (CGAL's refinement crashed or spun on
+// them, issue 10): `check` already refuses them, naming the block, region and place.
+TEST(BlockCutter, SliversAndNearlyCoincidentVerticesAreRefusedWithTheirPlace) {
+    const Preprocessed sliver = preprocess_text(square_model_json(), {"/regions/0/boundary=[[0,0],[10,0],[10,1e-9]]"},
+                                                PreprocessStage::Cut);
+    EXPECT_FALSE(sliver.ok);
+    EXPECT_TRUE(has_diagnostic(sliver.diagnostics, Severity::Error, "/regions/0", "an edge 1e-09 m long near (10, 0)"))
+        << all_messages(sliver.diagnostics);
+
+    // A vertex a denormal number away from its neighbour.
+    const Preprocessed close = preprocess_text(
+        square_model_json(), {"/regions/0/boundary=[[0,0],[10,0],[10,10],[5e-324,10],[0,10]]"}, PreprocessStage::Cut);
+    EXPECT_FALSE(close.ok);
+    EXPECT_TRUE(has_diagnostic(close.diagnostics, Severity::Error, "/regions/0", "cannot be meshed"))
+        << all_messages(close.diagnostics);
+
+    // A thin spike: a vertex 1e-8 m from an edge it does not end (no short edge).
+    const Preprocessed spike = preprocess_text(
+        square_model_json(), {"/regions/0/boundary=[[0,0],[10,0],[10,10],[5,1e-8],[0,10]]"}, PreprocessStage::Cut);
+    EXPECT_FALSE(spike.ok);
+    EXPECT_TRUE(has_diagnostic(spike.diagnostics, Severity::Error, "/regions/0", "from an edge it does not end"))
+        << all_messages(spike.diagnostics);
+
+    // A millimetre is far above the limit (1e-6 of the model's size): accepted.
+    const Preprocessed fine = preprocess_text(
+        square_model_json(), {"/regions/0/boundary=[[0,0],[10,0],[10,10],[5,0.001],[0,10]]"}, PreprocessStage::Cut);
+    EXPECT_TRUE(fine.ok) << all_messages(fine.diagnostics);
+}
+
+// A joint drawn through vertices of a hole's polygon (a joint set through a tunnel): in floating
+// point it misses them by ~1e-16 m, which left edges of that length in both blocks and crashed the
+// mesher. The joint is routed through the vertices instead, and the model meshes.
+TEST(BlockCutter, AJointThroughPolygonVerticesPassesExactlyThroughThem) {
+    const std::vector<std::string> overrides = {
+        "/regions/0/boundary=[[-20,-20],[20,-20],[20,20],[-20,20]]",
+        R"(/regions/0/holes=[{"circle": {"center": [0, 0], "radius": 3, "segments": 64}}])",
+        R"(/joints=[{"name": "diagonal", "points": [[-20,-20],[20,20]]}])", "/rollers=[]",
+        R"(/rollers/-={"name": "base", "from": [-20,-20], "to": [20,-20], "fixed": "xy"})",
+        R"(/mesh={"size": 2, "min_angle": 28})"};
+    const Preprocessed p = preprocess_text(square_model_json(), overrides, PreprocessStage::Mesh);
+    ASSERT_TRUE(p.ok) << all_messages(p.diagnostics);
+    EXPECT_EQ(p.blocks.size(), 2u);
+    EXPECT_NEAR(total_area(p.blocks), 1600.0 - 64 * 0.5 * 9 * std::sin(2 * M_PI / 64), 1e-6);
+    EXPECT_GT(p.statistics.elements, 100);
+    EXPECT_GE(p.statistics.min_angle_deg, 28.0 - 1e-9);
 }

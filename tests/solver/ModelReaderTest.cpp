@@ -58,6 +58,21 @@ TEST(ModelReader, MalformedJsonReportsLineAndColumn) {
     EXPECT_NE(r.diagnostics[0].message.find("malformed JSON"), std::string::npos);
 }
 
+// A 10 MB key was printed in full twice (pointer and message, issue 10); '/' and '~' in a key
+// must be escaped in its pointer.
+TEST(ModelReader, AVeryLongOrOddUnknownKeyIsShownShortAndEscaped) {
+    std::string text = square_model_json();
+    const std::string key(1 << 20, 'x');
+    text.insert(text.find("\"name\": \"rock\""), "\"" + key + "\": 1, ");
+    const ReadResult r = read_model_text(text, {"/materials/0/a~0b~1c=1"});
+    EXPECT_FALSE(r.model);
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/materials/0", "(1048576 characters;"))
+        << all_messages(r.diagnostics).substr(0, 2000);
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/materials/0/a~0b~1c", "unknown key \"a~b/c\""))
+        << all_messages(r.diagnostics).substr(0, 2000);
+    for (const Diagnostic& d : r.diagnostics) EXPECT_LT(d.path.size() + d.message.size(), 1000u);
+}
+
 TEST(ModelReader, UnknownKeysMissingFieldsAndWrongTypesAreNamed) {
     const ReadResult r = read_model_text(square_model_json(),
                                          {"/materials/0/youngs_modulus=1e9", "/regions/0/material=\"granite\"",

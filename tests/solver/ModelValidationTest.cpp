@@ -168,3 +168,26 @@ TEST(ModelValidation, LoadTablesNeedNamesPointsAndExistingReferences) {
     EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/point_loads/1/table", "missing load table")) << all_messages(d);
     EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/edge_pressures/0/table", "missing load table")) << all_messages(d);
 }
+
+// Absurd magnitudes (a typo, a unit error) used to be accepted and then ran for minutes or
+// reported nonsense collapses (issue 10): they are refused with the value and the limit.
+TEST(ModelValidation, AbsurdMagnitudesAreRefused) {
+    expect_error({"/gravity=[0, -9.2e18]"}, "/gravity", "beyond any physical value");
+    expect_error({"/materials/0/young_modulus=1e20"}, "/materials/0/young_modulus", "check the units");
+    expect_error({"/materials/0/density=2.5e9"}, "/materials/0/density", "beyond any physical value");
+    expect_error({"/materials/0/cohesion=1e15"}, "/materials/0/cohesion", "beyond any physical value");
+    expect_error({"/gravity=[0, -9.81]", R"(/initial_stress={"type": "gravity", "surface_y": 1e30, "k0": 0.5})"},
+                 "/initial_stress/surface_y", "beyond ±1e7 m");
+    expect_error({"/gravity=[0, -9.81]", R"(/initial_stress={"type": "gravity", "surface_y": 9e6, "k0": 0.5})",
+                  "/materials/0/density=90000"},
+                 "/initial_stress/surface_y", "in-situ vertical stress at the model's base");
+    expect_error({R"(/initial_stress={"type": "uniform", "sxx": 1e13, "syy": 1e6})"}, "/initial_stress/sxx",
+                 "beyond any physical value");
+    // Large but physical values pass: 200 g, a 10 km overburden, a "rigid" plate.
+    const Preprocessed p = preprocess_text(
+        square_model_json(),
+        {"/gravity=[0, -1962]", R"(/initial_stress={"type": "gravity", "surface_y": 10000, "k0": 0.5})",
+         "/materials/0/young_modulus=1e13"},
+        PreprocessStage::Cut);
+    EXPECT_TRUE(p.ok) << all_messages(p.diagnostics);
+}

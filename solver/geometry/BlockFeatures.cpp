@@ -1,0 +1,149 @@
+#include "geometry/BlockFeatures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+#include <vector>
+
+namespace mcdda {
+
+namespace {
+
+struct Edge {
+    Point2 a, b;
+    int ring = 0, from = 0, to = 0;  ///< vertex indices within the ring
+};
+
+double distance_to_segment(Point2 p, Point2 a, Point2 b) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double length2 = dx * dx + dy * dy;
+    double t = length2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / length2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+std::string metres(double value) {
+    std::ostringstream out;
+    out.precision(3);
+    out << value << " m";
+    return out.str();
+}
+
+}  // namespace
+
+std::optional<SmallFeature> find_small_feature(const Block& block, double tolerance) {
+    std::vector<const Ring*> rings{&block.outer};
+    for (const Ring& h : block.holes) rings.push_back(&h);
+    std::vector<Edge> edges;
+    double perimeter = 0.0;
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+        const Ring& ring = *rings[r];
+        const int n = static_cast<int>(ring.size());
+        for (int k = 0; k < n; ++k) {
+            const Edge e{ring[k], ring[(k + 1) % n], static_cast<int>(r), k, (k + 1) % n};
+            const double length = std::hypot(e.b.x - e.a.x, e.b.y - e.a.y);
+            if (!(length >= tolerance))
+                return SmallFeature{length, e.a, "an edge " + metres(length) + " long"};
+            perimeter += length;
+            edges.push_back(e);
+        }
+    }
+    if (edges.empty()) return std::nullopt;
+    // Edges binned in square cells about as large as an average edge (never below the
+    // tolerance): a vertex is compared with the edges of its own and the neighbouring cells.
+    const double cell = std::max(perimeter / static_cast<double>(edges.size()), 2.0 * tolerance);
+    Point2 low = edges.front().a;
+    for (const Edge& e : edges) low = {std::min({low.x, e.a.x, e.b.x}), std::min({low.y, e.a.y, e.b.y})};
+    auto index = [&](double v, double origin) { return static_cast<long long>(std::floor((v - origin) / cell)); };
+    auto key = [](long long i, long long j) { return (i << 32) ^ (j & 0xffffffffLL); };
+    std::unordered_map<long long, std::vector<int>> bins;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        const Edge& e = edges[k];
+        const long long i0 = index(std::min(e.a.x, e.b.x), low.x), i1 = index(std::max(e.a.x, e.b.x), low.x);
+        const long long j0 = index(std::min(e.a.y, e.b.y), low.y), j1 = index(std::max(e.a.y, e.b.y), low.y);
+        // A long edge crossing many cells is binned along its bounding box only when that box is
+        // thin; otherwise cell by cell along the edge (with one cell of margin).
+        if ((i1 - i0 + 1) * (j1 - j0 + 1) <= 64) {
+            for (long long i = i0; i <= i1; ++i)
+                for (long long j = j0; j <= j1; ++j) bins[key(i, j)].push_back(static_cast<int>(k));
+            continue;
+        }
+        const double length = std::hypot(e.b.x - e.a.x, e.b.y - e.a.y);
+        const int pieces = static_cast<int>(std::ceil(length / cell)) + 1;
+        long long last = 0;
+        bool any = false;
+        for (int s = 0; s <= pieces; ++s) {
+            const double t = static_cast<double>(s) / pieces;
+            const long long i = index(e.a.x + t * (e.b.x - e.a.x), low.x), j = index(e.a.y + t * (e.b.y - e.a.y), low.y);
+            for (long long di = -1; di <= 1; ++di)
+                for (long long dj = -1; dj <= 1; ++dj) {
+                    const long long kk = key(i + di, j + dj);
+                    if (any && kk == last) continue;
+                    auto& bin = bins[kk];
+                    if (bin.empty() || bin.back() != static_cast<int>(k)) bin.push_back(static_cast<int>(k));
+                }
+            last = key(i, j);
+            any = true;
+        }
+    }
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+        const Ring& ring = *rings[r];
+        for (int v = 0; v < static_cast<int>(ring.size()); ++v) {
+            const Point2 p = ring[v];
+            const long long i = index(p.x, low.x), j = index(p.y, low.y);
+            for (long long di = -1; di <= 1; ++di)
+                for (long long dj = -1; dj <= 1; ++dj) {
+                    const auto it = bins.find(key(i + di, j + dj));
+                    if (it == bins.end()) continue;
+                    for (int k : it->second) {
+                        const Edge& e = edges[k];
+                        if (e.ring == static_cast<int>(r) && (e.from == v || e.to == v)) continue;
+                        // The same point twice (a block pinched at a vertex) is topology, not a
+                        // small feature.
+                        if ((p.x == e.a.x && p.y == e.a.y) || (p.x == e.b.x && p.y == e.b.y)) continue;
+                        const double d = distance_to_segment(p, e.a, e.b);
+                        if (d < tolerance)
+                            return SmallFeature{d, p, "a vertex " + metres(d) + " from an edge it does not end"};
+                    }
+                }
+        }
+    }
+    return std::nullopt;
+}
+
+void check_block_features(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics) {
+    if (blocks.empty()) return;
+    Point2 low = blocks.front().outer.front(), high = low;
+    for (const Block& b : blocks)
+        for (const Point2& p : b.outer) {
+            low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+            high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+        }
+    const double size = std::hypot(high.x - low.x, high.y - low.y);
+    const double tolerance = smallest_feature_ratio * size;
+    constexpr int reported = 5;
+    int found = 0;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        const auto feature = find_small_feature(blocks[i], tolerance);
+        if (!feature) continue;
+        if (++found > reported) continue;
+        const Block& b = blocks[i];
+        std::ostringstream where;
+        where.precision(9);
+        where << "(" << feature->where.x << ", " << feature->where.y << ")";
+        diagnostics.push_back(
+            {Diagnostic::Severity::Error, "/regions/" + std::to_string(b.region),
+             "block " + std::to_string(i + 1) + " of region \"" + model.regions[b.region].name + "\" has " +
+                 feature->what + " near " + where.str() + ", below " + metres(tolerance) +
+                 " (a millionth of the model's size), which cannot be meshed: a sliver of a region, "
+                 "nearly coincident vertices or joints, or a joint passing a hair's breadth from a "
+                 "vertex; move the vertex or the joint"});
+    }
+    if (found > reported)
+        diagnostics.push_back({Diagnostic::Severity::Error, "/regions",
+                               std::to_string(found - reported) + " more blocks have features below " +
+                                   metres(tolerance)});
+}
+
+}  // namespace mcdda
