@@ -9,6 +9,8 @@
 # the load carried against 2 + π and the CPU time of the whole process (user + sys), and
 # side by side the reference program's figures as measured for issue 9.
 # Usage: bash scripts/bench-prandtl.sh [quick]   (quick: the flexible footing only)
+#        OLD=path/to/other/mcdda bash scripts/bench-prandtl.sh   runs every case with that build too,
+#        in the same session, one row each ("build" column), for a side-by-side CPU comparison.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mcdda=${MCDDA:-build/app/mcdda}   # MCDDA=path/to/mcdda to use another build
@@ -18,21 +20,30 @@ mkdir -p out
 sequence=(--set /edge_pressures/0/pressure=1000 --set /analysis/steps=80 --set /analysis/output_every=1000
           --set '/load_tables/0/points=[[0,0],[1,200],[2,300],[3,350],[4,400],[5,450],[6,480],[7,481]]')
 
-# case: footing element local_size global_size floor
+# case: footing element local_size global_size floor; with OLD set, once per build
 run_case() {
-  local footing=$1 element=$2 size=$3 global=$4 floor=$5
+  run_with "$mcdda" this "$@"
+  [ -z "${OLD:-}" ] || run_with "$OLD" old "$@"
+}
+
+run_with() {
+  local binary=$1 build=$2 footing=$3 element=$4 size=$5 global=$6 floor=$7
   local model=examples/prandtl-footing.json
   [ "$footing" = flexible ] && model=examples/prandtl-flexible-footing.json
-  local out="out/bench-prandtl-$footing-$element-$size-$floor"
+  local out="out/bench-prandtl-$build-$footing-$element-$size-$floor"
   rm -rf "$out"
-  /usr/bin/time -f '%U %S' -o "$out.time" "$mcdda" run "$model" --out "$out" --quiet "${sequence[@]}" \
+  /usr/bin/time -f '%U %S' -o "$out.time" "$binary" run "$model" --out "$out" --quiet "${sequence[@]}" \
     --set /mesh/element="\"$element\"" --set /mesh/local/0/size="$size" --set /mesh/size="$global" \
     --set /analysis/min_load_fraction="$floor" >/dev/null 2>&1 || true
   local cpu
   cpu=$(tail -1 "$out.time" | awk '{print $1 + $2}')
-  python3 - "$out/summary.json" "$footing" "$element" "$size" "$floor" "$cpu" <<'PY'
+  python3 - "$out/summary.json" "$footing" "$element" "$size" "$floor" "$cpu" "$build" <<'PY'
 import json, math, sys
-s = json.load(open(sys.argv[1]))
+try:
+    s = json.load(open(sys.argv[1]))
+except (OSError, ValueError):
+    print("%-5s %-9s %-4s %-6s %-5s  no summary.json (the run did not start)" % (sys.argv[7], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5]))
+    sys.exit(0)
 c = s.get("collapse") or {}
 exact = 2 + math.pi
 q = lambda v: v / 100e3  # footing pressure (Pa) → q/cu
@@ -41,12 +52,12 @@ failed = c.get("not_carried", {}).get("loads", {}).get("footing load")
 text = "no collapse (%s)" % s.get("status") if carried is None else "%.4f – %.4f" % (q(carried), q(failed))
 error = "" if carried is None else "%+.2f %%" % (100 * (q(carried) / exact - 1))
 floor = "1/64" if abs(float(sys.argv[5]) - 1 / 64) < 1e-12 else sys.argv[5]
-print("%-9s %-4s %-6s %-5s %9d %20s %8s %10d %8s" % (sys.argv[2], sys.argv[3], sys.argv[4], floor,
+print("%-5s %-9s %-4s %-6s %-5s %9d %20s %8s %10d %8s" % (sys.argv[7], sys.argv[2], sys.argv[3], sys.argv[4], floor,
       s["model"]["elements"], text, error, s.get("factorizations", 0) or s["timing"].get("factorizations", 0), sys.argv[6]))
 PY
 }
 
-printf '%-9s %-4s %-6s %-5s %9s %20s %8s %10s %8s\n' footing elem local floor elements "collapse q/cu" error factorise "CPU (s)"
+printf '%-5s %-9s %-4s %-6s %-5s %9s %20s %8s %10s %8s\n' build footing elem local floor elements "collapse q/cu" error factorise "CPU (s)"
 for size in 0.5 0.4 0.3 0.2 0.1; do
   for floor in 0.015625 1; do run_case flexible t6 "$size" 4 "$floor"; done
 done

@@ -7,6 +7,7 @@
 #include "Commands.hpp"
 #include "VirtualDisplay.hpp"
 #include "Version.hpp"
+#include "linalg/BlasInfo.hpp"
 
 #include <iostream>
 
@@ -25,7 +26,8 @@ int main(int argc, char** argv) {
     }
     if (request->version) {
         std::cout << "mcdda " << mcdda::version_string << " (model format " << mcdda::model_format_name << " "
-                  << mcdda::model_format_version << ")\n";
+                  << mcdda::model_format_version << ")\n"
+                  << "BLAS: " << mcdda::blas_in_use() << "\n";
         return exit_ok;
     }
     try {

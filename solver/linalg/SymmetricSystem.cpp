@@ -21,9 +21,10 @@ SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()) 
     // LLᵀ in both methods: a simplicial LDLᵀ would accept an indefinite matrix (a mechanism)
     // and only stop at an exactly zero pivot.
     factor_->llt.cholmod().final_ll = 1;
-    // Supernodal only for factors with many flops per entry: on the reference BLAS the simplicial
-    // method factorised 4k–20k equations 2–2.5 times faster than CHOLMOD's default switch (40)
-    // chose; at 200k equations both pick the supernodal method (docs/plasticity.md).
+    // Supernodal only for factors with many flops per entry: the simplicial method factorised
+    // 4k–20k equations 2–2.5 times faster than CHOLMOD's default switch (40) chose, on the
+    // reference BLAS and on OpenBLAS alike; from about 20k six-node equations on both switches
+    // pick the supernodal method (docs/plasticity.md).
     factor_->llt.cholmod().supernodal_switch = 300;
 }
 SymmetricSystem::~SymmetricSystem() = default;

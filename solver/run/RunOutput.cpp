@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "io/VtuWriter.hpp"
+#include "linalg/BlasInfo.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -171,6 +172,7 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
         j["timing"] = {{"assembly", t.assembly}, {"factorization", t.factorization}, {"solve", t.solve},
                        {"contact", t.contact},   {"plasticity", t.plasticity},       {"total", t.total}};
         j["factorizations"] = t.factorizations;
+        j["blas"] = blas_in_use();  // the factorisation's speed depends on it
         j["symbolic_analyses"] = t.symbolic_analyses;
         const int steps = sim->state().step;
         j["iterations"] = {{"total", t.iterations},
