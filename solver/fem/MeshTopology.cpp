@@ -7,13 +7,6 @@
 
 namespace mcdda {
 
-double distance_to_segment(Point2 p, Point2 a, Point2 b) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double len2 = dx * dx + dy * dy;
-    const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
-    return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
-}
-
 namespace {
 
 /// The joint tag of the block ring edge that contains the mesh edge (a, b).

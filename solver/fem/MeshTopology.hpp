@@ -44,7 +44,4 @@ MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks);
 /// Index of the node nearest to `p` (the lowest index among equally near ones).
 int nearest_node(const Mesh& mesh, Point2 p);
 
-/// Distance from `p` to the segment [a, b].
-double distance_to_segment(Point2 p, Point2 a, Point2 b);
-
 }  // namespace mcdda

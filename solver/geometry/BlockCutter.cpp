@@ -142,8 +142,12 @@ std::vector<std::vector<Point2>> joints_through_nearby_vertices(const Model& mod
     const double extent = std::max(high.x - low.x, high.y - low.y);
     const double cell = std::max(extent / std::max(1.0, std::sqrt(static_cast<double>(anchors.size()))), 4.0 * tolerance);
     auto index = [&](double v, double origin) { return static_cast<long long>(std::floor((v - origin) / cell)); };
-    auto key = [](long long i, long long j) { return (i << 32) ^ (j & 0xffffffffLL); };
-    std::unordered_map<long long, std::vector<int>> bins;
+    // Cell indices packed into one key, unsigned (a neighbour of the first cell has index −1;
+    // shifting a negative number left is undefined).
+    auto key = [](long long i, long long j) {
+        return (static_cast<unsigned long long>(i) << 32) ^ (static_cast<unsigned long long>(j) & 0xffffffffULL);
+    };
+    std::unordered_map<unsigned long long, std::vector<int>> bins;
     for (std::size_t k = 0; k < anchors.size(); ++k) bins[key(index(anchors[k].x, low.x), index(anchors[k].y, low.y))].push_back(static_cast<int>(k));
     for (const Joint& joint : model.joints) {
         // The polyline's points and the anchors near each segment, in order along it.
@@ -203,16 +207,8 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
         add_ring(curves, model.regions[r].boundary, region_id(static_cast<int>(r)));
         for (const Ring& h : model.regions[r].holes) add_ring(curves, h, region_id(static_cast<int>(r)));
     }
-    double size = 0.0;
-    if (!model.regions.empty() && !model.regions.front().boundary.empty()) {
-        Point2 low = model.regions.front().boundary.front(), high = low;
-        for (const Region& r : model.regions)
-            for (const Point2& p : r.boundary) {
-                low = {std::min(low.x, p.x), std::min(low.y, p.y)};
-                high = {std::max(high.x, p.x), std::max(high.y, p.y)};
-            }
-        size = std::hypot(high.x - low.x, high.y - low.y);
-    }
+    const auto box = model.bounds();
+    const double size = std::hypot(box[2] - box[0], box[3] - box[1]);
     const auto joint_paths = joints_through_nearby_vertices(model, smallest_feature_ratio * size);
     for (std::size_t j = 0; j < model.joints.size(); ++j) {
         const auto& pts = joint_paths[j];

@@ -15,14 +15,6 @@ struct Edge {
     int ring = 0, from = 0, to = 0;  ///< vertex indices within the ring
 };
 
-double distance_to_segment(Point2 p, Point2 a, Point2 b) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double length2 = dx * dx + dy * dy;
-    double t = length2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / length2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
-
 std::string metres(double value) {
     std::ostringstream out;
     out.precision(3);
@@ -56,8 +48,12 @@ std::optional<SmallFeature> find_small_feature(const Block& block, double tolera
     Point2 low = edges.front().a;
     for (const Edge& e : edges) low = {std::min({low.x, e.a.x, e.b.x}), std::min({low.y, e.a.y, e.b.y})};
     auto index = [&](double v, double origin) { return static_cast<long long>(std::floor((v - origin) / cell)); };
-    auto key = [](long long i, long long j) { return (i << 32) ^ (j & 0xffffffffLL); };
-    std::unordered_map<long long, std::vector<int>> bins;
+    // Cell indices packed into one key, unsigned (a neighbour of the first cell has index −1;
+    // shifting a negative number left is undefined).
+    auto key = [](long long i, long long j) {
+        return (static_cast<unsigned long long>(i) << 32) ^ (static_cast<unsigned long long>(j) & 0xffffffffULL);
+    };
+    std::unordered_map<unsigned long long, std::vector<int>> bins;
     for (std::size_t k = 0; k < edges.size(); ++k) {
         const Edge& e = edges[k];
         const long long i0 = index(std::min(e.a.x, e.b.x), low.x), i1 = index(std::max(e.a.x, e.b.x), low.x);
@@ -71,14 +67,14 @@ std::optional<SmallFeature> find_small_feature(const Block& block, double tolera
         }
         const double length = std::hypot(e.b.x - e.a.x, e.b.y - e.a.y);
         const int pieces = static_cast<int>(std::ceil(length / cell)) + 1;
-        long long last = 0;
+        unsigned long long last = 0;
         bool any = false;
         for (int s = 0; s <= pieces; ++s) {
             const double t = static_cast<double>(s) / pieces;
             const long long i = index(e.a.x + t * (e.b.x - e.a.x), low.x), j = index(e.a.y + t * (e.b.y - e.a.y), low.y);
             for (long long di = -1; di <= 1; ++di)
                 for (long long dj = -1; dj <= 1; ++dj) {
-                    const long long kk = key(i + di, j + dj);
+                    const unsigned long long kk = key(i + di, j + dj);
                     if (any && kk == last) continue;
                     auto& bin = bins[kk];
                     if (bin.empty() || bin.back() != static_cast<int>(k)) bin.push_back(static_cast<int>(k));
@@ -113,14 +109,8 @@ std::optional<SmallFeature> find_small_feature(const Block& block, double tolera
 }
 
 void check_block_features(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics) {
-    if (blocks.empty()) return;
-    Point2 low = blocks.front().outer.front(), high = low;
-    for (const Block& b : blocks)
-        for (const Point2& p : b.outer) {
-            low = {std::min(low.x, p.x), std::min(low.y, p.y)};
-            high = {std::max(high.x, p.x), std::max(high.y, p.y)};
-        }
-    const double size = std::hypot(high.x - low.x, high.y - low.y);
+    const auto box = model.bounds();
+    const double size = std::hypot(box[2] - box[0], box[3] - box[1]);
     const double tolerance = smallest_feature_ratio * size;
     constexpr int reported = 5;
     int found = 0;

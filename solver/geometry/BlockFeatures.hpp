@@ -25,8 +25,8 @@ struct SmallFeature {
 /// block's vertex count (edges are binned in a grid).
 std::optional<SmallFeature> find_small_feature(const Block& block, double tolerance);
 
-/// Smallest feature a block may have, as a fraction of the model's size (the diagonal of the
-/// blocks' bounding box): 1e-6, a tenth of a millimetre in a 100 m model.
+/// Smallest feature a block may have, as a fraction of the model's size (the diagonal of its
+/// bounding box, Model::bounds): 1e-6, a tenth of a millimetre in a 100 m model.
 constexpr double smallest_feature_ratio = 1e-6;
 
 /// An error per block (the first few) with a feature below smallest_feature_ratio of the

@@ -5,18 +5,6 @@
 
 namespace mcdda {
 
-namespace {
-
-double distance_to_segment(Point2 p, Point2 a, Point2 b) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double len2 = dx * dx + dy * dy;
-    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
-
-}  // namespace
-
 SizeField::SizeField(const MeshControls& controls, double global_size)
     : global_(global_size), grading_(controls.grading), local_(controls.local) {}
 

@@ -1,9 +1,17 @@
 #include "model/Model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace mcdda {
+
+double distance_to_segment(Point2 p, Point2 a, Point2 b) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double len2 = dx * dx + dy * dy;
+    const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
 
 double LoadTable::factor(double s) const {
     if (points.empty()) return 1.0;

@@ -23,6 +23,9 @@ struct Point2 {
     double y = 0.0;
 };
 
+/// Distance from `p` to the segment [a, b] (m).
+double distance_to_segment(Point2 p, Point2 a, Point2 b);
+
 /// A closed ring of vertices; the closing edge (last → first) is implicit.
 using Ring = std::vector<Point2>;
 
