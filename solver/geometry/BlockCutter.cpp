@@ -116,7 +116,6 @@ std::string length_text(double metres) {
     return out.str();
 }
 
-
 /// The joints' polylines with every region vertex that lies within `tolerance` of a joint made
 /// a vertex of it: a joint drawn through a corner (a joint set through a tunnel's polygon) then
 /// passes exactly through it instead of a rounding error away, which would leave an edge of

@@ -53,7 +53,8 @@ RunOutput::RunOutput(std::string directory, std::string model_stem)
     std::vector<fs::path> earlier;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
         const std::string name = entry.path().filename().string();
-        if (!entry.is_regular_file()) continue;
+        std::error_code type_error;
+        if (!entry.is_regular_file(type_error)) continue;
         // Step files of any model: <stem>_NNNNNN.vtu (the mesh command's <stem>.vtu stays).
         const bool step_file = name.size() > 11 && name.compare(name.size() - 4, 4, ".vtu") == 0 &&
                                name[name.size() - 11] == '_' &&
