@@ -78,7 +78,9 @@ int run_run(const Request& r) {
                   << " blocks, " << p.model.analysis.steps << " steps -> " << r.out << "\n";
 
     stop_requested = false;
+    // Ctrl-C and SIGTERM (a batch system's stop) both end the run after the current step.
     auto previous_handler = std::signal(SIGINT, request_stop);
+    auto previous_term_handler = std::signal(SIGTERM, request_stop);
     Progress progress(simulation->model().analysis.steps, !r.quiet);
     RunEnd end;
     try {
@@ -87,6 +89,7 @@ int run_run(const Request& r) {
     } catch (const std::exception& e) {  // writing results failed
         progress.finish();
         std::signal(SIGINT, previous_handler);
+        std::signal(SIGTERM, previous_term_handler);
         std::cerr << "error: " << e.what() << "\n";
         return exit_output_error;
     }
@@ -94,6 +97,7 @@ int run_run(const Request& r) {
     const std::string& message = end.message;
     progress.finish();
     std::signal(SIGINT, previous_handler);
+    std::signal(SIGTERM, previous_term_handler);
     try {
         output->write_summary(simulation.get(), status, message);
     } catch (const std::exception& e) {  // the folder became unwritable or full during the run
