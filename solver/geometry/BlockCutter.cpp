@@ -201,6 +201,27 @@ std::vector<std::vector<Point2>> joints_through_nearby_vertices(const Model& mod
 }  // namespace
 
 std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagnostics) {
+    // The arrangement's size grows with the crossings of the joint sets: every pair of
+    // non-parallel sets crosses at most (segments of one) × (segments of the other) times, and
+    // each crossing makes a block corner that needs triangles. More crossings than the mesh may
+    // have elements cannot end in a mesh; refuse before spending minutes and gigabytes on them.
+    std::vector<double> set_segments(model.joint_sets.size(), 0.0);
+    for (const Joint& j : model.joints)
+        if (j.joint_set >= 0 && j.joint_set < static_cast<int>(set_segments.size()))
+            set_segments[j.joint_set] += static_cast<double>(std::max<std::size_t>(1, j.points.size() - 1));
+    double crossings = 0.0;
+    for (std::size_t a = 0; a < set_segments.size(); ++a)
+        for (std::size_t b = a + 1; b < set_segments.size(); ++b)
+            if (std::fabs(std::sin(model.joint_sets[a].angle - model.joint_sets[b].angle)) > 1e-9)
+                crossings += set_segments[a] * set_segments[b];
+    if (crossings > static_cast<double>(model.mesh.max_elements)) {
+        std::ostringstream text;
+        text << "the joint sets may cross up to " << crossings << " times, each crossing a block corner, more than "
+             << "the mesh may have elements (mesh.max_elements " << model.mesh.max_elements
+             << "): widen the spacing, limit the sets' extent, or raise mesh.max_elements";
+        diagnostics.push_back({Diagnostic::Severity::Error, "/joint_sets", text.str()});
+        return {};
+    }
     std::vector<Curve> curves;
     for (std::size_t r = 0; r < model.regions.size(); ++r) {
         add_ring(curves, model.regions[r].boundary, region_id(static_cast<int>(r)));

@@ -224,3 +224,21 @@ TEST(BlockCutter, AJointThroughPolygonVerticesPassesExactlyThroughThem) {
     EXPECT_GT(p.statistics.elements, 100);
     EXPECT_GE(p.statistics.min_angle_deg, 28.0 - 1e-9);
 }
+
+// Crossing joint sets make block corners in proportion to the product of their traces; more than
+// the mesh may have elements is refused before the arrangement is built (it took minutes and
+// gigabytes for a few million crossings).
+TEST(BlockCutter, JointSetsCrossingMoreOftenThanTheMeshMayHaveElementsAreRefusedEarly) {
+    const std::vector<std::string> sets = {
+        R"(/joint_sets=[{"name": "a", "angle": 0, "spacing": 0.5, "origin": [0.25, 0.25]},
+                        {"name": "b", "angle": 90, "spacing": 0.5, "origin": [0.25, 0.25]}])"};
+    std::vector<std::string> small = sets;
+    small.push_back("/mesh/max_elements=300");
+    const Preprocessed refused = cut(small);
+    EXPECT_FALSE(refused.ok);
+    EXPECT_TRUE(has_diagnostic(refused.diagnostics, Severity::Error, "/joint_sets", "may cross up to 400 times"))
+        << all_messages(refused.diagnostics);
+    const Preprocessed cut_ok = cut(sets);  // the default limit: 20 × 20 traces cut 21 × 21 blocks
+    ASSERT_TRUE(cut_ok.ok) << all_messages(cut_ok.diagnostics);
+    EXPECT_EQ(cut_ok.blocks.size(), 441u);
+}
