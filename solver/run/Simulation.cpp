@@ -240,7 +240,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
     AndersonMixing anderson(anderson_depth);
     double best_norm = std::numeric_limits<double>::infinity(), best_correction = best_norm;
     int best_at = 0, best_correction_at = 0;
-    bool tangent_usable = may_yield_ && elements_.has_tangent();
+    bool tangent_usable = uses_newton();
     const bool any_closed = std::any_of(contacts.begin(), contacts.end(),
                                         [](const Contact& c) { return c.state != ContactState::Open; });
     for (int k = 0;; ++k) {
@@ -417,8 +417,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     // Shi's static DDA keeps the mass term M/(βΔt²) (velocities reset every step): it holds
     // blocks that only contacts restrain while they settle. A small-strain static analysis is a
     // pure equilibrium problem: no load may be carried by inertia there.
-    const bool equilibrium_only = model_.analysis.kind == AnalysisSettings::Kind::Static &&
-                                  model_.analysis.geometry == AnalysisSettings::Geometry::Initial;
+    const bool equilibrium_only = is_equilibrium_only();
     elements_.prepare(element_nodes(), equilibrium_only ? 0.0 : 1.0 / (beta * dt * dt));
     Eigen::VectorXd base = external;
     if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic)
@@ -461,8 +460,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     // mass term, so only the closed contacts and (for Newton) the tangent differ. The elastic
     // iteration needs the exact elastic matrix; Newton takes the last tangent as its first
     // matrix and refactorises when it contracts slowly (equilibrate).
-    const bool newton = may_yield_ && elements_.has_tangent();
-    bool factor_valid = equilibrium_only && held_.usable && system_.has_factor() && (newton || !held_.tangent) &&
+    bool factor_valid = equilibrium_only && held_.usable && system_.has_factor() && (uses_newton() || !held_.tangent) &&
                         held_.closed == closed_signature(contacts);
     held_.usable = false;  // until this try converges
     int friction_rounds = 0;
@@ -723,7 +721,7 @@ StepReport Simulation::advance_static() {
         // Small-strain static: there is no mass term, so a smaller Δt changes nothing; an increment
         // beyond the displacement limit (which guards contact detection) takes a smaller share
         // of the load instead, and is accepted at the floor.
-        const bool equilibrium_only = model_.analysis.geometry == AnalysisSettings::Geometry::Initial;
+        const bool equilibrium_only = is_equilibrium_only();
         if (too_large && attempt.yielding == 0 && equilibrium_only && increment > floor * (1.0 + 1e-9)) {
             increment = std::max(floor, std::min(0.5, 0.9 * displacement_limit_ / largest) * increment);
             ++timings_.load_cuts;

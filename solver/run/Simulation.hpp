@@ -165,6 +165,13 @@ private:
     const std::vector<Point2>& element_nodes() const {
         return model_.analysis.geometry == AnalysisSettings::Geometry::Initial ? mesh_.nodes : state_.nodes;
     }
+    /// A small-strain static analysis: a pure equilibrium problem, no mass term, Δt plays no part.
+    bool is_equilibrium_only() const {
+        return model_.analysis.kind == AnalysisSettings::Kind::Static &&
+               model_.analysis.geometry == AnalysisSettings::Geometry::Initial;
+    }
+    /// Associated plasticity somewhere: Newton with the algorithmic tangent (see equilibrate).
+    bool uses_newton() const { return may_yield_ && elements_.has_tangent(); }
     StepReport advance_static();
     StepReport advance_dynamic();
     void finish_report(StepReport& report, double largest);
