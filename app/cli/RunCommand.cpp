@@ -28,7 +28,8 @@ void print_timings(const RunTimings& t, int steps) {
               << t.solve << ", contact " << t.contact << ", plasticity " << t.plasticity << ", total " << t.total
               << "\n"
               << "factorizations " << t.factorizations << " (" << t.symbolic_analyses << " symbolic analyses) in "
-              << steps << " steps\n"
+              << steps << " steps; " << t.reused_factors << " matrices solved with a held factor ("
+              << t.refinement_iterations << " conjugate-gradient iterations)\n"
               << "equilibrium iterations " << t.iterations << " (at most " << t.max_iterations << " in a step), "
               << t.load_cuts << " load increments halved\n"
               << "CPU time of the process " << static_cast<double>(std::clock()) / CLOCKS_PER_SEC << " s\n";

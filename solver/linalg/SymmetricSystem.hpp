@@ -2,8 +2,10 @@
 /// \file SymmetricSystem.hpp
 /// The global system K d = F: a fixed sparsity pattern assembled by scattering small dense
 /// blocks into precomputed slots (no sorting per step), factorised by CHOLMOD (Cholesky;
-/// CHOLMOD picks the simplicial or the supernodal method from the factor's density). The symbolic analysis is kept while the pattern is unchanged and the numeric
-/// factor is kept for any number of right-hand sides (the plastic iterations).
+/// CHOLMOD picks the simplicial or the supernodal method from the factor's density). The
+/// symbolic analysis is kept while the pattern is unchanged, the numeric factor for any number of
+/// right-hand sides (the plastic iterations) and, on request, for later matrices close to its own
+/// (solved by conjugate gradients preconditioned by it).
 
 #include <Eigen/Sparse>
 
@@ -63,17 +65,29 @@ public:
     void add_diagonal(int e, double value);
 
     /// Factorises the current matrix; throws SingularSystem when it is not positive definite.
-    void factorize();
+    ///
+    /// With `may_reuse` the factor held (of an earlier matrix of the same kind: the elastic
+    /// matrix on a slightly moved geometry, a few contacts changed) is kept while that pays:
+    /// solve() then iterates against the current matrix — conjugate gradients preconditioned by
+    /// the held factor — and the matrix is factorised once those iterations have cost as many
+    /// flops as a factorisation (CHOLMOD's count), or when they do not converge.
+    void factorize(bool may_reuse = false);
 
-    /// Solves with the last factorisation.
-    Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+    /// Solves with the current matrix: directly with its factor, or iterating with a held one.
+    /// The matrix values must not change between factorize() and solve().
+    Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
 
-    /// True when a factorisation succeeded since the pattern was last set: solve() may be used,
-    /// with the values of that factorisation (set_groups and add do not change it).
+    /// True when a factorisation succeeded since the pattern was last set: solve() may be used
+    /// (set_groups and add do not change it).
     bool has_factor() const { return has_factor_; }
 
     int factorizations() const { return factorizations_; }
     int symbolic_analyses() const { return analyses_; }
+    /// factorize(true) calls that kept the held factor, and the iterations their solves took.
+    int reused_factors() const { return reused_factors_; }
+    int refinement_iterations() const { return refinement_iterations_; }
+    /// Seconds spent in numeric factorisations (also those a solve() falls back to).
+    double factorization_seconds() const { return factorization_seconds_; }
     const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
 private:
@@ -88,8 +102,15 @@ private:
     std::unique_ptr<CholmodFactor> factor_;
     bool analysed_ = false;
     bool has_factor_ = false;
+    bool stale_ = false;           ///< the factor is of an earlier matrix: solves iterate
+    double refinement_flops_ = 0;  ///< spent iterating since the last factorisation
+    int last_refinement_iterations_ = 0;  ///< of the last solve with the current (stale) matrix
     int factorizations_ = 0;
     int analyses_ = 0;
+    int reused_factors_ = 0;
+    int refinement_iterations_ = 0;
+    double factorization_seconds_ = 0.0;
+    void factorize_now();
 };
 
 }  // namespace mcdda

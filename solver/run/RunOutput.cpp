@@ -175,6 +175,7 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
         j["factorizations"] = t.factorizations;
         j["blas"] = blas_in_use();  // the factorisation's speed depends on it
         j["symbolic_analyses"] = t.symbolic_analyses;
+        j["reused_factors"] = {{"matrices", t.reused_factors}, {"iterations", t.refinement_iterations}};
         const int steps = sim->state().step;
         j["iterations"] = {{"total", t.iterations},
                            {"per_step", steps > 0 ? static_cast<double>(t.iterations) / steps : 0.0},

@@ -241,6 +241,10 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
     double best_norm = std::numeric_limits<double>::infinity(), best_correction = best_norm;
     int best_at = 0, best_correction_at = 0;
     bool tangent_usable = uses_newton();
+    // The matrix in force is the elastic one (a tangent where nothing yields is one too); a held
+    // tangent factor is not.
+    bool elastic_matrix = factor_valid && !held_.tangent;
+    bool first_linear = false;  // nothing yielded at the first iteration
     const bool any_closed = std::any_of(contacts.begin(), contacts.end(),
                                         [](const Contact& c) { return c.state != ContactState::Open; });
     for (int k = 0;; ++k) {
@@ -271,10 +275,14 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         // round-off and would never settle.
         const double yardstick = std::max({d.cwiseAbs().maxCoeff(), 0.01 * state_.displacement.cwiseAbs().maxCoeff(),
                                            1e-12 * topology_.model_size});
-        if (k > 0 && norm <= tolerance * scale && last_correction <= tolerance * yardstick) {
+        // A linear iteration (nothing yields, the matrix is the elastic one of the current contact
+        // states) has converged after one solve: its correction solved the problem exactly.
+        const bool linear = eval.yielding == 0 && elastic_matrix && k == 1 && first_linear;
+        if (k > 0 && norm <= tolerance * scale && (last_correction <= tolerance * yardstick || linear)) {
             attempt.residual = residual;
             return true;
         }
+        if (k == 0) first_linear = eval.yielding == 0;
         // Diverging: non-finite, or growing far beyond the start once the tangent has had a few
         // corrections (a contact change alone may start from a large out-of-balance force).
         if (k == 0) first_norm = norm;
@@ -322,11 +330,13 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
                 system_.add(elements + static_cast<int>(i), kc.data());
             }
             timings_.assembly += seconds_since(t0);
-            t0 = Clock::now();
+            // An elastic matrix may keep a held elastic factor (of the last step's geometry, or of
+            // other contact states) while iterating against the new matrix costs less than a
+            // factorisation (SymmetricSystem::factorize); a tangent changes too much for that.
+            const bool may_reuse = matrix == ElementMatrix::Elastic && !held_.tangent;
             try {
-                system_.factorize();
+                system_.factorize(may_reuse);
             } catch (const SingularSystem&) {
-                timings_.factorization += seconds_since(t0);
                 if (matrix != ElementMatrix::Tangent) throw;
                 // A tangent that is not positive definite (a mechanism forming): go on with the
                 // elastic matrix.
@@ -335,8 +345,8 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
                 --k;
                 continue;
             }
-            timings_.factorization += seconds_since(t0);
             factor_valid = true;
+            elastic_matrix = matrix == ElementMatrix::Elastic || eval.yielding == 0;
             held_.tangent = matrix == ElementMatrix::Tangent;
             held_.closed = closed_signature(contacts);
         }
@@ -460,8 +470,11 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     // mass term, so only the closed contacts and (for Newton) the tangent differ. The elastic
     // iteration needs the exact elastic matrix; Newton takes the last tangent as its first
     // matrix and refactorises when it contracts slowly (equilibrate).
-    bool factor_valid = equilibrium_only && held_.usable && system_.has_factor() && (uses_newton() || !held_.tangent) &&
-                        held_.closed == closed_signature(contacts);
+    // A held elastic matrix depends on nothing a try changes, so it also survives a try that
+    // failed (the smaller load increment after it starts with it); a tangent only after a
+    // converged try.
+    bool factor_valid = equilibrium_only && system_.has_factor() && held_.closed == closed_signature(contacts) &&
+                        (held_.tangent ? held_.usable && uses_newton() : true);
     held_.usable = false;  // until this try converges
     int friction_rounds = 0;
     std::vector<int> flips(contacts.size(), 0);
@@ -556,11 +569,13 @@ std::vector<long long> Simulation::closed_signature(const std::vector<Contact>& 
 
 Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs) {
     const auto start = Clock::now();
+    const double factorizing = system_.factorization_seconds();
     const Eigen::VectorXd solution = system_.solve(rhs);
     Eigen::VectorXd d(state_.displacement.size());
     for (Eigen::Index dof = 0; dof < d.size(); ++dof)
         d[dof] = bc_.equation[dof] >= 0 ? solution[bc_.equation[dof]] : 0.0;
-    timings_.solve += seconds_since(start);
+    // (less a factorisation the solve fell back to: it counts as one)
+    timings_.solve += seconds_since(start) - (system_.factorization_seconds() - factorizing);
     return d;
 }
 
@@ -628,8 +643,7 @@ void Simulation::finish_report(StepReport& report, double largest) {
     }
     timings_.iterations += report.plastic_iterations;
     timings_.max_iterations = std::max(timings_.max_iterations, report.plastic_iterations);
-    timings_.factorizations = system_.factorizations();
-    timings_.symbolic_analyses = system_.symbolic_analyses();
+    record_solver_counts();
 }
 
 namespace {
@@ -650,6 +664,14 @@ std::string describe_position(double position) {
 
 }  // namespace
 
+void Simulation::record_solver_counts() {
+    timings_.factorization = system_.factorization_seconds();
+    timings_.factorizations = system_.factorizations();
+    timings_.symbolic_analyses = system_.symbolic_analyses();
+    timings_.reused_factors = system_.reused_factors();
+    timings_.refinement_iterations = system_.refinement_iterations();
+}
+
 StepReport Simulation::advance() {
     const auto start = Clock::now();
     StepReport report;
@@ -658,13 +680,11 @@ StepReport Simulation::advance() {
     } catch (const PlasticCollapse& e) {
         collapse_ = CollapseBracket{e.carried, e.not_carried};
         timings_.total += seconds_since(start);
-        timings_.factorizations = system_.factorizations();
-        timings_.symbolic_analyses = system_.symbolic_analyses();
+        record_solver_counts();
         throw;
     } catch (...) {
         timings_.total += seconds_since(start);
-        timings_.factorizations = system_.factorizations();
-        timings_.symbolic_analyses = system_.symbolic_analyses();
+        record_solver_counts();
         throw;
     }
     timings_.total += seconds_since(start);

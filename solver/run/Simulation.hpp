@@ -43,6 +43,8 @@ struct RunTimings {
     double assembly = 0.0, factorization = 0.0, solve = 0.0, contact = 0.0, plasticity = 0.0, total = 0.0;
     int factorizations = 0;
     int symbolic_analyses = 0;
+    int reused_factors = 0;         ///< elastic matrices solved with a held factor instead
+    int refinement_iterations = 0;  ///< the conjugate-gradient iterations those solves took
     int iterations = 0;        ///< equilibrium iterations of all accepted steps
     int max_iterations = 0;    ///< the most in one accepted step
     int load_cuts = 0;         ///< load increments halved (static)
@@ -191,14 +193,15 @@ private:
     RunTimings timings_;
     std::string last_singular_;  ///< why the last try's matrix could not be factorised
     /// What the factor held by system_ was computed from, for the next increment (see the file
-    /// comment): usable only after a converged try, with the same closed contacts.
+    /// comment): with the same closed contacts; a tangent only after a converged try.
     struct HeldFactor {
-        bool usable = false;
+        bool usable = false;   ///< the last try converged
         bool tangent = false;  ///< the algorithmic tangent, not the elastic matrix
         std::vector<long long> closed;  ///< per closed contact: node, edge and state, packed
     };
     HeldFactor held_;
     std::vector<long long> closed_signature(const std::vector<Contact>& contacts) const;
+    void record_solver_counts();  ///< the system's factorisation counts and time into timings_
     std::optional<CollapseBracket> collapse_;
 };
 
