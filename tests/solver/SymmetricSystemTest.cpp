@@ -33,6 +33,12 @@ struct Chain {
         }
         s.add_diagonal(0, ground);
     }
+    /// The pattern set, the chain assembled and factorised.
+    void factorise_first(SymmetricSystem& s, const std::vector<double>& k, double ground) const {
+        s.set_pattern(n, groups);
+        assemble(s, k, ground);
+        s.factorize();
+    }
     Eigen::MatrixXd dense(const std::vector<double>& k, double ground) const {
         Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
         for (int i = 0; i + 1 < n; ++i) {
@@ -49,11 +55,9 @@ struct Chain {
 TEST(SymmetricSystem, SolvesTheAssembledMatrixDirectly) {
     const Chain chain(50);
     SymmetricSystem s;
-    s.set_pattern(chain.n, chain.groups);
     std::vector<double> k(chain.n - 1);
     for (int i = 0; i < chain.n - 1; ++i) k[i] = 1.0 + 0.1 * i;
-    chain.assemble(s, k, 2.0);
-    s.factorize();
+    chain.factorise_first(s, k, 2.0);
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(chain.n, -1.0, 3.0);
     const Eigen::VectorXd x = s.solve(b);
     EXPECT_LT((chain.dense(k, 2.0) * x - b).norm(), 1e-10 * b.norm());
@@ -64,10 +68,8 @@ TEST(SymmetricSystem, SolvesTheAssembledMatrixDirectly) {
 TEST(SymmetricSystem, AHeldFactorSolvesASlightlyChangedMatrixToTheSameAccuracy) {
     const Chain chain(200);
     SymmetricSystem s;
-    s.set_pattern(chain.n, chain.groups);
     std::vector<double> k(chain.n - 1, 1.0);
-    chain.assemble(s, k, 1.0);
-    s.factorize();
+    chain.factorise_first(s, k, 1.0);
     // Stiffen a few springs by 30 % (a moved geometry, a few contacts): the held factor stays
     // and the solve iterates against the new matrix.
     for (int i : {3, 70, 150}) k[i] *= 1.3;
@@ -87,14 +89,12 @@ TEST(SymmetricSystem, AHeldFactorSolvesASlightlyChangedMatrixToTheSameAccuracy) 
 }
 
 TEST(SymmetricSystem, AMatrixSolvedAgainAfterManyIterationsIsFactorised) {
-    // A matrix far from the held one (every spring ten times stiffer, unevenly): its first solve
+    // A matrix far from the held one (springs alternately 10 and 0.2 times as stiff): its first solve
     // iterates; solving it again factorises it instead of iterating again.
     const Chain chain(400);
     SymmetricSystem s;
-    s.set_pattern(chain.n, chain.groups);
     std::vector<double> k(chain.n - 1, 1.0);
-    chain.assemble(s, k, 1.0);
-    s.factorize();
+    chain.factorise_first(s, k, 1.0);
     for (int i = 0; i < chain.n - 1; ++i) k[i] = i % 2 ? 10.0 : 0.2;
     chain.assemble(s, k, 1.0);
     s.factorize(true);
@@ -108,10 +108,8 @@ TEST(SymmetricSystem, AMatrixSolvedAgainAfterManyIterationsIsFactorised) {
 TEST(SymmetricSystem, ASingularMatrixIsReportedAlsoWhenAFactorIsHeld) {
     const Chain chain(30);
     SymmetricSystem s;
-    s.set_pattern(chain.n, chain.groups);
     std::vector<double> k(chain.n - 1, 1.0);
-    chain.assemble(s, k, 1.0);
-    s.factorize();
+    chain.factorise_first(s, k, 1.0);
     // The ground spring removed: the chain is free to move (a mechanism).
     chain.assemble(s, k, 0.0);
     s.factorize(true);
