@@ -15,7 +15,7 @@ Usage:
   mcdda render MODEL --out FILE.png [--size WxH] [--no-mesh] [--set POINTER=VALUE]...
   mcdda render MODEL --out FILE.png --results STEP.vtu [--field NAME] [--deform FACTOR]
                [--size WxH] [--set POINTER=VALUE]...
-  mcdda run    MODEL --out DIR [--profile] [--quiet] [--set POINTER=VALUE]...
+  mcdda run    MODEL --out DIR [--profile] [--quiet] [--threads N] [--set POINTER=VALUE]...
   mcdda --help | --version
 
 Commands:
@@ -45,6 +45,8 @@ Options:
                        or stress_3 (in-plane principal; kPa or MPa, tension +)
   --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0)
   --quiet              print errors only
+  --threads N          threads for the element loops of run (default: $MCDDA_THREADS, else one
+                       per core); results are the same for any number
   --help, --version
 
 Exit status: 0 success, 1 the model has errors, 2 bad command line, 3 could not write
@@ -96,6 +98,20 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
             }
             if (r.width < 64 || r.height < 64 || r.width > 8192 || r.height > 8192) {
                 error = "--size must lie between 64x64 and 8192x8192";
+                return std::nullopt;
+            }
+        } else if (is("--threads")) {
+            const auto v = value("--threads");
+            if (!v) return std::nullopt;
+            try {
+                std::size_t used = 0;
+                r.threads = std::stoi(*v, &used);
+                if (used != v->size()) throw std::invalid_argument("trailing");
+            } catch (const std::exception&) {
+                r.threads = -1;
+            }
+            if (r.threads < 1 || r.threads > 256) {
+                error = "--threads expects a number of threads from 1 to 256, got \"" + *v + "\"";
                 return std::nullopt;
             }
         } else if (is("--results")) {

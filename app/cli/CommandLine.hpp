@@ -22,6 +22,7 @@ struct Request {
     std::string results;                 ///< --results STEP.vtu: render draws this result
     std::string field = "plastic_state"; ///< --field NAME: what the result picture colours
     double deform = 0.0;                 ///< --deform FACTOR: displacement scale of the result picture
+    int threads = 0;                     ///< --threads N for run (0: $MCDDA_THREADS, else one per core)
 };
 
 /// Parses argv; returns the request or sets `error` to a message for the user.

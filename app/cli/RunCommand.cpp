@@ -5,6 +5,7 @@
 #include "Progress.hpp"
 
 #include "Preprocess.hpp"
+#include "parallel/ParallelFor.hpp"
 #include "run/RunLoop.hpp"
 #include "run/RunOutput.hpp"
 #include "run/Simulation.hpp"
@@ -32,6 +33,7 @@ void print_timings(const RunTimings& t, int steps) {
               << t.refinement_iterations << " conjugate-gradient iterations)\n"
               << "equilibrium iterations " << t.iterations << " (at most " << t.max_iterations << " in a step), "
               << t.load_cuts << " load increments halved\n"
+              << "threads " << thread_count() << " (element loops)\n"
               << "CPU time of the process " << static_cast<double>(std::clock()) / CLOCKS_PER_SEC << " s\n";
     if (steps > 0 && t.factorizations > 0)
         std::cout << "per step " << t.total / steps << " s; one factorization " << t.factorization / t.factorizations
@@ -41,6 +43,7 @@ void print_timings(const RunTimings& t, int steps) {
 }  // namespace
 
 int run_run(const Request& r) {
+    if (r.threads > 0) set_thread_count(r.threads);
     const Preprocessed p = preprocess_file(r.model, r.overrides, PreprocessStage::Mesh);
     for (const Diagnostic& d : p.diagnostics)
         if (d.severity == Diagnostic::Severity::Error || !r.quiet) std::cerr << r.model << ": " << format_diagnostic(d) << "\n";
@@ -112,12 +115,7 @@ int run_run(const Request& r) {
         std::cout << status_name(status) << ": " << simulation->state().step << " steps, t = " << simulation->state().time
                   << " s; results in " << r.out << "\n";
     if (r.profile) print_timings(simulation->timings(), simulation->state().step);
-    switch (status) {
-        case RunStatus::Completed: return exit_ok;
-        case RunStatus::Cancelled: return exit_cancelled;
-        case RunStatus::Collapsed: return exit_collapsed;
-        default: return exit_run_failed;
-    }
+    return exit_status(status);
 }
 
 }  // namespace mcdda::cli

@@ -4,6 +4,7 @@
 #include "Language.hpp"
 #include "MainWindow.hpp"
 #include "Version.hpp"
+#include "run/RunOutput.hpp"
 
 #include <QApplication>
 #include <QCommandLineOption>
@@ -35,6 +36,12 @@ void describe_options(QCommandLineParser& parser)
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addOption(language_option());
+    parser.addOption(QCommandLineOption(
+        QStringLiteral("run"), QCoreApplication::translate("main", "Start the analysis once the model is open.")));
+    parser.addOption(QCommandLineOption(
+        QStringLiteral("quit-after-run"),
+        QCoreApplication::translate("main", "Close the program when the run ends, with the exit status of mcdda run "
+                                            "(for demonstrations and benchmarks).")));
     parser.addPositionalArgument(QStringLiteral("model"),
                                  QCoreApplication::translate("main", "Model file (*.json) to open."),
                                  QStringLiteral("[MODEL.json]"));
@@ -102,8 +109,24 @@ int main(int argc, char** argv)
         return 2;
     }
 
+    const bool run = parser.isSet(QStringLiteral("run"));
+    const bool quit_after_run = parser.isSet(QStringLiteral("quit-after-run"));
+    if ((run || quit_after_run) && models.isEmpty()) {
+        qWarning("mcdda-gui: --run and --quit-after-run need a model file");
+        return 2;
+    }
+
     mcdda::gui::MainWindow window;
     window.show();
-    if (!models.isEmpty()) window.openModel(QDir::current().absoluteFilePath(models.front()));
+    if (quit_after_run)
+        QObject::connect(&window, &mcdda::gui::MainWindow::runFinished, &app,
+                         [](mcdda::RunStatus status, const QString&) { QApplication::exit(mcdda::exit_status(status)); });
+    if (!models.isEmpty()) {
+        const bool opened = window.openModel(QDir::current().absoluteFilePath(models.front()));
+        if (run && !window.startRun()) {
+            qWarning("mcdda-gui: the model could not be run%s", opened ? "" : " (it has errors)");
+            if (quit_after_run) return 1;
+        }
+    }
     return QApplication::exec();
 }

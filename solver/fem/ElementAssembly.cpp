@@ -1,6 +1,7 @@
 #include "fem/ElementAssembly.hpp"
 
 #include "fem/PlaneStrain.hpp"
+#include "parallel/ParallelFor.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -74,82 +75,111 @@ void ElementAssembly::add_inertia_load(const Eigen::VectorXd& velocity, const Ei
 }
 
 template <int N>
+int ElementAssembly::evaluate_element(int e, const Eigen::VectorXd& d, const PointStates& old,
+                                      std::vector<ReturnResult>& returned, ElementMatrix matrix,
+                                      typename TriangleElement<N>::Forces& f,
+                                      typename TriangleElement<N>::Stiffness* k) const {
+    using Element = TriangleElement<N>;
+    const typename Element::Geometry& g = [&]() -> const auto& {
+        if constexpr (N == 3) return linear_[e];
+        else return quadratic_geometry_[e];
+    }();
+    const int material = mesh_->triangle_material[e];
+    const ConstitutiveLaw& law = *laws_[material];
+    const Eigen::Matrix3d& D = law.elasticity();
+    const double nu = model_->materials[material].poisson_ratio;
+    typename Element::Forces de;
+    for (int a = 0; a < N; ++a) {
+        const int n = node(e, a);
+        de[2 * a] = d[2 * n];
+        de[2 * a + 1] = d[2 * n + 1];
+    }
+    int yielding = 0;
+    f.setZero();
+    if (k) k->setZero();
+    for (int q = 0; q < Element::points; ++q) {
+        const int p = e * Element::points + q;
+        const double w = g.weight(q);
+        // Elastic trial on the start-of-step geometry (updated Lagrangian, small increments).
+        const Eigen::Vector3d increment = D * (g.B[q] * de);
+        const Eigen::Vector3d& s0 = old.stress[p];
+        const PlaneStress trial{s0[0] + increment[0], s0[1] + increment[1], s0[2] + increment[2],
+                                old.stress_zz[p] + nu * (increment[0] + increment[1])};
+        ReturnResult& r = returned[p];
+        Eigen::Matrix3d tangent;
+        const bool want_tangent = matrix == ElementMatrix::Tangent && law.symmetric_tangent();
+        r = law.return_map(trial, want_tangent ? &tangent : nullptr);
+        if (r.plastic) ++yielding;
+        const Eigen::Vector3d sigma(r.stress.xx, r.stress.yy, r.stress.xy);
+        f.noalias() += w * g.B[q].transpose() * sigma;
+        if (!k) continue;
+        if (want_tangent && r.plastic) {
+            // Symmetric up to round-off for ψ = φ. Non-associated points keep D (below): the
+            // symmetric part of their tangent is indefinite, and the associated law's
+            // tangent was measured not to converge (Lavarak cavern); the initial-stress
+            // iteration with D does.
+            const Eigen::Matrix3d C = 0.5 * (tangent + tangent.transpose());
+            k->noalias() += w * g.B[q].transpose() * C * g.B[q];
+        } else {
+            k->noalias() += w * g.B[q].transpose() * D * g.B[q];
+        }
+    }
+    const double mass = inertia_ > 0.0 ? inertia_ * model_->materials[material].density * g.area : 0.0;
+    if (mass > 0.0) {
+        for (int a = 0; a < N; ++a)
+            for (int b = 0; b < N; ++b) {
+                const double m = mass * Element::mass(a, b);
+                f[2 * a] += m * de[2 * b];
+                f[2 * a + 1] += m * de[2 * b + 1];
+                if (k) {
+                    (*k)(2 * a, 2 * b) += m;
+                    (*k)(2 * a + 1, 2 * b + 1) += m;
+                }
+            }
+    }
+    return yielding;
+}
+
+template <int N>
 ElementAssembly::Evaluation ElementAssembly::evaluate_elements(const Eigen::VectorXd& d, const PointStates& old,
                                                                std::vector<ReturnResult>& returned,
                                                                Eigen::VectorXd& internal, ElementMatrix matrix,
                                                                SymmetricSystem* system) const {
     using Element = TriangleElement<N>;
-    const auto& geometry = [this]() -> const auto& {
-        if constexpr (N == 3) return linear_;
-        else return quadratic_geometry_;
-    }();
     const int elements = element_count();
     const Eigen::Index dofs = d.size();
     internal.setZero(dofs);
     Eigen::VectorXd magnitude = Eigen::VectorXd::Zero(dofs);
     returned.resize(static_cast<std::size_t>(elements) * Element::points);
     Evaluation result;
-    typename Element::Forces de, f;
-    typename Element::Stiffness k;
-    int nodes[N];
-    for (int e = 0; e < elements; ++e) {
-        const int material = mesh_->triangle_material[e];
-        const typename Element::Geometry& g = geometry[e];
-        const ConstitutiveLaw& law = *laws_[material];
-        const Eigen::Matrix3d& D = law.elasticity();
-        const double nu = model_->materials[material].poisson_ratio;
-        for (int a = 0; a < N; ++a) {
-            nodes[a] = node(e, a);
-            de[2 * a] = d[2 * nodes[a]];
-            de[2 * a + 1] = d[2 * nodes[a] + 1];
-        }
-        f.setZero();
-        if (matrix != ElementMatrix::None) k.setZero();
-        for (int q = 0; q < Element::points; ++q) {
-            const int p = e * Element::points + q;
-            const double w = g.weight(q);
-            // Elastic trial on the start-of-step geometry (updated Lagrangian, small increments).
-            const Eigen::Vector3d increment = D * (g.B[q] * de);
-            const Eigen::Vector3d& s0 = old.stress[p];
-            const PlaneStress trial{s0[0] + increment[0], s0[1] + increment[1], s0[2] + increment[2],
-                                    old.stress_zz[p] + nu * (increment[0] + increment[1])};
-            ReturnResult& r = returned[p];
-            Eigen::Matrix3d tangent;
-            const bool want_tangent = matrix == ElementMatrix::Tangent && law.symmetric_tangent();
-            r = law.return_map(trial, want_tangent ? &tangent : nullptr);
-            if (r.plastic) ++result.yielding;
-            const Eigen::Vector3d sigma(r.stress.xx, r.stress.yy, r.stress.xy);
-            f.noalias() += w * g.B[q].transpose() * sigma;
-            if (want_tangent && r.plastic) {
-                // Symmetric up to round-off for ψ = φ. Non-associated points keep D (below): the
-                // symmetric part of their tangent is indefinite, and the associated law's
-                // tangent was measured not to converge (Lavarak cavern); the initial-stress
-                // iteration with D does.
-                const Eigen::Matrix3d C = 0.5 * (tangent + tangent.transpose());
-                k.noalias() += w * g.B[q].transpose() * C * g.B[q];
-            } else if (matrix != ElementMatrix::None) {
-                k.noalias() += w * g.B[q].transpose() * D * g.B[q];
-            }
-        }
-        const double mass = inertia_ > 0.0 ? inertia_ * model_->materials[material].density * g.area : 0.0;
-        if (mass > 0.0) {
-            for (int a = 0; a < N; ++a)
-                for (int b = 0; b < N; ++b) {
-                    const double m = mass * Element::mass(a, b);
-                    f[2 * a] += m * de[2 * b];
-                    f[2 * a + 1] += m * de[2 * b + 1];
-                    if (matrix != ElementMatrix::None) {
-                        k(2 * a, 2 * b) += m;
-                        k(2 * a + 1, 2 * b + 1) += m;
-                    }
+    const bool with_matrix = matrix != ElementMatrix::None;
+    // Chunks of elements are evaluated on the worker threads into per-element buffers, then
+    // scattered in element order: every sum is the serial loop's, whatever the thread count.
+    // (The chunk bounds the buffers: a six-node element matrix is 1.2 kB.)
+    constexpr int chunk = 8192;
+    const int buffered = std::min(chunk, elements);
+    std::vector<typename Element::Forces> forces(buffered);
+    std::vector<typename Element::Stiffness> stiffness(with_matrix ? buffered : 0);
+    std::vector<int> yielding(buffered);
+    for (int first = 0; first < elements; first += chunk) {
+        const int count = std::min(chunk, elements - first);
+        parallel_for(count, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i)
+                yielding[i] = evaluate_element<N>(first + i, d, old, returned, matrix, forces[i],
+                                                  with_matrix ? &stiffness[i] : nullptr);
+        });
+        for (int i = 0; i < count; ++i) {
+            const int e = first + i;
+            result.yielding += yielding[i];
+            for (int a = 0; a < N; ++a) {
+                const int n = node(e, a);
+                for (int dir = 0; dir < 2; ++dir) {
+                    internal[2 * n + dir] += forces[i][2 * a + dir];
+                    magnitude[2 * n + dir] += std::fabs(forces[i][2 * a + dir]);
                 }
-        }
-        for (int a = 0; a < N; ++a)
-            for (int dir = 0; dir < 2; ++dir) {
-                internal[2 * nodes[a] + dir] += f[2 * a + dir];
-                magnitude[2 * nodes[a] + dir] += std::fabs(f[2 * a + dir]);
             }
-        if (matrix != ElementMatrix::None) system->add(e, k.data());
+            if (with_matrix) system->add(e, stiffness[i].data());
+        }
     }
     result.force_scale = dofs ? magnitude.maxCoeff() : 0.0;
     return result;

@@ -74,6 +74,13 @@ public:
                         Eigen::VectorXd& internal, ElementMatrix matrix, SymmetricSystem* system) const;
 
 private:
+    /// One element's forces (and matrix, when `k` is not null); its points' results into
+    /// `returned`. Returns the number of its points yielding. Safe to call for different
+    /// elements at once.
+    template <int N>
+    int evaluate_element(int e, const Eigen::VectorXd& d, const PointStates& old, std::vector<ReturnResult>& returned,
+                         ElementMatrix matrix, typename TriangleElement<N>::Forces& f,
+                         typename TriangleElement<N>::Stiffness* k) const;
     template <int N>
     Evaluation evaluate_elements(const Eigen::VectorXd& d, const PointStates& old, std::vector<ReturnResult>& returned,
                                  Eigen::VectorXd& internal, ElementMatrix matrix, SymmetricSystem* system) const;

@@ -2,32 +2,79 @@
 
 #include "io/AtomicFile.hpp"
 
-#include <iomanip>
+#include <charconv>
 #include <ostream>
+#include <string>
+#include <type_traits>
 
 namespace mcdda {
 
 namespace {
 
+/// Text output through a buffer with std::to_chars: the same characters as an ostream with
+/// setprecision(10) (%.10g), several times faster (large result files are written every few
+/// steps).
+class TextBuffer {
+public:
+    explicit TextBuffer(std::ostream& out) : out_(out) { buffer_.reserve(capacity + 64); }
+    ~TextBuffer() { flush(); }
+    TextBuffer& operator<<(const char* text) {
+        buffer_.append(text);
+        return spill();
+    }
+    TextBuffer& operator<<(const std::string& text) {
+        buffer_.append(text);
+        return spill();
+    }
+    TextBuffer& operator<<(double value) {
+        char digits[32];
+        const auto end = std::to_chars(digits, digits + sizeof digits, value, std::chars_format::general, 10).ptr;
+        buffer_.append(digits, end);
+        return spill();
+    }
+    template <typename Integer, typename = std::enable_if_t<std::is_integral_v<Integer>>>
+    TextBuffer& operator<<(Integer value) {
+        char digits[24];
+        const auto end = std::to_chars(digits, digits + sizeof digits, value).ptr;
+        buffer_.append(digits, end);
+        return spill();
+    }
+    void flush() {
+        out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+        buffer_.clear();
+    }
+
+private:
+    static constexpr std::size_t capacity = 1 << 16;
+    std::ostream& out_;
+    std::string buffer_;
+    TextBuffer& spill() {
+        if (buffer_.size() >= capacity) flush();
+        return *this;
+    }
+};
+
 template <typename T>
-void write_ints(std::ostream& out, const char* name, const std::vector<T>& values) {
+void write_ints(TextBuffer& out, const char* name, const std::vector<T>& values) {
     out << "        <DataArray type=\"Int32\" Name=\"" << name << "\" format=\"ascii\">\n";
-    for (std::size_t i = 0; i < values.size(); ++i) out << (i % 12 ? " " : "          ") << values[i] << (i % 12 == 11 ? "\n" : "");
+    for (std::size_t i = 0; i < values.size(); ++i)
+        out << (i % 12 ? " " : "          ") << values[i] << (i % 12 == 11 ? "\n" : "");
     out << "\n        </DataArray>\n";
 }
 
-void write_field(std::ostream& out, const VtuField& f) {
+void write_field(TextBuffer& out, const VtuField& f) {
     out << "        <DataArray type=\"Float64\" Name=\"" << f.name << "\" NumberOfComponents=\"" << f.components
         << "\" format=\"ascii\">\n";
-    for (std::size_t i = 0; i < f.values.size(); ++i) out << (i % 6 ? " " : "          ") << f.values[i] << (i % 6 == 5 ? "\n" : "");
+    for (std::size_t i = 0; i < f.values.size(); ++i)
+        out << (i % 6 ? " " : "          ") << f.values[i] << (i % 6 == 5 ? "\n" : "");
     out << "\n        </DataArray>\n";
 }
 
 }  // namespace
 
 void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& fields) {
-    write_file_atomically(path, [&](std::ostream& out) {
-        out << std::setprecision(10);
+    write_file_atomically(path, [&](std::ostream& stream) {
+        TextBuffer out(stream);
         out << "<?xml version=\"1.0\"?>\n"
             << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
             << "  <UnstructuredGrid>\n"
@@ -48,9 +95,11 @@ void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& field
             out << "\n";
         }
         out << "        </DataArray>\n        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) out << (i % 12 ? " " : "          ") << points_per_cell * (i + 1) << (i % 12 == 11 ? "\n" : "");
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+            out << (i % 12 ? " " : "          ") << points_per_cell * (i + 1) << (i % 12 == 11 ? "\n" : "");
         out << "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) out << (i % 24 ? " " : "          ") << cell_type << (i % 24 == 23 ? "\n" : "");
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+            out << (i % 24 ? " " : "          ") << cell_type << (i % 24 == 23 ? "\n" : "");
         out << "\n        </DataArray>\n      </Cells>\n";
         out << "      <PointData>\n";
         for (const VtuField& f : fields.point_data) write_field(out, f);

@@ -3,6 +3,7 @@
 #include "io/AtomicFile.hpp"
 #include "io/VtuWriter.hpp"
 #include "linalg/BlasInfo.hpp"
+#include "parallel/ParallelFor.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +27,15 @@ const char* status_name(RunStatus s) {
         case RunStatus::Cancelled: return "cancelled";
     }
     return "unknown";
+}
+
+int exit_status(RunStatus s) {
+    switch (s) {
+        case RunStatus::Completed: return 0;
+        case RunStatus::Collapsed: return 5;
+        case RunStatus::Cancelled: return 130;
+        default: return 4;
+    }
 }
 
 namespace {
@@ -174,6 +184,7 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
                        {"contact", t.contact},   {"plasticity", t.plasticity},       {"total", t.total}};
         j["factorizations"] = t.factorizations;
         j["blas"] = blas_in_use();  // the factorisation's speed depends on it
+        j["threads"] = thread_count();
         j["symbolic_analyses"] = t.symbolic_analyses;
         j["reused_factors"] = {{"matrices", t.reused_factors}, {"iterations", t.refinement_iterations}};
         const int steps = sim->state().step;

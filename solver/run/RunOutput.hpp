@@ -26,6 +26,10 @@ enum class RunStatus { Running, Completed, Collapsed, Failed, Cancelled };
 
 const char* status_name(RunStatus s);
 
+/// The exit status of a program whose run ended with `s` (docs/running.md): 0 completed,
+/// 4 failed (or still running), 5 collapsed, 130 cancelled.
+int exit_status(RunStatus s);
+
 class RunOutput {
 public:
     /// Creates DIR (and parents) and moves an earlier run's files aside (see the file comment);

@@ -2,6 +2,7 @@
 // reused as designed.
 
 #include "RunModel.hpp"
+#include "parallel/ParallelFor.hpp"
 
 #include <gtest/gtest.h>
 
@@ -60,3 +61,42 @@ TEST(SolverInvariants, InSituStressWithoutOpeningsIsInEquilibrium) {
     ASSERT_TRUE(run.simulation);
     EXPECT_LT(run.simulation->state().displacement.cwiseAbs().maxCoeff(), 1e-9);
 }
+
+namespace mcdda {
+namespace {
+
+/// The element loops run on worker threads (parallel/ParallelFor.hpp) and reduce in element
+/// order: one thread and two give the same run, bit for bit.
+void expect_same_run_on_one_and_two_threads(const std::string& example, const std::vector<std::string>& overrides,
+                                            int steps) {
+    std::vector<mcdda::test::Run> runs;
+    for (int threads : {1, 2}) {
+        set_thread_count(threads);
+        runs.push_back(mcdda::test::run_example(example, overrides, steps));
+    }
+    set_thread_count(0);
+    ASSERT_TRUE(runs[0].simulation && runs[1].simulation);
+    const SimulationState& one = runs[0].simulation->state();
+    const SimulationState& two = runs[1].simulation->state();
+    ASSERT_EQ(one.step, steps);
+    ASSERT_EQ(two.step, steps);
+    EXPECT_EQ(runs[0].simulation->timings().iterations, runs[1].simulation->timings().iterations);
+    ASSERT_EQ(one.displacement.size(), two.displacement.size());
+    for (Eigen::Index i = 0; i < one.displacement.size(); ++i)
+        ASSERT_EQ(one.displacement[i], two.displacement[i]) << example << ", degree of freedom " << i;
+    ASSERT_EQ(one.stress.size(), two.stress.size());
+    for (std::size_t e = 0; e < one.stress.size(); ++e)
+        ASSERT_EQ(one.stress[e], two.stress[e]) << example << ", element " << e;
+}
+
+TEST(SolverInvariants, OneAndTwoThreadsGiveTheSameBitsPlastic) {
+    // Salençon's excavation: 10,513 six-node elements, more than one chunk of the loops.
+    expect_same_run_on_one_and_two_threads("salencon-tunnel.json", {"/mesh/local/0/size=0.07"}, 2);
+}
+
+TEST(SolverInvariants, OneAndTwoThreadsGiveTheSameBitsWithContacts) {
+    expect_same_run_on_one_and_two_threads("jointed-tunnel.json", {}, 3);
+}
+
+}  // namespace
+}  // namespace mcdda
