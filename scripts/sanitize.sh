@@ -5,6 +5,8 @@
 #   bash scripts/sanitize.sh                      solver and CLI tests (about 6 minutes on 2 cores
 #                                                 after the build)
 #   bash scripts/sanitize.sh "solver|cli|validation"   the validation tests too (about 10 minutes more)
+#   bash scripts/sanitize.sh tsan-solver          the solver's worker threads under ThreadSanitizer
+#                                                 (build-tsan-solver/): any warning fails
 #   bash scripts/sanitize.sh tsan                 the desktop program's run test (a worker thread
 #                                                 solving while the window draws) under
 #                                                 ThreadSanitizer in build-tsan/, with a count of
@@ -18,6 +20,20 @@ cd "$(dirname "$0")/.."
 labels=${1:-"solver|cli"}
 bash scripts/install-dependencies.sh
 
+if [ "$labels" = tsan-solver ]; then
+  # The solver's worker threads (parallel/ParallelFor): the pool's own tests and whole runs on
+  # two threads, under ThreadSanitizer; any warning fails.
+  mkdir -p build-tsan-solver
+  cmake -S . -B build-tsan-solver -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMCDDA_BUILD_GUI=OFF -DMCDDA_BUILD_TESTS=ON \
+    -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_FLAGS="-fsanitize=thread -fno-omit-frame-pointer" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" > build-tsan-solver/configure.log 2>&1 \
+    || { cat build-tsan-solver/configure.log; exit 1; }
+  cmake --build build-tsan-solver --target mcdda_solver_tests mcdda_validation_tests
+  export TSAN_OPTIONS="halt_on_error=1 abort_on_error=1"
+  build-tsan-solver/tests/solver/mcdda_solver_tests --gtest_filter='ParallelFor.*:SymmetricSystem.*'
+  build-tsan-solver/tests/validation/mcdda_validation_tests --gtest_filter='SolverInvariants.OneAndTwoThreads*'
+  exit $?
+fi
 if [ "$labels" = tsan ]; then
   mkdir -p build-tsan
   cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMCDDA_BUILD_GUI=ON -DMCDDA_BUILD_TESTS=ON \

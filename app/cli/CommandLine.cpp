@@ -45,8 +45,8 @@ Options:
                        or stress_3 (in-plane principal; kPa or MPa, tension +)
   --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0)
   --quiet              print errors only
-  --threads N          threads for the element loops of run (default: $MCDDA_THREADS, else one
-                       per core); results are the same for any number
+  --threads N          threads for the element loops and the contact search of run (default:
+                       $MCDDA_THREADS, else one per core); results are the same for any number
   --help, --version
 
 Exit status: 0 success, 1 the model has errors, 2 bad command line, 3 could not write

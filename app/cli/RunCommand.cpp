@@ -33,7 +33,7 @@ void print_timings(const RunTimings& t, int steps) {
               << t.refinement_iterations << " conjugate-gradient iterations)\n"
               << "equilibrium iterations " << t.iterations << " (at most " << t.max_iterations << " in a step), "
               << t.load_cuts << " load increments halved\n"
-              << "threads " << thread_count() << " (element loops)\n"
+              << "threads " << thread_count() << " (element loops and contact search)\n"
               << "CPU time of the process " << static_cast<double>(std::clock()) / CLOCKS_PER_SEC << " s\n";
     if (steps > 0 && t.factorizations > 0)
         std::cout << "per step " << t.total / steps << " s; one factorization " << t.factorization / t.factorizations

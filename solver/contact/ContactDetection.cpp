@@ -1,8 +1,11 @@
 #include "contact/ContactDetection.hpp"
 
+#include "parallel/ParallelFor.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <unordered_map>
 
 namespace mcdda {
@@ -73,85 +76,98 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
     std::map<std::pair<int, int>, const Contact*> before;  // (node, edge block) → contact
     for (const Contact& c : previous) before[{c.node, c.edge_block}] = &c;
 
-    std::vector<Contact> contacts;
-    for (int node : topology.boundary_nodes) {
-        const std::vector<int>* near = grid.edges_near(nodes[node]);
-        if (!near) continue;
-        const int block = mesh.node_block[node];
-        // Best edge per neighbouring block: nearest, then least penetrated.
-        std::map<int, std::pair<std::pair<double, double>, int>> best;
-        for (int e : *near) {
-            const BoundaryEdge& edge = topology.edges[e];
-            if (edge.block == block) continue;
-            const Point2& a = nodes[edge.from];
-            const Point2& b = nodes[edge.to];
-            const double distance = distance_to_segment(nodes[node], a, b);
-            if (distance > search_distance) continue;
-            const double gap = signed_gap(nodes[node], a, b);
-            if (gap < -search_distance) continue;  // deep behind the edge: another edge is meant
-            // Blocks never start a step overlapping: a vertex well behind an edge it did not touch
-            // before is on the far side of a thin block (a sliver where a joint meets a
-            // boundary), not touching it. (Such vertices, locked at 0.17–0.25 m penetration, put
-            // GPa stresses into the jointed-tunnel example.)
-            if (gap < -0.1 * search_distance) {
-                const auto it = before.find({node, edge.block});
-                if (it == before.end() || it->second->edge != e) continue;
+    // Boundary nodes are searched on the worker threads in contiguous ranges; the ranges' contacts
+    // are joined in node order, the order of a serial search.
+    std::vector<std::pair<int, std::vector<Contact>>> ranges;
+    std::mutex ranges_mutex;
+    const int boundary_nodes = static_cast<int>(topology.boundary_nodes.size());
+    parallel_for(boundary_nodes, [&](int first, int last) {
+        std::vector<Contact> contacts;
+        for (int index = first; index < last; ++index) {
+            const int node = topology.boundary_nodes[index];
+            const std::vector<int>* near = grid.edges_near(nodes[node]);
+            if (!near) continue;
+            const int block = mesh.node_block[node];
+            // Best edge per neighbouring block: nearest, then least penetrated.
+            std::map<int, std::pair<std::pair<double, double>, int>> best;
+            for (int e : *near) {
+                const BoundaryEdge& edge = topology.edges[e];
+                if (edge.block == block) continue;
+                const Point2& a = nodes[edge.from];
+                const Point2& b = nodes[edge.to];
+                const double distance = distance_to_segment(nodes[node], a, b);
+                if (distance > search_distance) continue;
+                const double gap = signed_gap(nodes[node], a, b);
+                if (gap < -search_distance) continue;  // deep behind the edge: another edge is meant
+                // Blocks never start a step overlapping: a vertex well behind an edge it did not touch
+                // before is on the far side of a thin block (a sliver where a joint meets a
+                // boundary), not touching it. (Such vertices, locked at 0.17–0.25 m penetration, put
+                // GPa stresses into the jointed-tunnel example.)
+                if (gap < -0.1 * search_distance) {
+                    const auto it = before.find({node, edge.block});
+                    if (it == before.end() || it->second->edge != e) continue;
+                }
+                // Only a vertex that projects onto the edge can touch it: beyond its ends the edge's
+                // line is no surface (a node of the same plane just past a block's corner would
+                // otherwise lock against the block's extended face).
+                const double len2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+                const double xi = len2 > 0.0 ? ((nodes[node].x - a.x) * (b.x - a.x) + (nodes[node].y - a.y) * (b.y - a.y)) / len2 : 0.0;
+                if (xi < -1e-6 || xi > 1.0 + 1e-6) continue;
+                // Shi's entrance rule, simplified: a vertex can only enter an edge it faces. A vertex
+                // on a flat stretch of boundary next to another block's corner must not take that
+                // block's side face (it would resist sliding along the joint): their normals are
+                // perpendicular. The threshold −0.05 still lets the tip of a wedge as sharp as 6°
+                // (normal · edge normal = −sin(θ/2)) touch the faces beside it.
+                const double l = std::hypot(b.x - a.x, b.y - a.y);
+                const Point2 vn = node_normal[node];
+                const double vl = std::hypot(vn.x, vn.y);
+                if (l > 0.0 && vl > 0.0 && ((b.y - a.y) * vn.x - (b.x - a.x) * vn.y) / (l * vl) > -0.05) continue;
+                const auto score = std::make_pair(distance, -gap);
+                auto it = best.find(edge.block);
+                if (it == best.end() || score < it->second.first) best[edge.block] = {score, e};
             }
-            // Only a vertex that projects onto the edge can touch it: beyond its ends the edge's
-            // line is no surface (a node of the same plane just past a block's corner would
-            // otherwise lock against the block's extended face).
-            const double len2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
-            const double xi = len2 > 0.0 ? ((nodes[node].x - a.x) * (b.x - a.x) + (nodes[node].y - a.y) * (b.y - a.y)) / len2 : 0.0;
-            if (xi < -1e-6 || xi > 1.0 + 1e-6) continue;
-            // Shi's entrance rule, simplified: a vertex can only enter an edge it faces. A vertex
-            // on a flat stretch of boundary next to another block's corner must not take that
-            // block's side face (it would resist sliding along the joint): their normals are
-            // perpendicular. The threshold −0.05 still lets the tip of a wedge as sharp as 6°
-            // (normal · edge normal = −sin(θ/2)) touch the faces beside it.
-            const double l = std::hypot(b.x - a.x, b.y - a.y);
-            const Point2 vn = node_normal[node];
-            const double vl = std::hypot(vn.x, vn.y);
-            if (l > 0.0 && vl > 0.0 && ((b.y - a.y) * vn.x - (b.x - a.x) * vn.y) / (l * vl) > -0.05) continue;
-            const auto score = std::make_pair(distance, -gap);
-            auto it = best.find(edge.block);
-            if (it == best.end() || score < it->second.first) best[edge.block] = {score, e};
-        }
-        for (const auto& [edge_block, choice] : best) {
-            Contact c;
-            c.node = node;
-            c.edge = choice.second;
-            c.edge_block = edge_block;
-            const auto it = before.find({node, edge_block});
-            if (it != before.end()) {
-                const Contact& old = *it->second;
-                c.state = old.state;
-                c.slip = old.slip;
-                c.intact = old.intact;
-                c.shear_spring = old.shear_spring;
-                c.normal_force = old.normal_force;
-                c.shear_force = old.shear_force;
-            } else {
-                const BoundaryEdge& edge = topology.edges[c.edge];
-                const Point2 a = nodes[edge.from], b = nodes[edge.to], p = nodes[node];
-                const double gap = signed_gap(p, a, b);
-                c.state = gap <= 1e-9 * topology.model_size ? ContactState::Locked : ContactState::Open;
-                if (c.state == ContactState::Locked && expected_increment.size() > 0) {
-                    const double l = std::hypot(b.x - a.x, b.y - a.y);
-                    const double tx = (b.x - a.x) / l, ty = (b.y - a.y) / l;
-                    const double xi = std::clamp(((p.x - a.x) * tx + (p.y - a.y) * ty) / l, 0.0, 1.0);
-                    const auto& u = expected_increment;
-                    const double slip = (u[2 * node] - (1 - xi) * u[2 * edge.from] - xi * u[2 * edge.to]) * tx +
-                                        (u[2 * node + 1] - (1 - xi) * u[2 * edge.from + 1] - xi * u[2 * edge.to + 1]) * ty;
-                    if (std::fabs(slip) > tolerance) {
-                        c.state = ContactState::Sliding;
-                        c.slip = slip > 0 ? 1 : -1;
-                        c.intact = false;
+            for (const auto& [edge_block, choice] : best) {
+                Contact c;
+                c.node = node;
+                c.edge = choice.second;
+                c.edge_block = edge_block;
+                const auto it = before.find({node, edge_block});
+                if (it != before.end()) {
+                    const Contact& old = *it->second;
+                    c.state = old.state;
+                    c.slip = old.slip;
+                    c.intact = old.intact;
+                    c.shear_spring = old.shear_spring;
+                    c.normal_force = old.normal_force;
+                    c.shear_force = old.shear_force;
+                } else {
+                    const BoundaryEdge& edge = topology.edges[c.edge];
+                    const Point2 a = nodes[edge.from], b = nodes[edge.to], p = nodes[node];
+                    const double gap = signed_gap(p, a, b);
+                    c.state = gap <= 1e-9 * topology.model_size ? ContactState::Locked : ContactState::Open;
+                    if (c.state == ContactState::Locked && expected_increment.size() > 0) {
+                        const double l = std::hypot(b.x - a.x, b.y - a.y);
+                        const double tx = (b.x - a.x) / l, ty = (b.y - a.y) / l;
+                        const double xi = std::clamp(((p.x - a.x) * tx + (p.y - a.y) * ty) / l, 0.0, 1.0);
+                        const auto& u = expected_increment;
+                        const double slip = (u[2 * node] - (1 - xi) * u[2 * edge.from] - xi * u[2 * edge.to]) * tx +
+                                            (u[2 * node + 1] - (1 - xi) * u[2 * edge.from + 1] - xi * u[2 * edge.to + 1]) * ty;
+                        if (std::fabs(slip) > tolerance) {
+                            c.state = ContactState::Sliding;
+                            c.slip = slip > 0 ? 1 : -1;
+                            c.intact = false;
+                        }
                     }
                 }
+                contacts.push_back(c);
             }
-            contacts.push_back(c);
         }
-    }
+        const std::lock_guard<std::mutex> lock(ranges_mutex);
+        ranges.emplace_back(first, std::move(contacts));
+    });
+    std::sort(ranges.begin(), ranges.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<Contact> contacts;
+    for (auto& [first, part] : ranges) contacts.insert(contacts.end(), part.begin(), part.end());
     return contacts;
 }
 
