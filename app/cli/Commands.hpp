@@ -6,10 +6,9 @@
 
 namespace mcdda::cli {
 
-enum ExitStatus {
-    exit_ok = 0, exit_model_error = 1, exit_usage = 2, exit_output_error = 3,
-    exit_run_failed = 4, exit_collapsed = 5, exit_cancelled = 130
-};
+/// Exit statuses before a run starts; a run's own (4 failed, 5 collapsed, 130 cancelled) come
+/// from exit_status(RunStatus) in run/RunOutput.hpp, which the desktop program shares.
+enum ExitStatus { exit_ok = 0, exit_model_error = 1, exit_usage = 2, exit_output_error = 3 };
 
 int run_check(const Request& r);
 int run_mesh(const Request& r);

@@ -171,16 +171,18 @@ public:
         for (const Ring& h : block.holes) add_ring(h);
     }
 
-    std::vector<CgalPoint> points() {
+    /// `sizes`: the sizes the field is uniform at somewhere (the global size, each local one).
+    std::vector<CgalPoint> points(const std::vector<double>& sizes) {
         double box[4] = {1e300, 1e300, -1e300, -1e300};
         for (const Point2& p : block_.outer) {
             box[0] = std::min(box[0], p.x); box[1] = std::min(box[1], p.y);
             box[2] = std::max(box[2], p.x); box[3] = std::max(box[3], p.y);
         }
-        // The root is a power of two of the leaf width the global size asks for, so that leaves
-        // where the size field is uniform come out at exactly that width.
+        // The root is a power of two of the leaf width that the size holding most of the block's
+        // triangles asks for, so that leaves come out at exactly that width where it holds
+        // (elsewhere only where the width happens to fit, below).
         const double extent = std::max(box[2] - box[0], box[3] - box[1]);
-        double half = 0.5 * leaf_fraction * field_.global_size();
+        double half = 0.5 * leaf_fraction * dominant_size(box, sizes);
         while (2.0 * half < extent) half *= 2.0;
         std::vector<int> all(segments_.size());
         for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
@@ -200,16 +202,40 @@ private:
     std::vector<Segment> segments_;
     std::vector<CgalPoint> points_;
 
+    /// Of `sizes`, the one whose zone (where the field equals it) holds the most triangles,
+    /// sampled on a 64 × 64 grid over the block's box.
+    double dominant_size(const double box[4], const std::vector<double>& sizes) const {
+        std::vector<double> weight(sizes.size(), 0.0);
+        constexpr int n = 64;
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < n; ++k) {
+                const Point2 p{box[0] + (i + 0.5) * (box[2] - box[0]) / n, box[1] + (k + 0.5) * (box[3] - box[1]) / n};
+                if (!block_contains(block_, p)) continue;
+                const double h = field_(p);
+                for (std::size_t s = 0; s < sizes.size(); ++s)
+                    if (std::fabs(h - sizes[s]) <= 1e-9 * sizes[s]) weight[s] += 1.0 / (h * h);
+            }
+        const auto best = std::max_element(weight.begin(), weight.end());
+        return *best > 0.0 ? sizes[best - weight.begin()] : field_.global_size();
+    }
+
     /// A cell of half-width r at c, column i and row j of its level; `near`: the boundary
     /// segments that may pass within reach of it; `inside`: the whole cell is known to lie inside
     /// the block, clear of the boundary.
     void visit(Point2 c, double r, long long i, long long j, const std::vector<int>& near, bool inside) {
         const double h = field_(c);
-        const bool leaf = 2.0 * r <= leaf_fraction * h * (1.0 + 1e-9);
-        // A leaf that came out a factor √2 finer than it needs to (the quadtree halves widths, the
-        // size field grades smoothly) keeps every other centre, like a black square of a
-        // chessboard: a grid turned by 45° with spacing 2√2 r, still within bounds.
-        if (leaf && 2.0 * std::sqrt(2.0) * r <= leaf_fraction * h && (i + j) % 2 != 0) return;
+        const double allowed = leaf_fraction * h * (1.0 + 1e-9);
+        const bool leaf = 2.0 * r <= allowed;
+        if (leaf) {
+            // Seeds only where their spacing fits the size to within 10 %: the leaf's own width, or
+            // every other centre (a chessboard's black squares: a grid turned by 45° with spacing
+            // 2√2 r). Elsewhere (where the size grades) refinement alone fills in, so that the
+            // mesh is as fine as refinement makes it, not finer.
+            const double width = 2.0 * r;
+            const bool fits = width >= 0.9 * allowed;
+            const bool fits_turned = !fits && std::sqrt(2.0) * width <= allowed && std::sqrt(2.0) * width >= 0.9 * allowed;
+            if (!fits && !(fits_turned && (i + j) % 2 == 0)) return;
+        }
         std::vector<int> closer;
         if (!inside) {
             // Reach: the cell's circumradius plus the clearance a leaf keeps from the boundary.
@@ -280,6 +306,8 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
     }
     const SizeField field(model.mesh, resolved_global_size(model));
     const SizeFieldCriteria criteria(model.mesh.min_angle, field);
+    std::vector<double> uniform_sizes{field.global_size()};
+    for (const LocalSize& l : model.mesh.local) uniform_sizes.push_back(l.size);
 
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
         const Block& block = blocks[bi];
@@ -289,7 +317,7 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         const std::list<CgalPoint> seeds = hole_seeds(cdt);
         // (About two triangles per seed: only large blocks are seeded, so that the meshes of
         // smaller ones stay those of plain refinement.)
-        std::vector<CgalPoint> interior = InteriorSeeds(block, field).points();
+        std::vector<CgalPoint> interior = InteriorSeeds(block, field).points(uniform_sizes);
         if (2.0 * static_cast<double>(interior.size()) > seeded_block_triangles)
             cdt.insert(interior.begin(), interior.end());
         // Step by step, so that a refinement that cannot finish (a minimum angle near the

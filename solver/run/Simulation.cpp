@@ -293,7 +293,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         // corrections rise and fall as Anderson's history turns over, so a new smallest one is
         // no sign of progress there (counting it let Salençon's excavation at 53k elements run
         // two tries of 66 iterations each before its load was halved: 180 iterations in the step
-        // against 116 now, with the same result).
+        // against 116 with this rule alone, with the same result).
         if (norm < 0.5 * best_norm) {
             best_norm = norm;
             best_at = k;
@@ -703,8 +703,9 @@ StepReport Simulation::advance_static() {
     const double floor = model_.analysis.min_load_fraction;
     double increment = 1.0 - state_.step_fraction;  // of the step's load, this try
     int cuts = 0;
-    // The end of the last try that failed, while no increment since has been sized against it.
-    std::optional<double> failed_end;
+    // The end of the last try that failed (a load position), while no increment since has been
+    // sized against it; negative: none.
+    double failed_end = -1.0;
     while (true) {
         const double dt = state_.time_step;
         const double from = state_.step + state_.step_fraction;
@@ -790,9 +791,10 @@ StepReport Simulation::advance_static() {
         // the first success short of it (Salençon's excavation, elastic over its first half,
         // failed its second half just as it failed the whole).
         const double position = state_.step_fraction;
-        if (failed_end && position + increment >= *failed_end - state_.step - 1e-9 && *failed_end - state_.step > position) {
-            increment = std::max(floor, 0.5 * (*failed_end - state_.step - position));
-            failed_end.reset();
+        const double failed_at = failed_end - state_.step;  // within this step
+        if (failed_end >= 0.0 && position + increment >= failed_at - 1e-9 && failed_at > position) {
+            increment = std::max(floor, 0.5 * (failed_at - position));
+            failed_end = -1.0;
         }
     }
 }
