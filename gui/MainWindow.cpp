@@ -122,7 +122,8 @@ void MainWindow::createActions()
     open->setIcon(QIcon(QStringLiteral(":/icons/open.svg")));
     open->setStatusTip(tr("Open a model file (*.json)"));
     reload_action_ = file->addAction(tr("&Reload"), this, &MainWindow::reload);
-    reload_action_->setShortcut(QKeySequence::Refresh);
+    // Not QKeySequence::Refresh: that is F5, which runs the analysis (Run ▸ Run).
+    reload_action_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     reload_action_->setStatusTip(tr("Read the model file again, e.g. after editing it"));
     reload_action_->setEnabled(false);
     recent_menu_ = file->addMenu(tr("Recent &Files"));

@@ -157,10 +157,11 @@ constexpr double seeded_block_triangles = 100000;
 
 /// Points for the interior of a large block: the centres of the leaves of a quadtree over its
 /// bounding box, each leaf no wider than 0.63 h at its centre (so the square grid they form
-/// triangulates into edges no longer than h), leaves within about a leaf of the boundary left
-/// out. Inserted (spatially sorted) before Delaunay refinement, they leave the refiner only the
-/// boundary layer and the quadtree's size transitions: its queue of bad faces, ordered over the
-/// whole block, made a million-triangle block mesh at a fifth of the speed of many small ones.
+/// triangulates into edges no longer than h), only where that width fits h closely (where the
+/// size is uniform), leaves within about a leaf of the boundary left out. Inserted (spatially
+/// sorted) before Delaunay refinement, they leave the refiner the boundary layer and the zones
+/// where the size grades: its queue of bad faces, ordered over the whole block, made a
+/// million-triangle block mesh at a fifth of the speed of many small ones.
 class InteriorSeeds {
 public:
     InteriorSeeds(const Block& block, const SizeField& field) : block_(block), field_(field) {

@@ -40,6 +40,7 @@ private slots:
     void initTestCase();
     void drawUndoRedoSaveOpen();
     void typedPointsHolesAndJointSets();
+    void everyShortcutIsUnique();
 };
 
 void EditingTest::initTestCase()
@@ -313,6 +314,30 @@ void EditingTest::typedPointsHolesAndJointSets()
     bad.accept();
     QVERIFY(bad.result() != int(QDialog::Accepted));
     QVERIFY(!bad.validationError().isEmpty());
+}
+
+// Two actions with one shortcut make Qt ignore the key ("Ambiguous shortcut overload"): F5 once
+// belonged to File ▸ Reload (QKeySequence::Refresh) and Run ▸ Run, and did nothing.
+void EditingTest::everyShortcutIsUnique()
+{
+    gui::MainWindow window;
+    window.show();
+    QMap<QString, QString> owner;  // shortcut → action text
+    bool f5_runs = false;  // (the Run menu's own action is called Run too, without a shortcut)
+    for (QAction* action : window.findChildren<QAction*>()) {
+        if (action->text().remove(QLatin1Char('&')) == QLatin1String("Run") &&
+            action->shortcuts().contains(QKeySequence(Qt::Key_F5)))
+            f5_runs = true;
+        for (const QKeySequence& key : action->shortcuts()) {
+            const QString name = key.toString(QKeySequence::PortableText);
+            if (name.isEmpty()) continue;
+            QVERIFY2(!owner.contains(name) || owner.value(name) == action->text(),
+                     qPrintable(name + " is the shortcut of both " + owner.value(name) + " and " + action->text()));
+            owner.insert(name, action->text());
+        }
+    }
+    QVERIFY(f5_runs);
+    QVERIFY(owner.size() > 10);  // the actions were found
 }
 
 QTEST_MAIN(EditingTest)
