@@ -158,9 +158,16 @@ ElementAssembly::Evaluation ElementAssembly::evaluate_elements(const Eigen::Vect
     // (The chunk bounds the buffers: a six-node element matrix is 1.2 kB.)
     constexpr int chunk = 8192;
     const int buffered = std::min(chunk, elements);
-    std::vector<typename Element::Forces> forces(buffered);
-    std::vector<typename Element::Stiffness> stiffness(with_matrix ? buffered : 0);
-    std::vector<int> yielding(buffered);
+    auto& buffers = [this]() -> auto& {
+        if constexpr (N == 3) return linear_buffers_;
+        else return quadratic_buffers_;
+    }();
+    auto& forces = buffers.forces;
+    auto& stiffness = buffers.stiffness;
+    auto& yielding = buffers.yielding;
+    forces.resize(buffered);
+    if (with_matrix) stiffness.resize(buffered);
+    yielding.resize(buffered);
     for (int first = 0; first < elements; first += chunk) {
         const int count = std::min(chunk, elements - first);
         parallel_for(count, [&](int begin, int end) {

@@ -69,7 +69,8 @@ public:
 
     /// Stresses of `old` advanced by increments d into `returned` (one result per point),
     /// internal forces into `internal` (resized, zeroed); element matrices into `system`
-    /// (group e for element e) unless `matrix` is None.
+    /// (group e for element e) unless `matrix` is None. Runs on the worker threads
+    /// (parallel/ParallelFor.hpp); one object evaluates one call at a time (its chunk buffers).
     Evaluation evaluate(const Eigen::VectorXd& d, const PointStates& old, std::vector<ReturnResult>& returned,
                         Eigen::VectorXd& internal, ElementMatrix matrix, SymmetricSystem* system) const;
 
@@ -94,6 +95,16 @@ private:
     bool has_tangent_ = false;                 ///< see has_tangent()
     std::vector<Triangle3::Geometry> linear_;  ///< per element, three-node meshes
     std::vector<Triangle6::Geometry> quadratic_geometry_;  ///< per element, six-node meshes
+    /// Per-element results of one chunk of evaluate(), kept between calls: the plastic
+    /// iterations evaluate hundreds of times, and a chunk of six-node matrices takes 9 MB.
+    template <int N>
+    struct ChunkBuffers {
+        std::vector<typename TriangleElement<N>::Forces> forces;
+        std::vector<typename TriangleElement<N>::Stiffness> stiffness;
+        std::vector<int> yielding;
+    };
+    mutable ChunkBuffers<3> linear_buffers_;
+    mutable ChunkBuffers<6> quadratic_buffers_;
     double inertia_ = 0.0;
 };
 

@@ -9,6 +9,7 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <cmath>
 #include <list>
 #include <sstream>
@@ -191,10 +192,11 @@ public:
         return std::move(points_);
     }
 
-private:
     /// Leaf width over the local size h: the square grid's diagonals (0.89 h) stay below h, and
     /// its triangles have the mean area of Delaunay refinement's to the same h (about 0.2 h²).
     static constexpr double leaf_fraction = 0.63;
+
+private:
     struct Segment {
         Point2 a, b;
     };
@@ -309,6 +311,7 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
     const SizeFieldCriteria criteria(model.mesh.min_angle, field);
     std::vector<double> uniform_sizes{field.global_size()};
     for (const LocalSize& l : model.mesh.local) uniform_sizes.push_back(l.size);
+    const double smallest_size = *std::min_element(uniform_sizes.begin(), uniform_sizes.end());
 
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
         const Block& block = blocks[bi];
@@ -317,10 +320,13 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         for (const Ring& h : block.holes) insert_ring(cdt, h);
         const std::list<CgalPoint> seeds = hole_seeds(cdt);
         // (About two triangles per seed: only large blocks are seeded, so that the meshes of
-        // smaller ones stay those of plain refinement.)
-        std::vector<CgalPoint> interior = InteriorSeeds(block, field).points(uniform_sizes);
-        if (2.0 * static_cast<double>(interior.size()) > seeded_block_triangles)
-            cdt.insert(interior.begin(), interior.end());
+        // smaller ones stay those of plain refinement. A block that could not hold that many
+        // seeds even at the smallest size is not looked at: thousands of small blocks.)
+        if (2.0 * block.area / std::pow(InteriorSeeds::leaf_fraction * smallest_size, 2) > seeded_block_triangles) {
+            std::vector<CgalPoint> interior = InteriorSeeds(block, field).points(uniform_sizes);
+            if (2.0 * static_cast<double>(interior.size()) > seeded_block_triangles)
+                cdt.insert(interior.begin(), interior.end());
+        }
         // Step by step, so that a refinement that cannot finish (a minimum angle near the
         // theoretical limit next to sharp corners) is stopped instead of running forever.
         CGAL::Delaunay_mesher_2<CDT, SizeFieldCriteria> mesher(cdt, criteria);
