@@ -53,6 +53,16 @@ namespace mcdda::gui {
 
 namespace {
 
+/// The steps a run of `model` plans: its stages' (a stage may end early on its target ratio).
+int plannedSteps(const Model& model)
+{
+    if (model.stages.empty()) return model.analysis.steps;
+    int steps = 0;
+    for (const Stage& stage : model.stages) steps += stage.analysis.steps;
+    return steps;
+}
+
+
 QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 
 constexpr int max_recent_files = 8;
@@ -883,10 +893,10 @@ bool MainWindow::startRun()
     shown_step_.clear();
     plot_clock_.invalidate();
     results_stem_ = stem;
-    progress_bar_->setRange(0, std::max(1, scene->model.analysis.steps));
+    progress_bar_->setRange(0, std::max(1, plannedSteps(scene->model)));
     progress_bar_->setValue(0);
     progress_bar_->setVisible(true);
-    log(tr("Run started: %n step(s); results in %1", "", scene->model.analysis.steps).arg(running_folder_));
+    log(tr("Run started: %n step(s); results in %1", "", plannedSteps(scene->model)).arg(running_folder_));
     run_thread_->start();
     updateRunActions();
     return true;
@@ -965,6 +975,7 @@ void MainWindow::onRunFinished(RunStatus status, const QString& message)
     QString text;
     switch (status) {
         case RunStatus::Completed: text = tr("Run completed: %n step(s).", "", step); break;
+        case RunStatus::Unbalanced: text = tr("Run ended but the model is not in equilibrium: %1").arg(message); break;
         case RunStatus::Cancelled: text = tr("Run stopped after step %1.").arg(step); break;
         case RunStatus::Collapsed: text = tr("The model collapsed: %1").arg(message); break;
         default: text = tr("The run failed: %1").arg(message); break;
@@ -974,6 +985,7 @@ void MainWindow::onRunFinished(RunStatus status, const QString& message)
     results_folder_ = folder;
     refreshResults();
     statusBar()->showMessage(text, 10000);
+    // (Not in equilibrium is said in the status bar and the log: the results are complete.)
     if (status == RunStatus::Collapsed || status == RunStatus::Failed) {
         // Non-blocking, like reportFailure().
         auto* box = new QMessageBox(status == RunStatus::Collapsed ? QMessageBox::Warning : QMessageBox::Critical,

@@ -14,6 +14,7 @@ Usage:
   mcdda mesh   MODEL --out DIR [--profile] [--set POINTER=VALUE]...
   mcdda render MODEL --out FILE.png [--size WxH] [--no-mesh] [--set POINTER=VALUE]...
   mcdda render MODEL --out FILE.png --results STEP.vtu [--field NAME] [--deform FACTOR]
+               [--contacts STEP.vtp]
                [--size WxH] [--set POINTER=VALUE]...
   mcdda run    MODEL --out DIR [--profile] [--quiet] [--threads N] [--set POINTER=VALUE]...
   mcdda --help | --version
@@ -44,6 +45,9 @@ Options:
                        (magnitude), ux, uy, stress_xx, stress_yy, stress_xy, stress_1
                        or stress_3 (in-plane principal; kPa or MPa, tension +)
   --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0)
+  --contacts STEP.vtp  with --results: draw the step's contact forces (lines along the force
+                       on each contact, the largest 6 % of the model long) and bolts, from
+                       the run's <model>_contacts_NNNNNN.vtp
   --quiet              print errors only
   --threads N          threads for the element loops and the contact search of run (default:
                        $MCDDA_THREADS, else one per core); results are the same for any number
@@ -118,6 +122,10 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
             const auto v = value("--results");
             if (!v) return std::nullopt;
             r.results = *v;
+        } else if (is("--contacts")) {
+            const auto v = value("--contacts");
+            if (!v) return std::nullopt;
+            r.contacts = *v;
         } else if (is("--field")) {
             const auto v = value("--field");
             if (!v) return std::nullopt;
@@ -165,8 +173,9 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
         error = r.command + ": --out is required";
         return std::nullopt;
     }
-    if ((field_given || deform_given) && r.results.empty()) {
-        error = std::string(field_given ? "--field" : "--deform") + " needs --results STEP.vtu";
+    if ((field_given || deform_given || !r.contacts.empty()) && r.results.empty()) {
+        error = std::string(field_given ? "--field" : deform_given ? "--deform" : "--contacts") +
+                " needs --results STEP.vtu";
         return std::nullopt;
     }
     if (!r.results.empty() && r.command != "render") {

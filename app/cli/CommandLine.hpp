@@ -20,6 +20,7 @@ struct Request {
     int width = 1600, height = 1000;     ///< --size WxH for render
     bool show_mesh = true;               ///< --no-mesh hides element edges in render
     std::string results;                 ///< --results STEP.vtu: render draws this result
+    std::string contacts;                ///< --contacts STEP.vtp: with it, the contact forces and bolts
     std::string field = "plastic_state"; ///< --field NAME: what the result picture colours
     double deform = 0.0;                 ///< --deform FACTOR: displacement scale of the result picture
     int threads = 0;                     ///< --threads N for run (0: $MCDDA_THREADS, else one per core)

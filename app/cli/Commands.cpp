@@ -108,6 +108,7 @@ int run_render(const Request& r) {
             view::ResultOptions options;
             options.field = r.field;
             options.deform = r.deform;
+            options.contacts = r.contacts;
             view::render_result_png(p, r.results, options, r.width, r.height, r.out);
         }
     } catch (const view::ResultFieldError& e) {

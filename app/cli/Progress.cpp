@@ -13,7 +13,12 @@ Progress::Progress(int total_steps, bool enabled)
 void Progress::update(const StepReport& r) {
     if (!enabled_) return;
     const auto now = std::chrono::steady_clock::now();
-    char line[320];
+    // Stage changes and broken bolts are always told, on their own lines.
+    if (!r.events.empty()) {
+        if (terminal_ && drawn_) std::fprintf(stderr, "\r\033[K");
+        for (const std::string& e : r.events) std::fprintf(stderr, "%s\n", e.c_str());
+    }
+    char line[360];
     const int width = 24;
     const int filled = total_ > 0 ? width * r.step / total_ : width;
     char bar[width + 1];
@@ -21,9 +26,9 @@ void Progress::update(const StepReport& r) {
     bar[width] = '\0';
     std::snprintf(line, sizeof line,
                   "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  open-close %d  "
-                  "equilibrium iterations %d in %d load increment%s  yielding %d",
+                  "equilibrium iterations %d in %d load increment%s  yielding %d  unbalanced %.2e",
                   bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations,
-                  r.plastic_iterations, r.load_increments, r.load_increments == 1 ? "" : "s", r.yielding);
+                  r.plastic_iterations, r.load_increments, r.load_increments == 1 ? "" : "s", r.yielding, r.unbalanced_ratio);
     if (terminal_) {
         if (now - last_draw_ < std::chrono::milliseconds(100) && r.step != total_) return;
         std::fprintf(stderr, "\r%s\033[K", line);

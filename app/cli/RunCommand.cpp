@@ -79,13 +79,15 @@ int run_run(const Request& r) {
     }
     if (!r.quiet)
         std::cout << "running " << r.model << ": " << p.statistics.elements << " elements, " << p.statistics.blocks
-                  << " blocks, " << p.model.analysis.steps << " steps -> " << r.out << "\n";
+                  << " blocks, " << simulation->planned_steps() << " steps"
+                  << (p.model.stages.empty() ? std::string() : " in " + std::to_string(p.model.stages.size()) + " stages")
+                  << " -> " << r.out << "\n";
 
     stop_requested = false;
     // Ctrl-C and SIGTERM (a batch system's stop) both end the run after the current step.
     auto previous_handler = std::signal(SIGINT, request_stop);
     auto previous_term_handler = std::signal(SIGTERM, request_stop);
-    Progress progress(simulation->model().analysis.steps, !r.quiet);
+    Progress progress(simulation->planned_steps(), !r.quiet);
     RunEnd end;
     try {
         end = run_steps(*simulation, output.get(), [] { return stop_requested.load(); },

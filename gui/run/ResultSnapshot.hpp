@@ -19,6 +19,7 @@ struct ResultSnapshot {
     std::vector<std::array<double, 4>> stress;  ///< Pa, per element (xx, yy, zz, xy), tension positive
     std::vector<double> plastic_strain;       ///< per element, accumulated equivalent
     std::vector<unsigned char> plastic_state;  ///< per element: 0 never, 1 earlier, 2 yielding now
+    std::vector<unsigned char> present;  ///< per element, 0 when excavated or not yet built (empty: all present)
 
     /// The current state of `simulation`.
     static ResultSnapshot of(const Simulation& simulation);

@@ -83,7 +83,7 @@ void RunController::start()
         return;
     }
 
-    const int steps = p.model.analysis.steps;
+    const int steps = simulation->planned_steps();
     RunStatus status = RunStatus::Completed;
     std::string message;
     QElapsedTimer progress_clock, snapshot_clock;

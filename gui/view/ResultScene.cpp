@@ -29,10 +29,12 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkWindow.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -46,6 +48,9 @@ const Rgb white{1.0, 1.0, 1.0};
 const Rgb state_colors[3] = {{0.82, 0.82, 0.82}, {1.0, 0.84, 0.0}, {0.86, 0.06, 0.06}};
 const char* const state_labels[3] = {QT_TRANSLATE_NOOP("mcdda::view", "elastic"), QT_TRANSLATE_NOOP("mcdda::view", "yielded before"), QT_TRANSLATE_NOOP("mcdda::view", "yielding now")};
 const Rgb joint_color{0.55, 0.0, 0.60};  // purple: not in the rainbow nor the state colours
+// Contact forces and bolts: neither in the rainbow, the state colours nor the outline's near-black.
+const Rgb contact_force_color{0.0, 0.40, 0.75};
+const Rgb bolt_color{0.0, 0.55, 0.25};
 
 /// How a field's value comes out of its array.
 enum Derived : int {
@@ -109,7 +114,26 @@ std::string list_names(const std::vector<std::string>& names)
 struct Result {
     vtkSmartPointer<vtkUnstructuredGrid> grid;
     const FieldInfo* field = nullptr;
+    vtkSmartPointer<vtkPolyData> contacts;  ///< ResultOptions::contacts, read
 };
+
+/// Reads a contacts file (ResultOptions::contacts) with its force arrays checked.
+vtkSmartPointer<vtkPolyData> load_contacts(const std::string& path)
+{
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw std::runtime_error("cannot read contacts " + path + ": no such file");
+    vtkNew<vtkXMLPolyDataReader> reader;
+    if (reader->CanReadFile(path.c_str()) == 0)
+        throw std::runtime_error("cannot read contacts " + path + ": not a VTK XML poly data file (.vtp)");
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
+    vtkDataArray* force = data != nullptr ? data->GetPointData()->GetArray("force") : nullptr;
+    if (force == nullptr || force->GetNumberOfComponents() < 2)
+        throw std::runtime_error("contacts " + path + " hold no contact forces: is it a contacts file of mcdda run?");
+    return data;
+}
 
 const FieldInfo& find_field(const ResultOptions& options)
 {
@@ -117,6 +141,27 @@ const FieldInfo& find_field(const ResultOptions& options)
         if (options.field == f.name) return f;
     throw ResultFieldError("unknown field \"" + options.field + "\" (available: " + list_names(result_field_names()) +
                            ")");
+}
+
+/// The cells of a staged run's grid that are present (cell data "present" ≠ 0): excavated and
+/// not yet built elements are not drawn. Points and their data stay as they are.
+vtkSmartPointer<vtkUnstructuredGrid> present_cells(vtkSmartPointer<vtkUnstructuredGrid> grid)
+{
+    vtkDataArray* present = grid->GetCellData()->GetArray("present");
+    if (present == nullptr) return grid;
+    auto kept = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    kept->SetPoints(grid->GetPoints());
+    kept->GetPointData()->ShallowCopy(grid->GetPointData());
+    kept->GetCellData()->CopyAllocate(grid->GetCellData());
+    kept->Allocate(grid->GetNumberOfCells());
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        if (present->GetTuple1(c) == 0.0) continue;
+        grid->GetCellPoints(c, ids);
+        const vtkIdType to = kept->InsertNextCell(grid->GetCellType(c), ids);
+        kept->GetCellData()->CopyData(grid->GetCellData(), c, to);
+    }
+    return kept;
 }
 
 /// Checks a result grid (read from `source`) against the model and the options.
@@ -132,6 +177,7 @@ Result check_result(vtkSmartPointer<vtkUnstructuredGrid> grid, const Preprocesse
         throw std::runtime_error("results " + source + " have " + std::to_string(cells) +
                                  " cells but the model's mesh has " + std::to_string(model.mesh.triangles.size()) +
                                  " triangles: were they written by a run of this model (with the same --set options)?");
+    r.grid = present_cells(r.grid);
     r.field = &field;
     if (find_array(r.grid, field) == nullptr) {
         std::vector<std::string> present;
@@ -161,7 +207,9 @@ Result load_result(const Preprocessed& model, const std::string& path, const Res
         throw std::runtime_error("cannot read results " + path + ": not a VTK XML unstructured grid (.vtu)");
     reader->SetFileName(path.c_str());
     reader->Update();
-    return check_result(reader->GetOutput(), model, path, field, options);
+    Result r = check_result(reader->GetOutput(), model, path, field, options);
+    if (!options.contacts.empty()) r.contacts = load_contacts(options.contacts);
+    return r;
 }
 
 /// The same grid as a result file holds (points undeformed, the arrays of RunOutput), from a
@@ -215,6 +263,12 @@ Result snapshot_result(const Preprocessed& model, const ResultSnapshot& s, const
         vtkNew<vtkDoubleArray> a;
         a->SetName("plastic_strain");
         for (double v : s.plastic_strain) a->InsertNextValue(v);
+        grid->GetCellData()->AddArray(a);
+    }
+    if (s.present.size() == cells) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName("present");
+        for (unsigned char v : s.present) a->InsertNextValue(v);
         grid->GetCellData()->AddArray(a);
     }
     return check_result(grid, model, "of step " + std::to_string(s.step), field, options);
@@ -403,6 +457,56 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         renderer->AddActor(flat_actor(data, joint_color, 3.0 * pixel));
     }
 
+    // Contact forces and bolts (docs/running.md, the contacts files).
+    const bool contact_forces = r.contacts != nullptr;
+    double largest_force = 0.0;
+    if (contact_forces) {
+        vtkPolyData* c = r.contacts;
+        vtkDataArray* force = c->GetPointData()->GetArray("force");
+        vtkCellArray* verts = c->GetVerts();
+        vtkNew<vtkIdList> vertex;
+        std::vector<vtkIdType> at;
+        verts->InitTraversal();
+        while (verts->GetNextCell(vertex) != 0)
+            if (vertex->GetNumberOfIds() > 0) at.push_back(vertex->GetId(0));
+        for (vtkIdType p : at) largest_force = std::max(largest_force, std::hypot(force->GetComponent(p, 0), force->GetComponent(p, 1)));
+        const double scale = largest_force > 0.0 ? 0.06 * box.size() / largest_force : 0.0;
+        vtkNew<vtkPoints> force_points;
+        vtkNew<vtkCellArray> force_lines;
+        for (vtkIdType p : at) {
+            const double fx = force->GetComponent(p, 0), fy = force->GetComponent(p, 1);
+            if (fx == 0.0 && fy == 0.0) continue;
+            double q[3];
+            c->GetPoint(p, q);
+            const vtkIdType l[2] = {force_points->InsertNextPoint(q[0], q[1], 4.0 * z_step),
+                                    force_points->InsertNextPoint(q[0] + scale * fx, q[1] + scale * fy, 4.0 * z_step)};
+            force_lines->InsertNextCell(2, l);
+        }
+        vtkNew<vtkPolyData> lines_data;
+        lines_data->SetPoints(force_points);
+        lines_data->SetLines(force_lines);
+        renderer->AddActor(flat_actor(lines_data, contact_force_color, 1.5 * pixel));
+        // Bolts: the poly data's lines, between their anchors.
+        vtkNew<vtkPoints> bolt_points;
+        vtkNew<vtkCellArray> bolt_lines;
+        vtkCellArray* lines_in = c->GetLines();
+        vtkNew<vtkIdList> line;
+        lines_in->InitTraversal();
+        while (lines_in->GetNextCell(line) != 0) {
+            if (line->GetNumberOfIds() < 2) continue;
+            double a[3], b[3];
+            c->GetPoint(line->GetId(0), a);
+            c->GetPoint(line->GetId(1), b);
+            const vtkIdType l[2] = {bolt_points->InsertNextPoint(a[0], a[1], 5.0 * z_step),
+                                    bolt_points->InsertNextPoint(b[0], b[1], 5.0 * z_step)};
+            bolt_lines->InsertNextCell(2, l);
+        }
+        vtkNew<vtkPolyData> bolts_data;
+        bolts_data->SetPoints(bolt_points);
+        bolts_data->SetLines(bolt_lines);
+        renderer->AddActor(flat_actor(bolts_data, bolt_color, 3.0 * pixel));
+    }
+
     // Legend.
     const int* size = renderer->GetSize();
     const double width = std::max(1, size[0]);
@@ -415,6 +519,13 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
                            picture_text(QT_TRANSLATE_NOOP("mcdda::view", "block boundary"))});
         if (joints)
             entries.push_back({LegendEntry::Icon::Line, joint_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint"))});
+        if (contact_forces) {
+            char largest[64];
+            std::snprintf(largest, sizeof largest, " (%.3g kN/m)", largest_force / 1e3);
+            entries.push_back({LegendEntry::Icon::Line, contact_force_color,
+                               picture_text(QT_TRANSLATE_NOOP("mcdda::view", "contact force, largest")) + largest});
+            entries.push_back({LegendEntry::Icon::Line, bolt_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt"))});
+        }
         const std::string title = picture_text(field.title);
         add_legend(renderer, title, entries, dpi);
         reserved = legend_width(title, entries, dpi) + 2.0 * legend_margin(dpi);
@@ -476,7 +587,7 @@ void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const 
 void render_result_png(const Preprocessed& model, const std::string& vtu_path, const ResultOptions& options,
                        int width, int height, const std::string& png_path)
 {
-    const Result result = load_result(model, vtu_path, options);  // file problems before X
+    const Result result = load_result(model, vtu_path, options);  // file problems (and contacts) before X
     render_scene_png([&](vtkRenderer* renderer) { add_result(renderer, model, result, options); }, width, height,
                      png_path, "render_result_png");
 }

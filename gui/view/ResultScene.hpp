@@ -25,6 +25,11 @@ struct ResultOptions {
     std::string field = "plastic_state";
     double deform = 0.0;      ///< points drawn at x + deform · displacement; 0 = undeformed
     bool show_joints = true;  ///< joint traces of the model (only drawn undeformed)
+    /// A step's contacts file of `mcdda run` (<model>_contacts_NNNNNN.vtp): its contact forces
+    /// are drawn as lines from each closed contact's vertex along the force on it, the largest
+    /// 6 % of the model's size long (UDEC's `plot cforce`), and its bolts as lines between their
+    /// anchors. Empty: none.
+    std::string contacts;
 };
 
 /// The field was not understood or is missing from the file; the message lists the available ones.

@@ -1,6 +1,7 @@
 #include "widgets/ModelTree.hpp"
 
 #include <QHeaderView>
+#include <QStringList>
 #include <QTreeWidgetItemIterator>
 
 #include <cstddef>
@@ -144,6 +145,36 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
     for (std::size_t i = 0; i < m.measurement_points.size(); ++i)
         row(points, to_qt(m.measurement_points[i].name), point_text(m.measurement_points[i].point),
             {Kind::MeasurementPoint, static_cast<int>(i)});
+    if (!m.bolts.empty()) {
+        QTreeWidgetItem* bolts = group(tr("Bolts"), m.bolts.size());
+        for (const Bolt& b : m.bolts)
+            row(bolts, to_qt(b.name), tr("%1 to %2, EA %3 MN/m").arg(point_text(b.from), point_text(b.to)).arg(b.stiffness / 1e6));
+    }
+    // Stages, read-only: what each does (editing them here is still to come).
+    if (!m.stages.empty()) {
+        QTreeWidgetItem* stages = group(tr("Stages"), m.stages.size());
+        auto region_names = [&](const std::vector<int>& indices) {
+            QStringList names;
+            for (int r : indices)
+                if (r >= 0 && static_cast<std::size_t>(r) < m.regions.size()) names << to_qt(m.regions[r].name);
+            return names.join(QStringLiteral(", "));
+        };
+        auto item_names = [](const std::vector<std::string>& names) {
+            QStringList list;
+            for (const std::string& n : names) list << to_qt(n);
+            return list.join(QStringLiteral(", "));
+        };
+        for (std::size_t i = 0; i < m.stages.size(); ++i) {
+            const Stage& st = m.stages[i];
+            QStringList what{tr("%n step(s)", "", st.analysis.steps)};
+            if (!st.excavate.empty()) what << tr("excavates %1").arg(region_names(st.excavate));
+            if (!st.activate.empty()) what << tr("builds %1").arg(region_names(st.activate));
+            if (!st.install.empty()) what << tr("installs %1").arg(item_names(st.install));
+            if (!st.remove.empty()) what << tr("removes %1").arg(item_names(st.remove));
+            if (!st.materials.empty()) what << tr("%n material change(s)", "", static_cast<int>(st.materials.size()));
+            row(stages, tr("%1. %2").arg(i + 1).arg(to_qt(st.name)), what.join(QStringLiteral("; ")));
+        }
+    }
     quiet_ = false;
     if (item_exists(m, selected)) selectItem(selected);
 }

@@ -15,6 +15,7 @@ struct Contact {
     int slip = 0;            ///< sliding direction along the edge, +1 or −1
     bool intact = true;      ///< cohesion and tensile strength still act (lost once opened or slid)
     double shear_spring = 0.0;  ///< committed elastic shear displacement of a locked contact (m)
+    double slip_total = 0.0;    ///< relative shear displacement along the edge while closed, summed (m)
 
     // Results of the last solve, for output and the next open–close check.
     double gap = 0.0;           ///< dn after the increment: > 0 open, < 0 penetration (m)

@@ -138,6 +138,7 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
                     c.slip = old.slip;
                     c.intact = old.intact;
                     c.shear_spring = old.shear_spring;
+                    c.slip_total = old.slip_total;
                     c.normal_force = old.normal_force;
                     c.shear_force = old.shear_force;
                 } else {

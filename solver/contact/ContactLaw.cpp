@@ -134,6 +134,7 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
 }
 
 void commit_contact(Contact& c, const ContactKinematics& k, const Vector6& d) {
+    if (c.state != ContactState::Open) c.slip_total += k.shear.dot(d);
     if (c.state == ContactState::Locked) c.shear_spring += k.shear.dot(d);
     else c.shear_spring = 0.0;
     if (c.state != ContactState::Locked) c.intact = false;

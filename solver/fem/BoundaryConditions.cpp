@@ -168,7 +168,8 @@ double load_factor(const Model& model, int table, double step, double time) {
 }
 
 Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std::vector<Point2>& nodes,
-                                const MeshTopology& topology, const BoundaryConditions& bc, double step, double time) {
+                                const MeshTopology& topology, const BoundaryConditions& bc, double step, double time,
+                                const std::vector<char>& active_elements) {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(nodes.size()));
     for (const auto& l : bc.point_loads) {
         const PointLoad& load = model.point_loads[l.load];
@@ -194,6 +195,7 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
     }
     if (model.gravity.x != 0.0 || model.gravity.y != 0.0) {
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            if (!active_elements.empty() && !active_elements[t]) continue;
             const auto& tri = mesh.triangles[t];
             const Point2 &a = nodes[tri[0]], &b = nodes[tri[1]], &c = nodes[tri[2]];
             const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));

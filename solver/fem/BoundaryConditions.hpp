@@ -54,7 +54,9 @@ double load_factor(const Model& model, int table, double step, double time);
 /// edge pressures (normal to the current edge, pushing into the material) and gravity, each
 /// distributed consistently with the element (three-node: ½ per edge node, A/3 per corner;
 /// six-node: 1/6, 4/6, 1/6 along an edge, A/3 per midside node and none at the corners).
+/// Gravity acts on the elements flagged in `active_elements` (empty: on all).
 Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std::vector<Point2>& nodes,
-                                const MeshTopology& topology, const BoundaryConditions& bc, double step, double time);
+                                const MeshTopology& topology, const BoundaryConditions& bc, double step, double time,
+                                const std::vector<char>& active_elements = {});
 
 }  // namespace mcdda

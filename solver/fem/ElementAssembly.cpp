@@ -58,6 +58,7 @@ void ElementAssembly::add_inertia_load(const Eigen::VectorXd& velocity, const Ei
                                        double beta, double dt, Eigen::VectorXd& force) const {
     const int n = nodes_per_element();
     for (int e = 0; e < element_count(); ++e) {
+        if (!active(e)) continue;
         const double mass = model_->materials[mesh_->triangle_material[e]].density *
                             (quadratic_ ? quadratic_geometry_[e].area : linear_[e].area);
         if (mass == 0.0) continue;
@@ -97,6 +98,13 @@ int ElementAssembly::evaluate_element(int e, const Eigen::VectorXd& d, const Poi
     int yielding = 0;
     f.setZero();
     if (k) k->setZero();
+    if (!active(e)) {  // removed (or not yet built): nothing acts, its stress stays as it was
+        for (int q = 0; q < Element::points; ++q) {
+            const int p = e * Element::points + q;
+            returned[p] = ReturnResult{{old.stress[p][0], old.stress[p][1], old.stress[p][2], old.stress_zz[p]}};
+        }
+        return 0;
+    }
     for (int q = 0; q < Element::points; ++q) {
         const int p = e * Element::points + q;
         const double w = g.weight(q);

@@ -58,6 +58,11 @@ public:
     void add_inertia_load(const Eigen::VectorXd& velocity, const Eigen::VectorXd& acceleration, double beta,
                           double dt, Eigen::VectorXd& force) const;
 
+    /// Elements present in the model (construction stages remove and add them): an absent one
+    /// has no stiffness, mass or internal force and keeps its stress. Empty: all present.
+    void set_active(std::vector<char> active) { active_ = std::move(active); }
+    bool active(int e) const { return active_.empty() || active_[e]; }
+
     /// Some material may yield with associated flow (ψ = φ): ElementMatrix::Tangent differs from
     /// the elastic matrix there (non-associated points keep the elastic stiffness).
     bool has_tangent() const { return has_tangent_; }
@@ -106,6 +111,7 @@ private:
     mutable ChunkBuffers<3> linear_buffers_;
     mutable ChunkBuffers<6> quadratic_buffers_;
     double inertia_ = 0.0;
+    std::vector<char> active_;  ///< see set_active()
 };
 
 }  // namespace mcdda

@@ -604,16 +604,15 @@ void parse_mesh(Parser& p, const json& root, Model& m) {
     }
 }
 
-void parse_analysis(Parser& p, const json& root, Model& m) {
-    if (!root.contains("analysis")) return;
-    const json& o = root.at("analysis");
-    const std::string path = "/analysis";
+/// The settings of an "analysis" object at `path` over those already in `a` (a stage's analysis
+/// overrides the model's).
+void parse_analysis_object(Parser& p, const json& o, const std::string& path, AnalysisSettings& a) {
     if (!p.is_object(o, path)) return;
     p.check_keys(o, path, {"type", "steps", "time_step", "max_displacement_ratio", "penalty", "dynamic_ratio",
                            "open_close_iterations", "plastic_iterations", "plastic_tolerance", "min_load_fraction",
-                           "geometry", "output_every", "plasticity"});
-    AnalysisSettings& a = m.analysis;
-    const std::string type = p.string(o, path, "type", std::string("static"));
+                           "geometry", "output_every", "plasticity", "equilibrium_ratio"});
+    const std::string type =
+        p.string(o, path, "type", std::string(a.kind == AnalysisSettings::Kind::Static ? "static" : "dynamic"));
     if (type == "static") a.kind = AnalysisSettings::Kind::Static;
     else if (type == "dynamic") a.kind = AnalysisSettings::Kind::Dynamic;
     else p.error(path + "/type", "must be \"static\" or \"dynamic\", got \"" + type + "\"");
@@ -626,12 +625,106 @@ void parse_analysis(Parser& p, const json& root, Model& m) {
     a.max_plastic_iterations = static_cast<int>(p.integer(o, path, "plastic_iterations", a.max_plastic_iterations));
     a.plastic_tolerance = p.number(o, path, "plastic_tolerance", a.plastic_tolerance);
     a.min_load_fraction = p.number(o, path, "min_load_fraction", a.min_load_fraction);
-    const std::string geometry = p.string(o, path, "geometry", std::string("updated"));
+    const std::string geometry = p.string(
+        o, path, "geometry", std::string(a.geometry == AnalysisSettings::Geometry::Updated ? "updated" : "initial"));
     if (geometry == "updated") a.geometry = AnalysisSettings::Geometry::Updated;
     else if (geometry == "initial") a.geometry = AnalysisSettings::Geometry::Initial;
     else p.error(path + "/geometry", "must be \"updated\" or \"initial\", got \"" + geometry + "\"");
     a.output_every = static_cast<int>(p.integer(o, path, "output_every", a.output_every));
     a.plasticity = p.boolean(o, path, "plasticity", a.plasticity);
+    a.equilibrium_ratio = p.number(o, path, "equilibrium_ratio", a.equilibrium_ratio);
+}
+
+void parse_analysis(Parser& p, const json& root, Model& m) {
+    if (root.contains("analysis")) parse_analysis_object(p, root.at("analysis"), "/analysis", m.analysis);
+}
+
+void parse_bolts(Parser& p, const json& root, Model& m) {
+    const json& list = p.array(root, "", "bolts");
+    collect_names(p, list, "/bolts");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "/bolts/" + std::to_string(i);
+        const json& o = list[i];
+        Bolt b;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "from", "to", "stiffness", "strength", "pretension"});
+            b.name = p.string(o, path, "name", std::nullopt);
+            b.from = p.point(o, path, "from");
+            b.to = p.point(o, path, "to");
+            b.stiffness = p.number(o, path, "stiffness", std::nullopt);
+            b.strength = p.number(o, path, "strength", 0.0);
+            b.pretension = p.number(o, path, "pretension", 0.0);
+        }
+        m.bolts.push_back(b);
+    }
+}
+
+/// Names of a stage's list (regions or items) as strings, each checked.
+std::vector<std::string> name_list(Parser& p, const json& o, const std::string& path, const char* key) {
+    std::vector<std::string> names;
+    const json& list = p.array(o, path, key);
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const std::string where = path + "/" + key + "/" + std::to_string(k);
+        if (!list[k].is_string()) p.error(where, "must be a name (a string)");
+        else names.push_back(list[k].get<std::string>());
+    }
+    return names;
+}
+
+void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::string, int>& material_names,
+                  const std::map<std::string, int>& table_names) {
+    const json& list = p.array(root, "", "stages");
+    collect_names(p, list, "/stages");
+    std::map<std::string, int> regions;
+    for (std::size_t r = 0; r < m.regions.size(); ++r) regions.emplace(m.regions[r].name, static_cast<int>(r));
+    auto region_indices = [&](const json& o, const std::string& path, const char* key) {
+        std::vector<int> indices;
+        const auto names = name_list(p, o, path, key);
+        for (std::size_t k = 0; k < names.size(); ++k) {
+            const int r = lookup(p, regions, names[k], path + "/" + key + "/" + std::to_string(k), "region");
+            if (r >= 0) indices.push_back(r);
+        }
+        return indices;
+    };
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "/stages/" + std::to_string(i);
+        const json& o = list[i];
+        Stage st;
+        st.analysis = m.analysis;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "excavate", "activate", "materials", "install", "remove", "analysis",
+                                   "release", "target_ratio"});
+            st.name = p.string(o, path, "name", std::nullopt);
+            st.excavate = region_indices(o, path, "excavate");
+            st.activate = region_indices(o, path, "activate");
+            const json& changes = p.array(o, path, "materials");
+            for (std::size_t k = 0; k < changes.size(); ++k) {
+                const std::string where = path + "/materials/" + std::to_string(k);
+                if (!p.is_object(changes[k], where)) continue;
+                p.check_keys(changes[k], where, {"region", "material"});
+                const int r = lookup(p, regions, p.string(changes[k], where, "region", std::nullopt), where + "/region",
+                                     "region");
+                const int mat = lookup(p, material_names, p.string(changes[k], where, "material", std::nullopt),
+                                       where + "/material", "material");
+                if (r >= 0 && mat >= 0) st.materials.push_back({r, mat});
+            }
+            st.install = name_list(p, o, path, "install");
+            st.remove = name_list(p, o, path, "remove");
+            if (o.contains("analysis")) parse_analysis_object(p, o.at("analysis"), path + "/analysis", st.analysis);
+            if (o.contains("release") && p.is_object(o.at("release"), path + "/release")) {
+                const json& r = o.at("release");
+                const std::string where = path + "/release";
+                p.check_keys(r, where, {"steps", "table"});
+                if (r.contains("steps") && r.contains("table"))
+                    p.error(where, "give either \"steps\" or \"table\", not both");
+                st.release_steps = static_cast<int>(p.integer(r, where, "steps", 0));
+                if (st.release_steps < 0) p.error(where + "/steps", "must be 0 (all the stage's steps) or more");
+                st.release_table = optional_reference(p, r, where, "table", table_names, "load table");
+            }
+            st.target_ratio = p.number(o, path, "target_ratio", 0.0);
+        }
+        m.stages.push_back(st);
+    }
 }
 
 /// Line and column (1-based) of a byte offset, for messages about malformed JSON.
@@ -703,15 +796,20 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
     p.check_keys(root, "", {"format", "version", "name", "description", "materials", "joint_materials",
                             "default_joint_material", "regions", "joints", "joint_sets", "load_tables",
                             "fixed_points", "rollers", "point_loads", "edge_pressures", "gravity",
-                            "initial_stress", "measurement_points", "mesh", "analysis"});
+                            "initial_stress", "measurement_points", "mesh", "analysis", "bolts", "stages"});
     const std::string format = p.string(root, "", "format", std::nullopt);
     if (!format.empty() && format != model_format_name)
         p.error("/format", "must be \"" + std::string(model_format_name) + "\", got \"" + format + "\"");
     const long version = p.integer(root, "", "version", -1);
     if (!root.contains("version")) p.error("/version", "required format version is missing");
-    else if (version != model_format_version)
-        p.error("/version", "this program reads version " + std::to_string(model_format_version) +
+    else if (version < 1 || version > model_format_version)
+        p.error("/version", "this program reads versions 1 to " + std::to_string(model_format_version) +
                                 ", the file is version " + std::to_string(version));
+    // Construction stages and bolts came with version 2.
+    if (version == 1)
+        for (const char* key : {"stages", "bolts"})
+            if (root.contains(key))
+                p.error(std::string("/") + key, std::string(key) + " need format version 2 (\"version\": 2)");
 
     Model m;
     m.name = p.string(root, "", "name", std::string());
@@ -727,6 +825,8 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
     parse_supports_and_loads(p, root, m, table_names);
     parse_mesh(p, root, m);
     parse_analysis(p, root, m);
+    parse_bolts(p, root, m);
+    parse_stages(p, root, m, material_names, table_names);
 
     if (has_errors(result.diagnostics)) return result;
     result.model = std::move(m);

@@ -50,6 +50,35 @@ std::string name_of(const List& list, int index, const char* what) {
     return list[static_cast<std::size_t>(index)].name;
 }
 
+/// The "analysis" object of `a`; with `base` (a stage's), only the settings that differ from it.
+json analysis_json(const AnalysisSettings& a, const AnalysisSettings* base) {
+    json o;
+    auto put = [&](const char* key, auto value, auto base_value) {
+        if (!base || value != base_value) o[key] = value;
+    };
+    const AnalysisSettings defaults;
+    const AnalysisSettings& b = base ? *base : defaults;
+    put("type", std::string(a.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static"),
+        std::string(b.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static"));
+    put("steps", a.steps, b.steps);
+    put("time_step", a.time_step, b.time_step);
+    put("max_displacement_ratio", a.max_displacement_ratio, b.max_displacement_ratio);
+    put("penalty", a.penalty, b.penalty);
+    put("dynamic_ratio", a.dynamic_ratio, b.dynamic_ratio);
+    put("open_close_iterations", a.max_open_close_iterations, b.max_open_close_iterations);
+    put("plastic_iterations", a.max_plastic_iterations, b.max_plastic_iterations);
+    put("plastic_tolerance", a.plastic_tolerance, b.plastic_tolerance);
+    put("min_load_fraction", a.min_load_fraction, b.min_load_fraction);
+    put("geometry", std::string(a.geometry == AnalysisSettings::Geometry::Initial ? "initial" : "updated"),
+        std::string(b.geometry == AnalysisSettings::Geometry::Initial ? "initial" : "updated"));
+    put("output_every", a.output_every, b.output_every);
+    put("plasticity", a.plasticity, b.plasticity);
+    // Written only when not the default (files stay as they were before it existed).
+    if (a.equilibrium_ratio != b.equilibrium_ratio) o["equilibrium_ratio"] = a.equilibrium_ratio;
+    if (o.is_null()) o = json::object();
+    return o;
+}
+
 json to_json(const Model& m) {
     json root;
     root["format"] = model_format_name;
@@ -249,23 +278,43 @@ json to_json(const Model& m) {
         root["mesh"] = std::move(o);
     }
 
-    {
-        const AnalysisSettings& a = m.analysis;
-        json o;
-        o["type"] = a.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static";
-        o["steps"] = a.steps;
-        o["time_step"] = a.time_step;
-        o["max_displacement_ratio"] = a.max_displacement_ratio;
-        o["penalty"] = a.penalty;
-        o["dynamic_ratio"] = a.dynamic_ratio;
-        o["open_close_iterations"] = a.max_open_close_iterations;
-        o["plastic_iterations"] = a.max_plastic_iterations;
-        o["plastic_tolerance"] = a.plastic_tolerance;
-        o["min_load_fraction"] = a.min_load_fraction;
-        o["geometry"] = a.geometry == AnalysisSettings::Geometry::Initial ? "initial" : "updated";
-        o["output_every"] = a.output_every;
-        o["plasticity"] = a.plasticity;
-        root["analysis"] = std::move(o);
+    root["analysis"] = analysis_json(m.analysis, nullptr);
+    if (!m.bolts.empty()) {
+        json list = json::array();
+        for (const Bolt& b : m.bolts)
+            list.push_back({{"name", b.name}, {"from", point(b.from)}, {"to", point(b.to)}, {"stiffness", b.stiffness},
+                            {"strength", b.strength}, {"pretension", b.pretension}});
+        root["bolts"] = std::move(list);
+    }
+    if (!m.stages.empty()) {
+        json list = json::array();
+        for (const Stage& st : m.stages) {
+            json o;
+            o["name"] = st.name;
+            auto regions = [&](const std::vector<int>& indices) {
+                json names = json::array();
+                for (int r : indices) names.push_back(name_of(m.regions, r, "region"));
+                return names;
+            };
+            if (!st.excavate.empty()) o["excavate"] = regions(st.excavate);
+            if (!st.activate.empty()) o["activate"] = regions(st.activate);
+            if (!st.materials.empty()) {
+                json changes = json::array();
+                for (const auto& [r, mat] : st.materials)
+                    changes.push_back({{"region", name_of(m.regions, r, "region")},
+                                       {"material", name_of(m.materials, mat, "material")}});
+                o["materials"] = std::move(changes);
+            }
+            if (!st.install.empty()) o["install"] = st.install;
+            if (!st.remove.empty()) o["remove"] = st.remove;
+            const json analysis = analysis_json(st.analysis, &m.analysis);
+            if (!analysis.empty()) o["analysis"] = analysis;
+            if (st.release_table >= 0) o["release"] = {{"table", name_of(m.load_tables, st.release_table, "load table")}};
+            else if (st.release_steps > 0) o["release"] = {{"steps", st.release_steps}};
+            if (st.target_ratio > 0.0) o["target_ratio"] = st.target_ratio;
+            list.push_back(std::move(o));
+        }
+        root["stages"] = std::move(list);
     }
     return root;
 }

@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <ostream>
 #include <string>
@@ -70,6 +71,19 @@ void write_field(TextBuffer& out, const VtuField& f) {
     out << "\n        </DataArray>\n";
 }
 
+void write_field_data(TextBuffer& out, const std::vector<VtuField>& fields) {
+    if (fields.empty()) return;
+    out << "    <FieldData>\n";
+    for (const VtuField& f : fields) {
+        out << "      <DataArray type=\"Float64\" Name=\"" << f.name << "\" NumberOfTuples=\""
+            << f.values.size() / std::max(1, f.components) << "\" NumberOfComponents=\"" << f.components
+            << "\" format=\"ascii\">\n       ";
+        for (double v : f.values) out << " " << v;
+        out << "\n      </DataArray>\n";
+    }
+    out << "    </FieldData>\n";
+}
+
 }  // namespace
 
 void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& fields) {
@@ -77,8 +91,9 @@ void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& field
         TextBuffer out(stream);
         out << "<?xml version=\"1.0\"?>\n"
             << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-            << "  <UnstructuredGrid>\n"
-            << "    <Piece NumberOfPoints=\"" << mesh.nodes.size() << "\" NumberOfCells=\"" << mesh.triangles.size() << "\">\n"
+            << "  <UnstructuredGrid>\n";
+        write_field_data(out, fields.field_data);
+        out << "    <Piece NumberOfPoints=\"" << mesh.nodes.size() << "\" NumberOfCells=\"" << mesh.triangles.size() << "\">\n"
             << "      <Points>\n"
             << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
         for (const Point2& p : mesh.nodes) out << "          " << p.x << " " << p.y << " 0\n";
@@ -108,6 +123,39 @@ void write_vtu(const std::string& path, const Mesh& mesh, const VtuFields& field
         write_ints(out, "material", mesh.triangle_material);
         for (const VtuField& f : fields.cell_data) write_field(out, f);
         out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+    });
+}
+
+void write_vtp(const std::string& path, const PolyData& data) {
+    write_file_atomically(path, [&](std::ostream& stream) {
+        TextBuffer out(stream);
+        out << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+            << "  <PolyData>\n";
+        write_field_data(out, data.fields.field_data);
+        out << "    <Piece NumberOfPoints=\"" << data.points.size() << "\" NumberOfVerts=\"" << data.vertices.size()
+            << "\" NumberOfLines=\"" << data.lines.size() << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+            << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const Point2& p : data.points) out << "          " << p.x << " " << p.y << " 0\n";
+        out << "        </DataArray>\n      </Points>\n";
+        auto cells = [&](const char* kind, std::size_t count, int per_cell, auto&& node) {
+            out << "      <" << kind << ">\n        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+            for (std::size_t i = 0; i < count; ++i) {
+                out << "         ";
+                for (int k = 0; k < per_cell; ++k) out << " " << node(i, k);
+                out << "\n";
+            }
+            out << "        </DataArray>\n        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
+            for (std::size_t i = 0; i < count; ++i) out << "          " << per_cell * (i + 1) << "\n";
+            out << "        </DataArray>\n      </" << kind << ">\n";
+        };
+        cells("Verts", data.vertices.size(), 1, [&](std::size_t i, int) { return data.vertices[i]; });
+        cells("Lines", data.lines.size(), 2, [&](std::size_t i, int k) { return data.lines[i][k]; });
+        out << "      <PointData>\n";
+        for (const VtuField& f : data.fields.point_data) write_field(out, f);
+        out << "      </PointData>\n      <CellData>\n";
+        for (const VtuField& f : data.fields.cell_data) write_field(out, f);
+        out << "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
     });
 }
 

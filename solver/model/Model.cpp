@@ -52,4 +52,10 @@ ElementType Model::element() const {
     return may_yield ? ElementType::T6 : ElementType::T3;
 }
 
+double Stage::released(double s, const std::vector<LoadTable>& tables) const {
+    if (release_table >= 0) return std::clamp(tables[release_table].factor(s), 0.0, 1.0);
+    const int over = release_steps > 0 ? release_steps : analysis.steps;
+    return over <= 0 ? 1.0 : std::clamp(s / over, 0.0, 1.0);
+}
+
 }  // namespace mcdda

@@ -196,7 +196,49 @@ struct AnalysisSettings {
     enum class Geometry { Updated, Initial };
     Geometry geometry = Geometry::Updated;
     int output_every = 10;                ///< save every n-th step (the last always saved)
+    /// A run (or its last stage) whose unbalanced-force ratio — the largest out-of-balance nodal
+    /// force over the largest applied force, UDEC's `solve ratio` — ends above this is reported
+    /// as not in equilibrium.
+    double equilibrium_ratio = 1e-2;
     bool plasticity = true;               ///< false: every material stays elastic
+};
+
+/// A rock bolt or cable (Shi's bolt, UDEC's cable): an axial spring between two points, each
+/// anchored in the element it lies in (moving with that element's corner nodes).
+struct Bolt {
+    std::string name;
+    Point2 from, to;
+    double stiffness = 0.0;   ///< axial stiffness EA per metre of model thickness (N/m), > 0; the
+                              ///< spring is EA/L with L the bolt's length
+    double strength = 0.0;    ///< tensile force at which it breaks (N/m); 0 = unbreakable
+    double pretension = 0.0;  ///< axial force when installed (N/m), ≥ 0, pulls the ends together
+};
+
+/// One construction stage (RS2's stage, PLAXIS's phase). Stages run in order; each continues
+/// from the state the previous one left. Names refer to regions, supports, loads and bolts of
+/// the model: an item named in some stage's `install` list is absent before that stage, one
+/// named in a `remove` list absent from that stage on; a region named in `activate` is absent
+/// before that stage, one named in `excavate` from it on.
+struct Stage {
+    std::string name;
+    std::vector<int> excavate;   ///< regions removed at the start of the stage
+    std::vector<int> activate;   ///< regions added (backfill, liners)
+    /// Region materials changed at the start of the stage: (region, material) indices.
+    std::vector<std::array<int, 2>> materials;
+    std::vector<std::string> install;  ///< supports, loads and bolts added, by name
+    std::vector<std::string> remove;   ///< and removed
+    AnalysisSettings analysis;         ///< the stage's settings (the model's, with overrides)
+    /// Release of the forces that removed material (or any other change of the stage) leaves out
+    /// of balance: fraction released after stage step s. Linear over `release_steps` steps
+    /// (0 = all the stage's steps) unless `release_table` (abscissa: step within the stage) is set.
+    int release_steps = 0;
+    int release_table = -1;
+    /// Static stages: the stage ends early once the unbalanced-force ratio falls below this
+    /// (0 = run all its steps).
+    double target_ratio = 0.0;
+
+    /// Fraction of the stage's out-of-balance force released after `s` (fractional) stage steps.
+    double released(double s, const std::vector<LoadTable>& tables) const;
 };
 
 /// The whole model.
@@ -219,6 +261,10 @@ struct Model {
     std::vector<MeasurementPoint> measurement_points;
     MeshControls mesh;
     AnalysisSettings analysis;
+    std::vector<Bolt> bolts;
+    /// Construction stages (format version 2); empty: one stage with everything present from
+    /// the start and the model's analysis settings (version 1 behaviour).
+    std::vector<Stage> stages;
 
     /// Axis-aligned box of all region boundaries: xmin, ymin, xmax, ymax.
     std::array<double, 4> bounds() const;

@@ -1,7 +1,12 @@
 #include "model/ModelValidator.hpp"
 
+#include "geometry/PolygonChecks.hpp"
+
 #include <cmath>
+#include <algorithm>
+#include <map>
 #include <sstream>
+#include <string>
 
 namespace mcdda {
 
@@ -222,6 +227,8 @@ void check_boundary_conditions(Checker& c, const Model& m) {
         c.point(m.measurement_points[i].point, "/measurement_points/" + std::to_string(i) + "/point");
 }
 
+void check_analysis(Checker& c, const AnalysisSettings& a, const std::string& path);
+
 void check_controls(Checker& c, const Model& m) {
     const MeshControls& mesh = m.mesh;
     if (!(mesh.size >= 0.0)) c.error("/mesh/size", "mesh size must be positive (or 0 for automatic)");
@@ -234,19 +241,104 @@ void check_controls(Checker& c, const Model& m) {
         if (!(mesh.local[i].size > 0.0)) c.error(path + "/size", "local size must be positive");
         if (!(mesh.local[i].radius >= 0.0)) c.error(path + "/radius", "radius must not be negative");
     }
-    const AnalysisSettings& a = m.analysis;
-    if (a.steps < 1) c.error("/analysis/steps", "at least one step is needed");
-    if (!(a.time_step > 0.0)) c.error("/analysis/time_step", "time step must be positive (got " + num(a.time_step) + " s)");
+    check_analysis(c, m.analysis, "/analysis");
+}
+
+void check_bolts(Checker& c, const Model& m) {
+    for (std::size_t i = 0; i < m.bolts.size(); ++i) {
+        const Bolt& b = m.bolts[i];
+        const std::string path = "/bolts/" + std::to_string(i);
+        if (!(b.stiffness > 0.0)) c.error(path + "/stiffness", "bolt stiffness EA must be positive (got " + num(b.stiffness) + " N/m)");
+        if (!(b.strength >= 0.0)) c.error(path + "/strength", "bolt strength must not be negative (0 = unbreakable)");
+        if (!(b.pretension >= 0.0)) c.error(path + "/pretension", "pretension must not be negative");
+        if (std::hypot(b.to.x - b.from.x, b.to.y - b.from.y) <= 0.0) c.error(path, "bolt \"" + b.name + "\" has no length");
+        for (const char* end : {"from", "to"}) {
+            const Point2 q = std::string(end) == "from" ? b.from : b.to;
+            bool inside = false;
+            for (const Region& r : m.regions) inside = inside || region_contains(r, q);
+            if (!inside)
+                c.error(path + "/" + end, "bolt \"" + b.name + "\" ends at (" + num(q.x) + ", " + num(q.y) +
+                                              "), outside every region");
+        }
+    }
+}
+
+/// Stages: what each names exists, and is present or absent as its action needs.
+void check_stages(Checker& c, const Model& m) {
+    std::vector<std::pair<std::string, std::string>> items;  // (name, kind)
+    for (const FixedPoint& f : m.fixed_points) items.emplace_back(f.name, "fixed point");
+    for (const Roller& r : m.rollers) items.emplace_back(r.name, "roller");
+    for (const PointLoad& l : m.point_loads) items.emplace_back(l.name, "point load");
+    for (const EdgePressure& l : m.edge_pressures) items.emplace_back(l.name, "edge pressure");
+    for (const Bolt& b : m.bolts) items.emplace_back(b.name, "bolt");
+    auto kinds_of = [&](const std::string& name) {
+        std::vector<std::string> kinds;
+        for (const auto& [n, kind] : items)
+            if (n == name) kinds.push_back(kind);
+        return kinds;
+    };
+    std::vector<char> region_present(m.regions.size(), 1);
+    for (const Stage& st : m.stages)
+        for (int r : st.activate) region_present[r] = 0;
+    std::map<std::string, bool> item_present;
+    for (const auto& [name, kind] : items) item_present[name] = true;
+    for (const Stage& st : m.stages)
+        for (const std::string& name : st.install) item_present[name] = false;
+    for (std::size_t i = 0; i < m.stages.size(); ++i) {
+        const Stage& st = m.stages[i];
+        const std::string path = "/stages/" + std::to_string(i);
+        check_analysis(c, st.analysis, path + "/analysis");
+        if (!(st.target_ratio >= 0.0)) c.error(path + "/target_ratio", "must not be negative (0 = run all steps)");
+        for (std::size_t k = 0; k < st.excavate.size(); ++k) {
+            const int r = st.excavate[k];
+            if (!region_present[r])
+                c.error(path + "/excavate/" + std::to_string(k), "region \"" + m.regions[r].name + "\" is not there to excavate in stage \"" + st.name + "\"");
+            region_present[r] = 0;
+        }
+        for (std::size_t k = 0; k < st.activate.size(); ++k) {
+            const int r = st.activate[k];
+            if (region_present[r] && std::count(st.excavate.begin(), st.excavate.end(), r) == 0)
+                c.error(path + "/activate/" + std::to_string(k), "region \"" + m.regions[r].name + "\" is already there in stage \"" + st.name + "\"");
+            region_present[r] = 1;
+        }
+        if (std::none_of(region_present.begin(), region_present.end(), [](char p) { return p != 0; }))
+            c.error(path, "stage \"" + st.name + "\" leaves no region in the model");
+        for (const auto& [list, installing] : {std::pair{&st.install, true}, std::pair{&st.remove, false}})
+            for (std::size_t k = 0; k < list->size(); ++k) {
+                const std::string& name = (*list)[k];
+                const std::string where = path + (installing ? "/install/" : "/remove/") + std::to_string(k);
+                const auto kinds = kinds_of(name);
+                if (kinds.empty()) {
+                    c.error(where, "no support, load or bolt named \"" + name + "\"");
+                    continue;
+                }
+                if (kinds.size() > 1) {
+                    c.error(where, "\"" + name + "\" names both a " + kinds[0] + " and a " + kinds[1] + ": give them different names");
+                    continue;
+                }
+                if (item_present[name] == installing)
+                    c.error(where, kinds[0] + " \"" + name + "\" is " + (installing ? "already there" : "not there") +
+                                       " in stage \"" + st.name + "\"");
+                item_present[name] = installing;
+            }
+    }
+}
+
+void check_analysis(Checker& c, const AnalysisSettings& a, const std::string& at) {
+    const std::string path = at;
+    if (a.steps < 1) c.error(path + "/steps", "at least one step is needed");
+    if (!(a.time_step > 0.0)) c.error(path + "/time_step", "time step must be positive (got " + num(a.time_step) + " s)");
     if (!(a.max_displacement_ratio > 0.0 && a.max_displacement_ratio <= 0.1))
-        c.error("/analysis/max_displacement_ratio", "must lie in (0, 0.1] (got " + num(a.max_displacement_ratio) + ")");
-    if (!(a.penalty >= 0.0)) c.error("/analysis/penalty", "penalty must not be negative (0 = automatic)");
-    if (!(a.dynamic_ratio >= 0.0 && a.dynamic_ratio <= 1.0)) c.error("/analysis/dynamic_ratio", "must lie in [0, 1]");
-    if (a.max_open_close_iterations < 1) c.error("/analysis/open_close_iterations", "must be at least 1");
-    if (a.max_plastic_iterations < 1) c.error("/analysis/plastic_iterations", "must be at least 1");
-    if (!(a.plastic_tolerance > 0.0)) c.error("/analysis/plastic_tolerance", "must be positive");
+        c.error(path + "/max_displacement_ratio", "must lie in (0, 0.1] (got " + num(a.max_displacement_ratio) + ")");
+    if (!(a.penalty >= 0.0)) c.error(path + "/penalty", "penalty must not be negative (0 = automatic)");
+    if (!(a.dynamic_ratio >= 0.0 && a.dynamic_ratio <= 1.0)) c.error(path + "/dynamic_ratio", "must lie in [0, 1]");
+    if (a.max_open_close_iterations < 1) c.error(path + "/open_close_iterations", "must be at least 1");
+    if (a.max_plastic_iterations < 1) c.error(path + "/plastic_iterations", "must be at least 1");
+    if (!(a.plastic_tolerance > 0.0)) c.error(path + "/plastic_tolerance", "must be positive");
     if (!(a.min_load_fraction > 0.0 && a.min_load_fraction <= 1.0))
-        c.error("/analysis/min_load_fraction", "must lie in (0, 1]");
-    if (a.output_every < 1) c.error("/analysis/output_every", "must be at least 1");
+        c.error(path + "/min_load_fraction", "must lie in (0, 1]");
+    if (a.output_every < 1) c.error(path + "/output_every", "must be at least 1");
+    if (!(a.equilibrium_ratio > 0.0)) c.error(path + "/equilibrium_ratio", "must be positive");
 }
 
 }  // namespace
@@ -262,6 +354,8 @@ void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics) {
     check_boundary_conditions(c, model);
     check_load_tables(c, model);
     check_controls(c, model);
+    check_bolts(c, model);
+    check_stages(c, model);
 }
 
 std::string joint_path(const Model& model, int joint) {

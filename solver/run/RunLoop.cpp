@@ -1,14 +1,13 @@
 #include "run/RunLoop.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 
 namespace mcdda {
 
 RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<bool()>& should_stop,
                  const std::function<void(const StepReport&)>& on_step) {
-    const int steps = simulation.model().analysis.steps;
-    const int every = std::max(1, simulation.model().analysis.output_every);
     RunEnd end{RunStatus::Completed, "completed"};
     int last_saved = -1;
     if (output) {
@@ -16,7 +15,7 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         output->save_step(simulation);
         last_saved = 0;
     }
-    while (simulation.state().step < steps) {
+    while (!simulation.finished()) {
         if (should_stop && should_stop()) {
             end = {RunStatus::Cancelled, "cancelled by the user after step " + std::to_string(simulation.state().step)};
             break;
@@ -48,12 +47,25 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         }
         if (output) {
             output->record_history(simulation);
-            if (report.step % every == 0 || report.step == steps) {
+            // Every output_every-th step of the stage's settings, and the last of each stage.
+            const int every = std::max(1, simulation.analysis().output_every);
+            if (report.step % every == 0 || simulation.stage_complete()) {
                 output->save_step(simulation);
                 last_saved = report.step;
             }
         }
         if (on_step) on_step(report);
+    }
+    // Every step ran: is the model at rest? (A block still sliding, a slope still moving.)
+    if (end.status == RunStatus::Completed) {
+        const double ratio = simulation.state().unbalanced_ratio, limit = simulation.analysis().equilibrium_ratio;
+        if (simulation.state().step > 0 && ratio > limit) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "not in equilibrium: the unbalanced-force ratio after step %d is %.3g (limit %.3g)",
+                          simulation.state().step, ratio, limit);
+            end = {RunStatus::Unbalanced, text};
+        }
     }
     // An early ending still leaves its last accepted step on disk.
     if (output && last_saved != simulation.state().step) output->save_step(simulation);

@@ -1,6 +1,7 @@
 #include "run/RunOutput.hpp"
 
 #include "io/AtomicFile.hpp"
+#include "contact/ContactLaw.hpp"
 #include "io/VtuWriter.hpp"
 #include "linalg/BlasInfo.hpp"
 #include "parallel/ParallelFor.hpp"
@@ -22,6 +23,7 @@ const char* status_name(RunStatus s) {
     switch (s) {
         case RunStatus::Running: return "running";
         case RunStatus::Completed: return "completed";
+        case RunStatus::Unbalanced: return "unbalanced";
         case RunStatus::Collapsed: return "collapsed";
         case RunStatus::Failed: return "failed";
         case RunStatus::Cancelled: return "cancelled";
@@ -32,6 +34,7 @@ const char* status_name(RunStatus s) {
 int exit_status(RunStatus s) {
     switch (s) {
         case RunStatus::Completed: return 0;
+        case RunStatus::Unbalanced: return 3;
         case RunStatus::Collapsed: return 5;
         case RunStatus::Cancelled: return 130;
         default: return 4;
@@ -47,7 +50,23 @@ bool ended_with_results(const fs::path& directory) {
     const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
     if (j.is_discarded() || !j.is_object() || !j.contains("status") || !j["status"].is_string()) return false;
     const std::string status = j["status"].get<std::string>();
-    return status == status_name(RunStatus::Completed) || status == status_name(RunStatus::Collapsed);
+    return status == status_name(RunStatus::Completed) || status == status_name(RunStatus::Unbalanced) ||
+           status == status_name(RunStatus::Collapsed);
+}
+
+}  // namespace
+
+namespace {
+
+/// A ParaView collection (.pvd) of `files` (time, name), rewritten atomically.
+void write_collection(const std::string& path, const std::vector<std::pair<double, std::string>>& files) {
+    write_file_atomically(path, [&](std::ostream& out) {
+        out << std::setprecision(12) << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
+        for (const auto& [time, file] : files)
+            out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
+        out << "  </Collection>\n</VTKFile>\n";
+    });
 }
 
 }  // namespace
@@ -69,7 +88,9 @@ RunOutput::RunOutput(std::string directory, std::string model_stem)
         const bool step_file = name.size() > 11 && name.compare(name.size() - 4, 4, ".vtu") == 0 &&
                                name[name.size() - 11] == '_' &&
                                std::all_of(name.end() - 10, name.end() - 4, [](char c) { return c >= '0' && c <= '9'; });
-        if (name == "history.csv" || name == "summary.json" || entry.path().extension() == ".pvd" || step_file)
+        const bool contacts_file = entry.path().extension() == ".vtp" && name.find("_contacts_") != std::string::npos;
+        if (name == "history.csv" || name == "summary.json" || entry.path().extension() == ".pvd" || step_file ||
+            contacts_file)
             earlier.push_back(entry.path());
     }
     if (ec) throw std::runtime_error("cannot read the output directory " + directory_ + ": " + ec.message());
@@ -123,19 +144,83 @@ void RunOutput::save_step(const Simulation& sim) {
     VtuField strain{"plastic_strain", 1, s.plastic_strain};
     fields.point_data = {std::move(displacement), std::move(velocity)};
     fields.cell_data = {std::move(stress), std::move(state), std::move(strain)};
+    fields.field_data = {{"step", 1, {static_cast<double>(s.step)}},
+                         {"stage", 1, {static_cast<double>(s.stage + 1)}},
+                         {"time", 1, {s.time}}};
 
     std::ostringstream name;
     name << stem_ << "_" << std::setw(6) << std::setfill('0') << s.step << ".vtu";
-    write_vtu((fs::path(directory_) / name.str()).string(), mesh, fields);
+    const std::string path = (fs::path(directory_) / name.str()).string();
+    // Staged runs: whether each element is present (excavated and not yet built ones are not);
+    // ParaView's Threshold on it, and the desktop program, leave the absent ones out.
+    if (!sim.full_model().stages.empty()) {
+        const std::vector<char>& active = sim.active_elements();
+        VtuField present{"present", 1, std::vector<double>(mesh.triangles.size(), 1.0)};
+        for (std::size_t e = 0; e < active.size(); ++e) present.values[e] = active[e] ? 1.0 : 0.0;
+        fields.cell_data.push_back(std::move(present));
+    }
+    write_vtu(path, mesh, fields);
     saved_.emplace_back(s.time, name.str());
 
-    write_file_atomically((fs::path(directory_) / (stem_ + ".pvd")).string(), [&](std::ostream& out) {
-        out << std::setprecision(12) << "<?xml version=\"1.0\"?>\n"
-            << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n";
-        for (const auto& [time, file] : saved_)
-            out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
-        out << "  </Collection>\n</VTKFile>\n";
-    });
+    write_collection((fs::path(directory_) / (stem_ + ".pvd")).string(), saved_);
+    save_contacts(sim);
+}
+
+void RunOutput::save_contacts(const Simulation& sim) {
+    const SimulationState& s = sim.state();
+    const MeshTopology& topology = sim.topology();
+    PolyData data;
+    VtuField normal_force{"normal_force", 1, {}}, shear_force{"shear_force", 1, {}}, force{"force", 3, {}},
+        normal{"normal", 3, {}}, opening{"opening", 1, {}}, slip{"slip", 1, {}}, state{"state", 1, {}},
+        vertex_block{"vertex_block", 1, {}}, edge_block{"edge_block", 1, {}};
+    auto point_values = [&](double n, double t, Point2 f, Point2 dir, double open, double slid, int st, int vb, int eb) {
+        normal_force.values.push_back(n);
+        shear_force.values.push_back(t);
+        force.values.insert(force.values.end(), {f.x, f.y, 0.0});
+        normal.values.insert(normal.values.end(), {dir.x, dir.y, 0.0});
+        opening.values.push_back(open);
+        slip.values.push_back(slid);
+        state.values.push_back(st);
+        vertex_block.values.push_back(vb);
+        edge_block.values.push_back(eb);
+    };
+    for (const Contact& c : s.contacts) {
+        const ContactKinematics k = contact_kinematics(c, s.nodes, topology);
+        const Point2 n{k.normal[0], k.normal[1]}, t{k.shear[0], k.shear[1]};
+        // On the vertex: the normal force pushes it out of the edge's block, the shear spring
+        // (or friction) holds it back along the edge.
+        const bool closed = c.state != ContactState::Open;
+        const double fn = closed ? c.normal_force : 0.0, ft = closed ? c.shear_force : 0.0;
+        data.vertices.push_back(static_cast<int>(data.points.size()));
+        data.points.push_back(s.nodes[c.node]);
+        point_values(fn, ft, {fn * n.x - ft * t.x, fn * n.y - ft * t.y}, n, closed ? 0.0 : std::max(0.0, k.gap),
+                     c.slip_total, c.state == ContactState::Open ? 0 : c.state == ContactState::Sliding ? 1 : 2,
+                     sim.mesh().node_block[c.node], c.edge_block);
+    }
+    // Bolts: a line between their anchors, each end a point with no contact values.
+    const Model& model = sim.full_model();
+    VtuField bolt_force{"bolt_force", 1, std::vector<double>(data.vertices.size(), 0.0)};
+    for (std::size_t i = 0; i < model.bolts.size(); ++i) {
+        const int first = static_cast<int>(data.points.size());
+        for (const Point2 p : sim.bolt_ends(static_cast<int>(i))) {
+            data.points.push_back(p);
+            point_values(0.0, 0.0, {0.0, 0.0}, {0.0, 0.0}, 0.0, 0.0, 0, -1, -1);
+        }
+        data.lines.push_back({first, first + 1});
+        bolt_force.values.push_back(s.bolt_force[i]);
+    }
+    data.fields.point_data = {std::move(normal_force), std::move(shear_force), std::move(force), std::move(normal),
+                              std::move(opening),      std::move(slip),        std::move(state), std::move(vertex_block),
+                              std::move(edge_block)};
+    data.fields.cell_data = {std::move(bolt_force)};
+    data.fields.field_data = {{"step", 1, {static_cast<double>(s.step)}},
+                              {"stage", 1, {static_cast<double>(s.stage + 1)}},
+                              {"time", 1, {s.time}}};
+    std::ostringstream name;
+    name << stem_ << "_contacts_" << std::setw(6) << std::setfill('0') << s.step << ".vtp";
+    write_vtp((fs::path(directory_) / name.str()).string(), data);
+    saved_contacts_.emplace_back(s.time, name.str());
+    write_collection((fs::path(directory_) / (stem_ + "_contacts.pvd")).string(), saved_contacts_);
 }
 
 void RunOutput::record_history(const Simulation& sim) {
@@ -145,16 +230,17 @@ void RunOutput::record_history(const Simulation& sim) {
     std::ostringstream row;
     row << std::setprecision(10);
     if (!header_written_) {
-        row << "step,time";
+        row << "step,time,stage,unbalanced_ratio";
         for (const auto& [name, value] : loads) row << ",load:" << name;
         for (const MeasurementPoint& m : model.measurement_points) row << "," << m.name << ":ux," << m.name << ":uy";
         // Moving supports (displacement control): their displacement and the force they exert.
         for (const Roller& r : model.rollers)
             if (r.moves()) row << "," << r.name << ":ux," << r.name << ":uy," << r.name << ":fx," << r.name << ":fy";
+        for (const Bolt& b : sim.full_model().bolts) row << "," << b.name << ":force";
         row << "\n";
         header_written_ = true;
     }
-    row << s.step + s.step_fraction << "," << s.time;
+    row << s.step + s.step_fraction << "," << s.time << "," << s.stage + 1 << "," << s.unbalanced_ratio;
     for (const auto& [name, value] : loads) row << "," << value;
     for (int node : sim.boundary_conditions().measurement_nodes)
         row << "," << s.displacement[2 * node] << "," << s.displacement[2 * node + 1];
@@ -166,6 +252,7 @@ void RunOutput::record_history(const Simulation& sim) {
         row << "," << (r.fix_x ? r.displacement.x * factor : 0.0) << "," << (r.fix_y ? r.displacement.y * factor : 0.0)
             << "," << f.x << "," << f.y;
     }
+    for (double force : s.bolt_force) row << "," << force;
     row << "\n";
     // One write and a flush per row: a run that stops leaves whole rows only.
     history_ << row.str() << std::flush;
@@ -179,6 +266,24 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
     j["time"] = sim ? sim->state().time : 0.0;
     j["saved_steps"] = saved_steps();
     if (sim) {
+        j["unbalanced_ratio"] = sim->state().unbalanced_ratio;
+        j["equilibrium_ratio"] = sim->analysis().equilibrium_ratio;
+        nlohmann::json stages = nlohmann::json::array();
+        for (const StageRecord& r : sim->stages()) {
+            const char* state = !r.started ? "not run" : r.finished ? (r.reached_target ? "reached target" : "completed")
+                                                                      : "stopped";
+            stages.push_back({{"name", r.name}, {"status", state}, {"first_step", r.first_step},
+                              {"last_step", r.last_step}, {"planned_steps", r.planned_steps},
+                              {"unbalanced_ratio", r.unbalanced_ratio}});
+        }
+        j["stages"] = stages;
+        if (!sim->full_model().bolts.empty()) {
+            nlohmann::json bolts = nlohmann::json::array();
+            for (std::size_t i = 0; i < sim->full_model().bolts.size(); ++i)
+                bolts.push_back({{"name", sim->full_model().bolts[i].name}, {"force", sim->state().bolt_force[i]},
+                                 {"broken", sim->state().bolt_broken[i] != 0}});
+            j["bolts"] = bolts;
+        }
         const RunTimings& t = sim->timings();
         j["timing"] = {{"assembly", t.assembly}, {"factorization", t.factorization}, {"solve", t.solve},
                        {"contact", t.contact},   {"plasticity", t.plasticity},       {"total", t.total}};
@@ -209,7 +314,7 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
     write_file_atomically((fs::path(directory_) / "summary.json").string(),
                           [&](std::ostream& out) { out << j.dump(2) << "\n"; });
     // This run's results replace the kept ones.
-    if (status == RunStatus::Completed || status == RunStatus::Collapsed) {
+    if (status == RunStatus::Completed || status == RunStatus::Unbalanced || status == RunStatus::Collapsed) {
         std::error_code ec;
         fs::remove_all(fs::path(directory_) / "previous", ec);
     }

@@ -5,8 +5,14 @@
 ///   DIR/<model>.pvd            ParaView collection of the saved steps (rewritten atomically)
 ///   DIR/<model>_NNNNNN.vtu     point data displacement, velocity; cell data stress, block, material,
 ///                              plastic_state (0 never, 1 earlier, 2 now yielding), plastic_strain
-///   DIR/history.csv            one row per step: step, time, load:<name>, <point>:ux, <point>:uy
-///   DIR/summary.json           status, message, steps, time, timing breakdown
+///   DIR/<model>_contacts.pvd   ParaView collection of the contacts of the saved steps:
+///   DIR/<model>_contacts_NNNNNN.vtp  one vertex per contact (at its vertex node) with point data
+///                              normal_force, shear_force (N/m), force (vector on the vertex's
+///                              block), normal, opening, slip (m), state (0 open, 1 sliding,
+///                              2 locked), and a line per bolt with cell data bolt_force
+///   DIR/history.csv            one row per step: step, time, stage, unbalanced_ratio,
+///                              load:<name>, <point>:ux, <point>:uy, <bolt>:force
+///   DIR/summary.json           status, message, steps, time, stages, timing breakdown
 /// A run into a folder that holds an earlier run's files first moves them into DIR/previous/
 /// (replacing what was kept there, unless the earlier run itself ended without results:
 /// killed, failed or cancelled, when the kept ones stay). They are deleted when the new run
@@ -22,12 +28,14 @@
 
 namespace mcdda {
 
-enum class RunStatus { Running, Completed, Collapsed, Failed, Cancelled };
+/// Unbalanced: every step ran, but the last stage ended with an unbalanced-force ratio above
+/// its analysis.equilibrium_ratio (a block still sliding, a slope still moving).
+enum class RunStatus { Running, Completed, Unbalanced, Collapsed, Failed, Cancelled };
 
 const char* status_name(RunStatus s);
 
 /// The exit status of a program whose run ended with `s` (docs/running.md): 0 completed,
-/// 4 failed (or still running), 5 collapsed, 130 cancelled.
+/// 3 not in equilibrium, 4 failed (or still running), 5 collapsed, 130 cancelled.
 int exit_status(RunStatus s);
 
 class RunOutput {
@@ -52,9 +60,12 @@ public:
     int saved_steps() const { return static_cast<int>(saved_.size()); }
 
 private:
+    void save_contacts(const Simulation& simulation);  ///< the contacts and bolts of the saved step
+
     std::string directory_;
     std::string stem_;
     std::vector<std::pair<double, std::string>> saved_;  ///< (time, file name)
+    std::vector<std::pair<double, std::string>> saved_contacts_;
     std::ofstream history_;
     bool header_written_ = false;
 };

@@ -96,9 +96,10 @@ void element_averages(const PointStates& points, int per_element, SimulationStat
 
 }  // namespace
 
-Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
+Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh), base_model_(p.model) {
     if (mesh_.triangles.empty()) throw std::runtime_error("the model has no mesh");
     topology_ = build_topology(mesh_, p.blocks);
+    for (const Block& b : p.blocks) block_region_.push_back(b.region);
     std::vector<Diagnostic> diagnostics;
     bc_ = locate_boundary_conditions(model_, mesh_, topology_, diagnostics);
     if (has_errors(diagnostics)) {
@@ -130,6 +131,29 @@ Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh) {
     state_.time_step = model_.analysis.time_step;
     initial_stresses(model_, mesh_, elements_, state_.points);
     element_averages(state_.points, elements_.points_per_element(), state_);
+
+    const std::size_t bolts = model_.bolts.size();
+    state_.bolt_force.assign(bolts, 0.0);
+    state_.bolt_broken.assign(bolts, 0);
+    bolt_present_.assign(bolts, 1);
+    for (std::size_t i = 0; i < bolts; ++i) {
+        const Bolt& b = model_.bolts[i];
+        for (int end = 0; end < 2; ++end) {
+            const Point2 at = end == 0 ? b.from : b.to;
+            bolt_anchors_[end].push_back(locate_anchor(mesh_, mesh_.nodes, at));
+            if (!bolt_anchors_[end].back())
+                throw std::runtime_error("bolt \"" + b.name + "\": its end (" + std::to_string(at.x) + ", " +
+                                         std::to_string(at.y) + ") lies in no block");
+        }
+    }
+    if (base_model_.stages.empty()) {
+        stages_.push_back({model_.name.empty() ? std::string("analysis") : model_.name, model_.analysis.steps});
+        stages_.front().started = true;
+        for (std::size_t i = 0; i < bolts; ++i) state_.bolt_force[i] = model_.bolts[i].pretension;
+    } else {
+        for (const Stage& st : base_model_.stages) stages_.push_back({st.name, st.analysis.steps});
+        begin_stage(0);
+    }
 }
 
 std::vector<std::pair<std::string, double>> Simulation::load_magnitudes_at(double position) const {
@@ -160,17 +184,21 @@ CouplingGroup Simulation::element_coupling(int e) const {
     return g;
 }
 
-void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts) {
+void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts, const std::vector<BoltLink>& bolts) {
     const int elements = static_cast<int>(mesh_.triangles.size());
     std::vector<CouplingGroup> contact_groups;
-    contact_groups.reserve(contacts.size());
+    contact_groups.reserve(contacts.size() + bolts.size());
     for (const Contact& c : contacts) {
         const BoundaryEdge& e = topology_.edges[c.edge];
         contact_groups.push_back(coupling({c.node, e.from, e.to}));
     }
+    // Bolts come after the contacts (group elements + contacts + i).
+    for (const BoltLink& b : bolts)
+        contact_groups.push_back(
+            coupling({b.nodes[0], b.nodes[1], b.nodes[2], b.nodes[3], b.nodes[4], b.nodes[5]}));
     // Contacts come and go and move between neighbouring edges; as long as the pattern already
     // holds their couplings only the slots change and CHOLMOD's symbolic analysis is kept.
-    if (system_.group_count() >= elements && system_.equations() == bc_.equation_count &&
+    if (!pattern_stale_ && system_.group_count() >= elements && system_.equations() == bc_.equation_count &&
         system_.pattern_contains(contact_groups)) {
         system_.set_groups(contact_groups, elements);
         return;
@@ -189,6 +217,7 @@ void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts)
             reserve.push_back(coupling({c.node, e.to, topology_.edges[topology_.edge_out_of[e.to]].to}));
     }
     system_.set_pattern(bc_.equation_count, groups, reserve);
+    pattern_stale_ = false;
 }
 
 namespace {
@@ -230,7 +259,8 @@ constexpr double mechanism_displacements = 20.0;
 
 bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, const std::vector<Contact>& contacts,
                              const std::vector<ContactKinematics>& kinematics,
-                             const std::vector<ContactProperties>& properties, bool& factor_valid, Attempt& attempt) {
+                             const std::vector<ContactProperties>& properties, const std::vector<BoltLink>& bolts,
+                             bool& factor_valid, Attempt& attempt) {
     const int elements = static_cast<int>(mesh_.triangles.size());
     const Eigen::Index dofs = d.size();
     const double tolerance = model_.analysis.plastic_tolerance;
@@ -260,6 +290,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         t0 = Clock::now();
         residual = base - internal;
         add_contact_forces(contacts, kinematics, properties, d, residual);
+        for (const BoltLink& b : bolts) b.add_forces(d, residual);
         double norm = 0.0;
         for (Eigen::Index dof = 0; dof < dofs; ++dof)
             if (bc_.equation[dof] >= 0) {
@@ -334,6 +365,10 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
                 contact_terms(contacts[i], kinematics[i], properties[i], kc, fc);
                 system_.add(elements + static_cast<int>(i), kc.data());
             }
+            for (std::size_t i = 0; i < bolts.size(); ++i) {
+                const Eigen::Matrix<double, 12, 12> kb = bolts[i].matrix();
+                system_.add(elements + static_cast<int>(contacts.size() + i), kb.data());
+            }
             timings_.assembly += seconds_since(t0);
             // An elastic matrix may keep a held elastic factor (of the last step's geometry, or of
             // other contact states) while iterating against the new matrix costs less than a
@@ -353,7 +388,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
             factor_valid = true;
             elastic_matrix = matrix == ElementMatrix::Elastic || eval.yielding == 0;
             held_.tangent = matrix == ElementMatrix::Tangent;
-            held_.closed = closed_signature(contacts);
+            held_.closed = closed_signature(contacts, bolts);
         }
         Eigen::VectorXd delta = solve_reduced(rhs);
         ++attempt.iterations;
@@ -382,6 +417,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
                 timings_.plasticity += seconds_since(t0);
                 Eigen::VectorXd r = base - internal;
                 add_contact_forces(contacts, kinematics, properties, trial, r);
+                for (const BoltLink& b : bolts) b.add_forces(trial, r);
                 double trial_norm = 0.0;
                 for (Eigen::Index dof = 0; dof < dofs; ++dof)
                     if (bc_.equation[dof] >= 0) trial_norm = std::max(trial_norm, std::fabs(r[dof]));
@@ -426,7 +462,10 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
                                                  const Eigen::VectorXd& prescribed) {
     Attempt attempt;
     const auto start_assembly = Clock::now();
-    rebuild_pattern_if_needed(contacts);
+    bolt_broken_try_.assign(base_model_.bolts.size(), 0);
+    attempt.bolts = bolt_links();
+    std::vector<BoltLink>& bolts = attempt.bolts;
+    rebuild_pattern_if_needed(contacts, bolts);
     const Eigen::Index dofs = state_.displacement.size();
     const double beta = newmark_for(state_.step).beta;
     // Shi's static DDA keeps the mass term M/(βΔt²) (velocities reset every step): it holds
@@ -478,7 +517,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     // A held elastic matrix depends on nothing a try changes, so it also survives a try that
     // failed (the smaller load increment after it starts with it); a tangent only after a
     // converged try.
-    bool factor_valid = equilibrium_only && system_.has_factor() && held_.closed == closed_signature(contacts) &&
+    bool factor_valid = equilibrium_only && system_.has_factor() && held_.closed == closed_signature(contacts, bolts) &&
                         (held_.tangent ? held_.usable && uses_newton() : true);
     held_.usable = false;  // until this try converges
     int friction_rounds = 0;
@@ -487,7 +526,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     iterations = 1;
     while (iterations <= max_iterations) {
         try {
-            if (!equilibrate(d, base, contacts, kinematics, properties, factor_valid, attempt)) {
+            if (!equilibrate(d, base, contacts, kinematics, properties, bolts, factor_valid, attempt)) {
                 attempt.outcome = Outcome::NotConverged;
                 attempt.d = d;
                 return attempt;
@@ -499,6 +538,23 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
         }
         attempt.d = d;
         attempt.residual -= shift;  // reactions balance the loads actually applied
+
+        // A bolt pulled beyond its strength breaks, and the try goes on without it.
+        bool broke = false;
+        for (const BoltLink& b : bolts) {
+            const double strength = base_model_.bolts[b.bolt].strength;
+            if (strength > 0.0 && b.force_after(d) > strength) {
+                bolt_broken_try_[b.bolt] = 1;
+                broke = true;
+            }
+        }
+        if (broke) {
+            bolts = bolt_links();
+            rebuild_pattern_if_needed(contacts, bolts);
+            factor_valid = false;
+            ++iterations;
+            continue;
+        }
 
         const auto t3 = Clock::now();
         int changes = 0;
@@ -563,12 +619,14 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     return attempt;
 }
 
-std::vector<long long> Simulation::closed_signature(const std::vector<Contact>& contacts) const {
+std::vector<long long> Simulation::closed_signature(const std::vector<Contact>& contacts,
+                                                   const std::vector<BoltLink>& bolts) const {
     std::vector<long long> closed;
     const long long edges = static_cast<long long>(topology_.edges.size()) + 1;
     for (const Contact& c : contacts)
         if (c.state != ContactState::Open)
             closed.push_back((static_cast<long long>(c.node) * edges + c.edge) * 4 + static_cast<int>(c.state));
+    for (const BoltLink& b : bolts) closed.push_back(-1 - b.bolt);
     return closed;
 }
 
@@ -595,7 +653,18 @@ ContactKinematics Simulation::kinematics_of(const Contact& c) const {
     return k;
 }
 
-void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts) {
+void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts,
+                        const std::vector<BoltLink>& bolts) {
+    for (const BoltLink& b : bolts) state_.bolt_force[b.bolt] = b.force_after(d);
+    for (std::size_t i = 0; i < bolt_broken_try_.size(); ++i)
+        if (bolt_broken_try_[i] && !state_.bolt_broken[i]) {
+            state_.bolt_broken[i] = 1;
+            state_.bolt_force[i] = 0.0;
+            pending_events_.push_back("bolt \"" + base_model_.bolts[i].name + "\" broke in step " +
+                                      std::to_string(state_.step + 1) + " (strength " +
+                                      std::to_string(base_model_.bolts[i].strength) + " N/m)");
+        }
+    bolt_broken_try_.clear();
     // Stresses as returned for the accepted increments.
     PointStates& points = state_.points;
     for (std::size_t p = 0; p < points.stress.size(); ++p) {
@@ -634,7 +703,41 @@ void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<C
     }
 }
 
-void Simulation::finish_report(StepReport& report, double largest) {
+void Simulation::finish_report(StepReport& report, double largest, const Eigen::VectorXd& residual) {
+    // The out-of-balance force of the state reached. A small-strain static step's converged
+    // residual is that force already (no mass term, loads and elements on the undeformed
+    // shape); otherwise the state is evaluated once more without the inertia that balanced it.
+    double scale = 0.0;
+    Eigen::VectorXd r;
+    if (is_equilibrium_only() && residual.size() == state_.displacement.size()) {
+        r = residual;
+        scale = applied_forces(state_.step, state_.time).cwiseAbs().maxCoeff();
+        if (scale == 0.0) scale = std::max(1e-30, residual.cwiseAbs().maxCoeff());
+    } else {
+        r = out_of_balance(scale);
+    }
+    double largest_free = 0.0;
+    for (Eigen::Index dof = 0; dof < r.size(); ++dof)
+        if (bc_.equation[dof] >= 0) largest_free = std::max(largest_free, std::fabs(r[dof]));
+    state_.unbalanced_ratio = scale > 0.0 ? largest_free / scale : 0.0;
+    report.unbalanced_ratio = state_.unbalanced_ratio;
+    report.stage = stage_;
+    StageRecord& record = stages_[stage_];
+    record.last_step = state_.step;
+    record.unbalanced_ratio = state_.unbalanced_ratio;
+    const double target = base_model_.stages.empty() ? 0.0 : base_model_.stages[stage_].target_ratio;
+    // (Only once the stage's release is complete: until then every step is in equilibrium with
+    // the part still held.)
+    const bool released = base_model_.stages.empty() ||
+                          base_model_.stages[stage_].released(state_.step - stage_start_step_, base_model_.load_tables) >= 1.0;
+    record.reached_target = target > 0.0 && released && model_.analysis.kind == AnalysisSettings::Kind::Static &&
+                            state_.unbalanced_ratio <= target;
+    record.finished = stage_complete();
+    if (record.reached_target && state_.step - stage_start_step_ < model_.analysis.steps)
+        pending_events_.push_back("stage \"" + record.name + "\" reached its target ratio at step " +
+                                  std::to_string(state_.step));
+    report.events = std::move(pending_events_);
+    pending_events_.clear();
     report.step = state_.step;
     report.time = state_.time;
     report.max_increment = std::max(report.max_increment, largest);
@@ -677,10 +780,237 @@ void Simulation::record_solver_counts() {
     timings_.refinement_iterations = system_.refinement_iterations();
 }
 
+namespace {
+
+/// Names of the supports, loads and bolts a stage installs or removes, present at stage `s`:
+/// an item some stage installs is absent before it.
+bool item_present(const Model& model, const std::string& name, int s) {
+    bool present = true;
+    for (const Stage& st : model.stages)
+        if (std::find(st.install.begin(), st.install.end(), name) != st.install.end()) present = false;
+    for (int t = 0; t <= s; ++t) {
+        const Stage& st = model.stages[t];
+        if (std::find(st.install.begin(), st.install.end(), name) != st.install.end()) present = true;
+        if (std::find(st.remove.begin(), st.remove.end(), name) != st.remove.end()) present = false;
+    }
+    return present;
+}
+
+}  // namespace
+
+void Simulation::begin_stage(int s) {
+    const Stage& stage = base_model_.stages[s];
+    stage_ = s;
+    stage_start_step_ = state_.step;
+    state_.stage = s;
+    StageRecord& record = stages_[s];
+    record.started = true;
+    record.first_step = record.last_step = state_.step;
+    if (s > 0) pending_events_.push_back("stage " + std::to_string(s + 1) + " \"" + stage.name + "\" begins at step " +
+                                         std::to_string(state_.step));
+
+    // Regions present and their materials: those some stage activates are absent before it.
+    const std::size_t regions = base_model_.regions.size();
+    std::vector<char> region_present(regions, 1);
+    std::vector<int> material(regions);
+    for (std::size_t r = 0; r < regions; ++r) material[r] = base_model_.regions[r].material;
+    for (const Stage& st : base_model_.stages)
+        for (int r : st.activate) region_present[r] = 0;
+    for (int t = 0; t <= s; ++t) {
+        const Stage& st = base_model_.stages[t];
+        for (int r : st.excavate) region_present[r] = 0;
+        for (int r : st.activate) region_present[r] = 1;
+        for (const auto& [r, m] : st.materials) material[r] = m;
+    }
+
+    // The stage's view of the model: its settings and materials; absent supports and loads
+    // cleared in place, so that indices (history columns, reactions) stay those of the file.
+    model_ = base_model_;
+    model_.analysis = stage.analysis;
+    for (std::size_t r = 0; r < regions; ++r) model_.regions[r].material = material[r];
+    model_.fixed_points.clear();
+    for (const FixedPoint& f : base_model_.fixed_points)
+        if (item_present(base_model_, f.name, s)) model_.fixed_points.push_back(f);
+    for (Roller& r : model_.rollers)
+        if (!item_present(base_model_, r.name, s)) r.fix_x = r.fix_y = false;
+    for (PointLoad& l : model_.point_loads)
+        if (!item_present(base_model_, l.name, s)) l.force = {0.0, 0.0};
+    for (EdgePressure& l : model_.edge_pressures)
+        if (!item_present(base_model_, l.name, s)) l.pressure = 0.0;
+
+    const int blocks = mesh_.block_count();
+    std::vector<char> was_active = element_active_;
+    block_active_.assign(blocks, 1);
+    for (int b = 0; b < blocks; ++b) block_active_[b] = region_present[block_region_[b]];
+    const std::size_t elements = mesh_.triangles.size();
+    element_active_.assign(elements, 1);
+    const int per_element = elements_.points_per_element();
+    for (std::size_t e = 0; e < elements; ++e) {
+        mesh_.triangle_material[e] = material[block_region_[mesh_.triangle_block[e]]];
+        element_active_[e] = block_active_[mesh_.triangle_block[e]];
+        // Material built in this stage (backfill, a liner) starts free of stress.
+        if (element_active_[e] && !was_active.empty() && !was_active[e])
+            for (int q = 0; q < per_element; ++q) {
+                const std::size_t p = e * per_element + q;
+                state_.points.stress[p].setZero();
+                state_.points.stress_zz[p] = 0.0;
+                state_.points.plastic_strain[p] = 0.0;
+                state_.points.plastic_state[p] = 0;
+            }
+    }
+    element_averages(state_.points, per_element, state_);
+    elements_ = ElementAssembly(model_, mesh_);
+    elements_.set_active(element_active_);
+    may_yield_ = false;
+    double stiffest = 0.0;
+    for (std::size_t r = 0; r < regions; ++r) {
+        if (!region_present[r]) continue;
+        const Material& m = model_.materials[material[r]];
+        may_yield_ = may_yield_ || (model_.analysis.plasticity && m.plastic);
+        stiffest = std::max(stiffest, m.young_modulus);
+    }
+    penalty_ = model_.analysis.penalty > 0.0 ? model_.analysis.penalty : 4.0 * stiffest;
+    displacement_limit_ = model_.analysis.max_displacement_ratio * topology_.model_size;
+    contact_tolerance_ = 1e-6 * displacement_limit_;
+    state_.time_step = model_.analysis.time_step;
+
+    // Supports on the stage's blocks; the nodes of absent blocks are held where they are.
+    std::vector<Diagnostic> diagnostics;
+    bc_ = locate_boundary_conditions(model_, mesh_, topology_, diagnostics);
+    for (const Diagnostic& d : diagnostics)
+        if (d.severity == Diagnostic::Severity::Error)
+            throw std::runtime_error("stage \"" + stage.name + "\": " + (d.path.empty() ? "" : d.path + ": ") + d.message);
+    const std::size_t n = mesh_.nodes.size();
+    auto node_active = [&](int node) { return block_active_[mesh_.node_block[node]] != 0; };
+    bc_.equation_count = 0;
+    for (std::size_t dof = 0; dof < 2 * n; ++dof) {
+        const bool free = bc_.equation[dof] >= 0 && node_active(static_cast<int>(dof / 2));
+        bc_.equation[dof] = free ? bc_.equation_count++ : -1;
+    }
+    for (auto& nodes : bc_.roller_nodes)
+        nodes.erase(std::remove_if(nodes.begin(), nodes.end(), [&](int node) { return !node_active(node); }), nodes.end());
+    bc_.pressure_edges.erase(std::remove_if(bc_.pressure_edges.begin(), bc_.pressure_edges.end(),
+                                            [&](const BoundaryConditions::PressureEdge& p) {
+                                                return !block_active_[topology_.edges[p.edge].block];
+                                            }),
+                             bc_.pressure_edges.end());
+    // A measurement point on removed material follows the nearest node still present.
+    for (std::size_t i = 0; i < bc_.measurement_nodes.size(); ++i) {
+        int& node = bc_.measurement_nodes[i];
+        if (node < 0 || node_active(node)) continue;
+        const Point2 p = model_.measurement_points[i].point;
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < n; ++k)
+            if (node_active(static_cast<int>(k))) {
+                const double dist = std::hypot(mesh_.nodes[k].x - p.x, mesh_.nodes[k].y - p.y);
+                if (dist < best) {
+                    best = dist;
+                    node = static_cast<int>(k);
+                }
+            }
+    }
+    state_.roller_reactions.assign(model_.rollers.size(), Point2{0.0, 0.0});
+    drop_absent(state_.contacts);
+
+    // Bolts: installed ones start with their pretension, removed ones carry nothing.
+    for (std::size_t i = 0; i < base_model_.bolts.size(); ++i) {
+        const bool present = item_present(base_model_, base_model_.bolts[i].name, s);
+        if (present && !bolt_present_[i]) state_.bolt_force[i] = base_model_.bolts[i].pretension;
+        if (!present) state_.bolt_force[i] = 0.0;
+        bolt_present_[i] = present;
+    }
+    if (s == 0)
+        for (std::size_t i = 0; i < base_model_.bolts.size(); ++i)
+            if (bolt_present_[i]) state_.bolt_force[i] = base_model_.bolts[i].pretension;
+
+    // The new numbering needs a new pattern and factor.
+    pattern_stale_ = true;
+    held_ = HeldFactor{};
+    // What the stage's changes leave out of balance is held, then released over its steps.
+    holding_.resize(0);
+    double scale = 0.0;
+    holding_ = -out_of_balance(scale);
+}
+
+void Simulation::drop_absent(std::vector<Contact>& contacts) const {
+    if (block_active_.empty()) return;
+    contacts.erase(std::remove_if(contacts.begin(), contacts.end(),
+                                  [&](const Contact& c) {
+                                      return !block_active_[mesh_.node_block[c.node]] || !block_active_[c.edge_block];
+                                  }),
+                   contacts.end());
+}
+
+Eigen::VectorXd Simulation::applied_forces(double position, double time) const {
+    Eigen::VectorXd f = external_forces(model_, mesh_, element_nodes(), topology_, bc_, position, time, element_active_);
+    if (holding_.size() == f.size()) {
+        const double released = base_model_.stages[stage_].released(position - stage_start_step_, base_model_.load_tables);
+        if (released < 1.0) f += (1.0 - released) * holding_;
+    }
+    return f;
+}
+
+std::vector<BoltLink> Simulation::bolt_links() const {
+    std::vector<BoltLink> links;
+    for (std::size_t i = 0; i < base_model_.bolts.size(); ++i) {
+        if (!bolt_present_[i] || state_.bolt_broken[i] || (i < bolt_broken_try_.size() && bolt_broken_try_[i])) continue;
+        const Bolt& b = base_model_.bolts[i];
+        const double length = std::hypot(b.to.x - b.from.x, b.to.y - b.from.y);
+        links.push_back(make_bolt_link(*bolt_anchors_[0][i], *bolt_anchors_[1][i], element_nodes(), b.stiffness, length,
+                                       state_.bolt_force[i],
+                                       model_.analysis.geometry == AnalysisSettings::Geometry::Updated));
+        links.back().bolt = static_cast<int>(i);
+    }
+    return links;
+}
+
+Eigen::VectorXd Simulation::out_of_balance(double& applied_scale) {
+    const Eigen::Index dofs = state_.displacement.size();
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(dofs);
+    const Eigen::VectorXd applied = applied_forces(state_.step + state_.step_fraction, state_.time);
+    elements_.prepare(element_nodes(), 0.0);  // the next try prepares its own
+    std::vector<ReturnResult> returned;
+    Eigen::VectorXd internal;
+    const auto t0 = Clock::now();
+    elements_.evaluate(zero, state_.points, returned, internal, ElementMatrix::None, nullptr);
+    timings_.plasticity += seconds_since(t0);
+    Eigen::VectorXd r = applied - internal;
+    std::vector<ContactKinematics> kinematics;
+    std::vector<ContactProperties> properties;
+    for (const Contact& c : state_.contacts) {
+        kinematics.push_back(kinematics_of(c));
+        properties.push_back(contact_properties(c, kinematics.back(), model_, topology_, penalty_));
+    }
+    add_contact_forces(state_.contacts, kinematics, properties, zero, r);
+    for (const BoltLink& b : bolt_links()) b.add_forces(zero, r);
+    applied_scale = applied.cwiseAbs().maxCoeff();
+    if (applied_scale == 0.0) applied_scale = internal.cwiseAbs().maxCoeff();
+    return r;
+}
+
+std::array<Point2, 2> Simulation::bolt_ends(int i) const {
+    return {anchor_position(*bolt_anchors_[0][i], state_.nodes), anchor_position(*bolt_anchors_[1][i], state_.nodes)};
+}
+
+bool Simulation::stage_complete() const {
+    const StageRecord& r = stages_[stage_];
+    return r.reached_target || state_.step - stage_start_step_ >= model_.analysis.steps;
+}
+
+bool Simulation::finished() const { return stage_ + 1 >= static_cast<int>(stages_.size()) && stage_complete(); }
+
+int Simulation::planned_steps() const {
+    int steps = 0;
+    for (const StageRecord& r : stages_) steps += r.finished ? r.last_step - r.first_step : r.planned_steps;
+    return steps;
+}
+
 StepReport Simulation::advance() {
     const auto start = Clock::now();
     StepReport report;
+    if (finished()) throw std::runtime_error("the analysis has run all its steps");
     try {
+        if (stage_complete()) begin_stage(stage_ + 1);
         report = model_.analysis.kind == AnalysisSettings::Kind::Static ? advance_static() : advance_dynamic();
     } catch (const PlasticCollapse& e) {
         collapse_ = CollapseBracket{e.carried, e.not_carried};
@@ -715,15 +1045,15 @@ StepReport Simulation::advance_static() {
         const auto t0 = Clock::now();
         std::vector<Contact> contacts = detect_contacts(element_nodes(), mesh_, topology_, 2.5 * displacement_limit_,
                                                         state_.contacts, Eigen::VectorXd(), contact_tolerance_);
+        drop_absent(contacts);
         timings_.contact += seconds_since(t0);
         // Loads at the increment's end; the time follows the load position (Δt per whole step).
-        const Eigen::VectorXd external =
-            external_forces(model_, mesh_, element_nodes(), topology_, bc_, to, state_.time + increment * largest_step);
+        const Eigen::VectorXd external = applied_forces(to, state_.time + increment * largest_step);
         // The loads at the increment's start matter only when it is a part of what remains.
         const double lambda = increment / remaining;
         Eigen::VectorXd start_external;
         if (lambda < 1.0)
-            start_external = external_forces(model_, mesh_, element_nodes(), topology_, bc_, from, state_.time);
+            start_external = applied_forces(from, state_.time);
         Attempt attempt = solve_increments(external, lambda < 1.0 ? &start_external : nullptr, lambda, dt, contacts,
                                            prescribed_increments(to, state_.time + increment * largest_step));
         report.plastic_iterations += attempt.iterations;
@@ -770,7 +1100,7 @@ StepReport Simulation::advance_static() {
                                          (last_singular_.empty() ? " (contacts do not settle)" : ": " + last_singular_));
             continue;
         }
-        commit(attempt.d, dt, contacts);
+        commit(attempt.d, dt, contacts, attempt.bolts);
         record_reactions(attempt.residual);
         ++report.load_increments;
         report.open_close_iterations += attempt.open_close_iterations;
@@ -783,7 +1113,7 @@ StepReport Simulation::advance_static() {
             state_.step += 1;
             state_.step_fraction = 0.0;
             report.time_step = dt;
-            finish_report(report, largest);
+            finish_report(report, largest, attempt.residual);
             return report;
         }
         increment = std::min(2.0 * increment, 1.0 - state_.step_fraction);  // grow back after a cut
@@ -807,9 +1137,9 @@ StepReport Simulation::advance_dynamic() {
         const auto t0 = Clock::now();
         std::vector<Contact> contacts = detect_contacts(element_nodes(), mesh_, topology_, 2.5 * displacement_limit_,
                                                         state_.contacts, state_.velocity * dt, contact_tolerance_);
+        drop_absent(contacts);
         timings_.contact += seconds_since(t0);
-        const Eigen::VectorXd external =
-            external_forces(model_, mesh_, element_nodes(), topology_, bc_, state_.step + 1, state_.time + dt);
+        const Eigen::VectorXd external = applied_forces(state_.step + 1, state_.time + dt);
         Attempt attempt =
             solve_increments(external, nullptr, 1.0, dt, contacts, prescribed_increments(state_.step + 1, state_.time + dt));
         report.plastic_iterations += attempt.iterations;
@@ -841,13 +1171,13 @@ StepReport Simulation::advance_dynamic() {
             last_singular_.clear();
             continue;
         }
-        commit(attempt.d, dt, contacts);
+        commit(attempt.d, dt, contacts, attempt.bolts);
         record_reactions(attempt.residual);
         state_.step += 1;
         state_.time += dt;
         report.time_step = dt;
         report.open_close_iterations = attempt.open_close_iterations;
-        finish_report(report, largest);
+        finish_report(report, largest, attempt.residual);
         // Grow Δt back towards its set value while steps are comfortably small.
         if (largest < 0.5 * displacement_limit_ && attempt.open_close_iterations <= 2)
             state_.time_step = std::min(largest_step, dt * 1.25);

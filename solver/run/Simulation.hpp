@@ -22,6 +22,7 @@
 #include "Preprocess.hpp"
 #include "contact/Contact.hpp"
 #include "contact/ContactLaw.hpp"
+#include "fem/BoltLink.hpp"
 #include "fem/BoundaryConditions.hpp"
 #include "fem/MeshTopology.hpp"
 #include "fem/PlaneStrain.hpp"
@@ -72,6 +73,14 @@ struct SimulationState {
     std::vector<Contact> contacts;
     /// Per Model::rollers entry: the force (N/m) the support exerts on the model, x and y.
     std::vector<Point2> roller_reactions;
+    /// Per Model::bolts entry: axial force (N/m, tension positive; 0 before it is installed or
+    /// once broken) and whether it broke.
+    std::vector<double> bolt_force;
+    std::vector<char> bolt_broken;
+    /// Largest out-of-balance nodal force over the largest applied force after the last step
+    /// (UDEC's ratio); the inertia of a static DDA step does not count as balancing.
+    double unbalanced_ratio = 0.0;
+    int stage = 0;  ///< construction stage of the last step (index into Model::stages)
 };
 
 /// The equilibrium iterations of a step did not converge even for the smallest load increment:
@@ -94,6 +103,19 @@ struct StepReport {
     int load_increments = 1;     ///< increments the step's load was applied in (static)
     int yielding = 0;            ///< elements yielding in this step
     double max_increment = 0.0;  ///< largest nodal displacement increment (m)
+    double unbalanced_ratio = 0.0;  ///< see SimulationState::unbalanced_ratio
+    int stage = 0;
+    std::vector<std::string> events;  ///< things a user must hear of: a stage begun, a bolt broken
+};
+
+/// How each construction stage went (a model without stages has one).
+struct StageRecord {
+    std::string name;
+    int planned_steps = 0;
+    int first_step = 0, last_step = 0;  ///< global steps it ran, (first_step, last_step]
+    bool started = false, finished = false;
+    bool reached_target = false;        ///< ended early on its target ratio
+    double unbalanced_ratio = 0.0;      ///< after its last step
 };
 
 class Simulation {
@@ -109,6 +131,24 @@ public:
     /// floor, a singular matrix, a diverging solution); the state then stays that of the last
     /// accepted step.
     StepReport advance();
+
+    /// True once the last stage has run its steps (or reached its target ratio).
+    bool finished() const;
+    /// True when the current stage has run its steps: the next advance() begins the next one.
+    bool stage_complete() const;
+    /// The steps all stages plan (a stage may end early on its target ratio).
+    int planned_steps() const;
+    const std::vector<StageRecord>& stages() const { return stages_; }
+    /// The analysis settings of the current stage (the model's without stages).
+    const AnalysisSettings& analysis() const { return model_.analysis; }
+    /// The model as given (model() is the current stage's view of it: absent supports and loads
+    /// cleared, the stage's materials and settings).
+    const Model& full_model() const { return base_model_; }
+    /// Elements present in the current stage (empty: all).
+    const std::vector<char>& active_elements() const { return element_active_; }
+
+    /// Where bolt `i`'s anchors are now.
+    std::array<Point2, 2> bolt_ends(int i) const;
 
     const SimulationState& state() const { return state_; }
     const RunTimings& timings() const { return timings_; }
@@ -141,6 +181,7 @@ private:
         int yielding = 0;
         std::string why;     ///< for failures
         Eigen::VectorXd residual;  ///< out-of-balance force at d (converged: the support reactions, negated)
+        std::vector<BoltLink> bolts;  ///< the bolts that held (those that broke in the try left out)
     };
     /// Solves the increments of one try: loads `external`; a static increment applies only the
     /// share `lambda` of the out-of-balance force found at its start (`start_external` there).
@@ -155,12 +196,14 @@ private:
     /// converged, d updated in place.
     bool equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, const std::vector<Contact>& contacts,
                      const std::vector<ContactKinematics>& kinematics,
-                     const std::vector<ContactProperties>& properties, bool& factor_valid, Attempt& attempt);
+                     const std::vector<ContactProperties>& properties, const std::vector<BoltLink>& bolts,
+                     bool& factor_valid, Attempt& attempt);
     Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs);  ///< back-substitution, full-size result
-    void rebuild_pattern_if_needed(const std::vector<Contact>& contacts);
+    void rebuild_pattern_if_needed(const std::vector<Contact>& contacts, const std::vector<BoltLink>& bolts);
     CouplingGroup coupling(std::initializer_list<int> nodes) const;  ///< equations of up to 6 nodes
     CouplingGroup element_coupling(int e) const;
-    void commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts);
+    void commit(const Eigen::VectorXd& d, double dt, const std::vector<Contact>& contacts,
+                const std::vector<BoltLink>& bolts);
     /// Contact geometry at the start of the step (analysis.geometry).
     ContactKinematics kinematics_of(const Contact& c) const;
     /// The coordinates element strains and loads are taken on (analysis.geometry).
@@ -174,9 +217,24 @@ private:
     }
     /// Associated plasticity somewhere: Newton with the algorithmic tangent (see equilibrate).
     bool uses_newton() const { return may_yield_ && elements_.has_tangent(); }
+    /// Sets up stage `s`: presence of regions, supports, loads and bolts, materials, settings,
+    /// and the out-of-balance force its start leaves, which it releases over its steps.
+    void begin_stage(int s);
+    /// Applied forces at a load position: the loads plus the part of the stage's start
+    /// out-of-balance force not yet released.
+    Eigen::VectorXd applied_forces(double position, double time) const;
+    /// Out-of-balance force of the committed state (no increments, no inertia), and the applied
+    /// force it is measured against; adds nothing to any state.
+    Eigen::VectorXd out_of_balance(double& applied_scale);
+    /// Removes the contacts of blocks absent in this stage (excavated, not yet built).
+    void drop_absent(std::vector<Contact>& contacts) const;
+    /// Bolts present, linearised on the step's start geometry.
+    std::vector<BoltLink> bolt_links() const;
     StepReport advance_static();
     StepReport advance_dynamic();
-    void finish_report(StepReport& report, double largest);
+    /// Completes the report of an accepted step; `residual` is the out-of-balance force of its
+    /// last converged try.
+    void finish_report(StepReport& report, double largest, const Eigen::VectorXd& residual);
 
     Model model_;
     Mesh mesh_;
@@ -200,9 +258,24 @@ private:
         std::vector<long long> closed;  ///< per closed contact: node, edge and state, packed
     };
     HeldFactor held_;
-    std::vector<long long> closed_signature(const std::vector<Contact>& contacts) const;
+    /// What the matrix depends on besides the elements: closed contacts and bolts holding.
+    std::vector<long long> closed_signature(const std::vector<Contact>& contacts, const std::vector<BoltLink>& bolts) const;
     void record_solver_counts();  ///< the system's factorisation counts and time into timings_
     std::optional<CollapseBracket> collapse_;
+
+    Model base_model_;                  ///< as given; model_ is the current stage's view
+    std::vector<int> block_region_;     ///< region of each block
+    std::vector<char> element_active_;  ///< per element in this stage (empty: all)
+    std::vector<char> block_active_;    ///< per block in this stage (empty: all)
+    std::vector<char> bolt_present_;    ///< per Model::bolts entry in this stage
+    std::vector<std::optional<BoltAnchor>> bolt_anchors_[2];  ///< per bolt: from, to (undeformed mesh)
+    std::vector<char> bolt_broken_try_; ///< bolts broken by the try in progress
+    Eigen::VectorXd holding_;           ///< out-of-balance force at the stage's start, negated
+    int stage_ = 0;
+    int stage_start_step_ = 0;
+    bool pattern_stale_ = false;        ///< the equation numbering changed (a stage began)
+    std::vector<StageRecord> stages_;
+    std::vector<std::string> pending_events_;
 };
 
 /// Initial stress of every integration point from the model's in-situ stress (tension positive).

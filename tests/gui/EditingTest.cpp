@@ -41,6 +41,7 @@ private slots:
     void drawUndoRedoSaveOpen();
     void typedPointsHolesAndJointSets();
     void everyShortcutIsUnique();
+    void stagesAndBoltsShownInTheTree();
 };
 
 void EditingTest::initTestCase()
@@ -338,6 +339,29 @@ void EditingTest::everyShortcutIsUnique()
     }
     QVERIFY(f5_runs);
     QVERIFY(owner.size() > 10);  // the actions were found
+}
+
+// A staged model opens, and its stages and bolts are listed (read-only) with what they do.
+void EditingTest::stagesAndBoltsShownInTheTree()
+{
+    gui::MainWindow window;
+    window.show();
+    QVERIFY2(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")), qPrintable(window.messages()));
+    QTreeWidgetItem* stages = nullptr;
+    QTreeWidgetItem* bolts = nullptr;
+    for (int i = 0; i < window.modelTree()->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = window.modelTree()->topLevelItem(i);
+        if (item->text(0) == QLatin1String("Stages")) stages = item;
+        if (item->text(0) == QLatin1String("Bolts")) bolts = item;
+    }
+    QVERIFY(stages != nullptr && bolts != nullptr);
+    QCOMPARE(stages->childCount(), 4);
+    QCOMPARE(bolts->childCount(), 5);
+    QCOMPARE(stages->child(1)->text(0), QStringLiteral("2. top heading"));
+    QVERIFY2(stages->child(1)->text(1).contains(QStringLiteral("excavates top heading")), qPrintable(stages->child(1)->text(1)));
+    QVERIFY2(stages->child(2)->text(1).contains(QStringLiteral("installs roof bolt 1")), qPrintable(stages->child(2)->text(1)));
+    QVERIFY2(stages->child(3)->text(1).startsWith(QStringLiteral("10 step")), qPrintable(stages->child(3)->text(1)));
+    QCOMPARE(bolts->child(0)->text(0), QStringLiteral("roof bolt 1"));
 }
 
 QTEST_MAIN(EditingTest)

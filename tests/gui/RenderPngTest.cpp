@@ -6,7 +6,10 @@
 #include "view/OffscreenRender.hpp"
 #include "view/Palette.hpp"
 #include "view/ResultScene.hpp"
+#include "io/ModelReader.hpp"
 #include "io/VtuWriter.hpp"
+#include "run/RunLoop.hpp"
+#include "run/RunOutput.hpp"
 
 #include <gtest/gtest.h>
 
@@ -452,4 +455,65 @@ TEST_F(RenderPng, ResultErrors)
         EXPECT_NE(std::string(e.what()).find("cells but the model's mesh has"), std::string::npos) << e.what();
     }
     EXPECT_FALSE(fs::exists(path));
+}
+
+// A block resting on a base, bolted to it, run for a few steps: the contacts file of its last
+// step drawn over the result shows the contact forces (blue, vertical, at the interface) and the
+// bolt (green); the same picture without the file shows neither.
+TEST_F(RenderPng, ResultContactForcesAndBolts)
+{
+    const char* text = R"({
+  "format": "mcdda-model", "version": 2, "name": "bolted block",
+  "materials": [ { "name": "rock", "young_modulus": 1e9, "poisson_ratio": 0.25, "density": 2500, "plastic": false } ],
+  "joint_materials": [ { "name": "interface", "friction_angle": 30 } ],
+  "regions": [ { "name": "base", "material": "rock", "boundary": [[0,0],[4,0],[4,1],[0,1]] },
+               { "name": "block", "material": "rock", "boundary": [[1,1],[3,1],[3,2],[1,2]] } ],
+  "rollers": [ { "name": "bottom", "from": [0,0], "to": [4,0], "fixed": "xy" } ],
+  "bolts": [ { "name": "bolt", "from": [2.5,0.3], "to": [2.5,1.8], "stiffness": 1e7, "pretension": 20000 } ],
+  "gravity": [0, -9.81],
+  "mesh": { "size": 0.25, "min_angle": 30 },
+  "analysis": { "type": "static", "steps": 5, "time_step": 1.0, "output_every": 5 }
+})";
+    const auto read = read_model_text(text, {}, "bolted block");
+    ASSERT_TRUE(read.model);
+    const Preprocessed p = preprocess_model(*read.model);
+    ASSERT_TRUE(p.ok);
+    const fs::path dir = fs::path(MCDDA_TEST_OUTPUT_DIR) / "bolted-block";
+    fs::remove_all(dir);
+    {
+        Simulation simulation(p);
+        RunOutput output(dir.string(), "bolted");
+        run_steps(simulation, &output, nullptr, nullptr);
+    }
+    const std::string vtu = (dir / "bolted_000005.vtu").string(), vtp = (dir / "bolted_contacts_000005.vtp").string();
+    ASSERT_TRUE(fs::exists(vtu) && fs::exists(vtp));
+    auto is_force_blue = [](const Rgb8& c) { return near(c, to_bytes(view::Rgb{0.0, 0.40, 0.75}), 20); };
+    auto is_bolt_green = [](const Rgb8& c) { return near(c, to_bytes(view::Rgb{0.0, 0.55, 0.25}), 20); };
+
+    view::ResultOptions options;
+    const std::string plain = output_path("result_without_contacts.png");
+    view::render_result_png(p, vtu, options, width, height, plain);
+    options.contacts = vtp;
+    const std::string drawn = output_path("result_contact_forces.png");
+    view::render_result_png(p, vtu, options, width, height, drawn);
+    Picture without(plain), with(drawn);
+    EXPECT_EQ(without.count_in(0, 0, width, height, is_force_blue), 0);
+    EXPECT_EQ(without.count_in(0, 0, width, height, is_bolt_green), 0);
+
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, options); });
+    // Contact forces stand on the interface y = 1 between x = 1 and 3; the bolt at x = 2.5.
+    const auto a = projection.pixel({1.0, 1.0}), b = projection.pixel({3.0, 1.2});
+    EXPECT_GT(with.count_in(a[0] - 2, a[1] - 30, b[0] + 2, b[1] + 30, is_force_blue), 40);
+    const auto bolt_low = projection.pixel({2.5, 0.4}), bolt_high = projection.pixel({2.5, 1.7});
+    EXPECT_GT(with.count_in(bolt_low[0] - 4, bolt_low[1], bolt_low[0] + 4, bolt_high[1], is_bolt_green),
+              (bolt_high[1] - bolt_low[1]) / 2);
+    // Nothing blue far from the interface (the block's top).
+    const auto top = projection.pixel({2.0, 1.9});
+    EXPECT_EQ(with.count_around(top[0], top[1], 3, is_force_blue), 0);
+
+    EXPECT_THROW(view::render_result_png(p, vtu, [&] {
+        view::ResultOptions o;
+        o.contacts = (dir / "missing.vtp").string();
+        return o;
+    }(), width, height, output_path("never.png")), std::runtime_error);
 }

@@ -110,7 +110,8 @@ void ResultsTest::initTestCase()
     QSignalSpy finished(window_.get(), &MainWindow::runFinished);
     QVERIFY(window_->startRun());
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 120000);
-    QCOMPARE(finished.at(0).at(0).value<RunStatus>(), RunStatus::Completed);
+    // The block slides down the incline: every step ran, but it is not in equilibrium.
+    QCOMPARE(finished.at(0).at(0).value<RunStatus>(), RunStatus::Unbalanced);
     QCOMPARE(window_->resultsFolder(), out_.path());
 }
 

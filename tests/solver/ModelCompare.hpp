@@ -143,10 +143,48 @@ public:
         eq("/analysis/min_load_fraction", u.min_load_fraction, v.min_load_fraction);
         eq("/analysis/output_every", u.output_every, v.output_every);
         eq("/analysis/plasticity", u.plasticity, v.plasticity);
+        eq("/analysis/equilibrium_ratio", u.equilibrium_ratio, v.equilibrium_ratio);
+        list("/bolts", a.bolts, b.bolts, [this](const std::string& p, const Bolt& x, const Bolt& y) {
+            eq(p + "/name", x.name, y.name);
+            eq(p + "/from", x.from, y.from);
+            eq(p + "/to", x.to, y.to);
+            eq(p + "/stiffness", x.stiffness, y.stiffness);
+            eq(p + "/strength", x.strength, y.strength);
+            eq(p + "/pretension", x.pretension, y.pretension);
+        });
+        list("/stages", a.stages, b.stages, [this](const std::string& p, const Stage& x, const Stage& y) {
+            eq(p + "/name", x.name, y.name);
+            ints(p + "/excavate", x.excavate, y.excavate);
+            ints(p + "/activate", x.activate, y.activate);
+            eq(p + "/materials", static_cast<long>(x.materials.size()), static_cast<long>(y.materials.size()));
+            for (std::size_t k = 0; k < std::min(x.materials.size(), y.materials.size()); ++k) {
+                eq(p + "/materials/" + std::to_string(k) + "/region", x.materials[k][0], y.materials[k][0]);
+                eq(p + "/materials/" + std::to_string(k) + "/material", x.materials[k][1], y.materials[k][1]);
+            }
+            eq(p + "/install", join(x.install), join(y.install));
+            eq(p + "/remove", join(x.remove), join(y.remove));
+            eq(p + "/analysis/steps", x.analysis.steps, y.analysis.steps);
+            eq(p + "/analysis/kind", static_cast<int>(x.analysis.kind), static_cast<int>(y.analysis.kind));
+            eq(p + "/analysis/time_step", x.analysis.time_step, y.analysis.time_step);
+            eq(p + "/analysis/plastic_tolerance", x.analysis.plastic_tolerance, y.analysis.plastic_tolerance);
+            eq(p + "/analysis/equilibrium_ratio", x.analysis.equilibrium_ratio, y.analysis.equilibrium_ratio);
+            eq(p + "/release_steps", x.release_steps, y.release_steps);
+            eq(p + "/release_table", x.release_table, y.release_table);
+            eq(p + "/target_ratio", x.target_ratio, y.target_ratio);
+        });
         return out_.str();
     }
 
 private:
+    static std::string join(const std::vector<std::string>& names) {
+        std::string all;
+        for (const std::string& n : names) all += n + "|";
+        return all;
+    }
+    void ints(const std::string& path, const std::vector<int>& x, const std::vector<int>& y) {
+        eq(path, static_cast<long>(x.size()), static_cast<long>(y.size()));
+        for (std::size_t k = 0; k < std::min(x.size(), y.size()); ++k) eq(path + "/" + std::to_string(k), x[k], y[k]);
+    }
     void eq(const std::string& path, double x, double y) {
         const double scale = std::max(std::fabs(x), std::fabs(y));
         if (std::fabs(x - y) <= tol_ * scale) return;  // also x == y == 0

@@ -115,8 +115,9 @@ TEST(ModelReader, JointSetPersistenceFields) {
 }
 
 TEST(ModelReader, FormatAndVersionAreChecked) {
-    const ReadResult wrong = read_model_text(square_model_json(), {"/version=2", "/format=\"dda\""});
-    EXPECT_TRUE(has_diagnostic(wrong.diagnostics, Severity::Error, "/version", "version 2"));
+    const ReadResult wrong = read_model_text(square_model_json(), {"/version=3", "/format=\"dda\""});
+    EXPECT_TRUE(has_diagnostic(wrong.diagnostics, Severity::Error, "/version", "versions 1 to 2, the file is version 3"))
+        << all_messages(wrong.diagnostics);
     EXPECT_TRUE(has_diagnostic(wrong.diagnostics, Severity::Error, "/format", "mcdda-model"));
 }
 
@@ -232,4 +233,89 @@ TEST(ModelReader, BadOverridePointersAreExplainedInWords) {
     EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/materials/~2/x", "must be followed by 0"))
         << all_messages(r.diagnostics);
     for (const Diagnostic& d : r.diagnostics) EXPECT_EQ(d.message.find("json.exception"), std::string::npos) << d.message;
+}
+
+// Format 2: construction stages and bolts (docs/model-format.md).
+namespace {
+
+std::vector<std::string> staged(std::vector<std::string> more) {
+    std::vector<std::string> o{
+        "/version=2",
+        R"(/regions/-={"name": "core", "material": "rock", "boundary": [[4,4],[6,4],[6,6],[4,6]]})",
+        R"(/regions/0/boundary=[[0,0],[10,0],[10,10],[0,10]])",
+        R"(/regions/0/holes=[[[4,4],[4,6],[6,6],[6,4]]])",
+        R"(/bolts=[{"name": "b1", "from": [2,2], "to": [3,8], "stiffness": 1e8, "strength": 2e5, "pretension": 1e4}])",
+        R"(/stages=[{"name": "in situ", "analysis": {"steps": 2}},
+                    {"name": "dig", "excavate": ["core"], "install": ["b1"], "release": {"steps": 3},
+                     "analysis": {"steps": 4, "plastic_tolerance": 1e-5}, "target_ratio": 1e-6}])"};
+    o.insert(o.end(), more.begin(), more.end());
+    return o;
+}
+
+std::string errors_of(const ReadResult& r) {
+    std::vector<Diagnostic> all = r.diagnostics;
+    if (r.model) validate_model(*r.model, all);
+    return all_messages(all);
+}
+
+}  // namespace
+
+TEST(ModelReader, StagesAndBoltsRead) {
+    const ReadResult r = read_model_text(square_model_json(), staged({}));
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    const Model& m = *r.model;
+    ASSERT_EQ(m.bolts.size(), 1u);
+    EXPECT_EQ(m.bolts[0].name, "b1");
+    EXPECT_DOUBLE_EQ(m.bolts[0].stiffness, 1e8);
+    EXPECT_DOUBLE_EQ(m.bolts[0].strength, 2e5);
+    EXPECT_DOUBLE_EQ(m.bolts[0].pretension, 1e4);
+    ASSERT_EQ(m.stages.size(), 2u);
+    EXPECT_EQ(m.stages[0].analysis.steps, 2);
+    EXPECT_EQ(m.stages[1].excavate, std::vector<int>{1});
+    EXPECT_EQ(m.stages[1].install, std::vector<std::string>{"b1"});
+    EXPECT_EQ(m.stages[1].release_steps, 3);
+    EXPECT_EQ(m.stages[1].analysis.steps, 4);
+    EXPECT_DOUBLE_EQ(m.stages[1].analysis.plastic_tolerance, 1e-5);
+    EXPECT_DOUBLE_EQ(m.stages[1].target_ratio, 1e-6);
+    // A stage's settings start from the model's.
+    EXPECT_DOUBLE_EQ(m.stages[1].analysis.time_step, m.analysis.time_step);
+    EXPECT_DOUBLE_EQ(m.stages[1].released(1.5, m.load_tables), 0.5);
+    EXPECT_DOUBLE_EQ(m.stages[1].released(7.0, m.load_tables), 1.0);
+    EXPECT_EQ(errors_of(r), "(no diagnostics)");
+}
+
+TEST(ModelReader, StagesAndBoltsNeedVersion2) {
+    const ReadResult r = read_model_text(square_model_json(), {R"(/stages=[{"name": "a"}])"});
+    EXPECT_FALSE(r.model);
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/stages", "need format version 2")) << all_messages(r.diagnostics);
+}
+
+TEST(ModelReader, StageAndBoltMistakesAreNamed) {
+    const auto unknown = read_model_text(square_model_json(),
+                                         staged({R"(/stages/1/excavate=["nowhere"])", R"(/stages/1/release={"steps": 1, "table": "t"})"}));
+    EXPECT_TRUE(has_diagnostic(unknown.diagnostics, Severity::Error, "/stages/1/excavate/0", "no region named \"nowhere\""))
+        << all_messages(unknown.diagnostics);
+    EXPECT_TRUE(has_diagnostic(unknown.diagnostics, Severity::Error, "/stages/1/release", "not both"));
+
+    auto invalid = [&](std::vector<std::string> more) {
+        ReadResult r = read_model_text(square_model_json(), staged(std::move(more)));
+        std::vector<Diagnostic> all = r.diagnostics;
+        if (r.model) validate_model(*r.model, all);
+        return all;
+    };
+    auto twice = invalid({R"(/stages/-={"name": "again", "excavate": ["core"]})"});
+    EXPECT_TRUE(has_diagnostic(twice, Severity::Error, "/stages/2/excavate/0", "is not there to excavate")) << all_messages(twice);
+    auto nothing = invalid({R"(/stages/-={"name": "gone", "excavate": ["square"]})"});
+    EXPECT_TRUE(has_diagnostic(nothing, Severity::Error, "/stages/2", "leaves no region")) << all_messages(nothing);
+    auto install = invalid({R"(/stages/1/install=["b2"])"});
+    EXPECT_TRUE(has_diagnostic(install, Severity::Error, "/stages/1/install/0", "no support, load or bolt named \"b2\""))
+        << all_messages(install);
+    auto removed = invalid({R"(/stages/1/remove=["base", "base"])"});
+    EXPECT_TRUE(has_diagnostic(removed, Severity::Error, "/stages/1/remove/1", "is not there")) << all_messages(removed);
+    auto bolt = invalid({R"(/bolts/0/to=[30,30])", R"(/bolts/0/stiffness=0)"});
+    EXPECT_TRUE(has_diagnostic(bolt, Severity::Error, "/bolts/0/to", "outside every region")) << all_messages(bolt);
+    EXPECT_TRUE(has_diagnostic(bolt, Severity::Error, "/bolts/0/stiffness", "must be positive"));
+    auto steps = invalid({R"(/stages/0/analysis/steps=0)", R"(/stages/0/analysis/equilibrium_ratio=0)"});
+    EXPECT_TRUE(has_diagnostic(steps, Severity::Error, "/stages/0/analysis/steps", "at least one step")) << all_messages(steps);
+    EXPECT_TRUE(has_diagnostic(steps, Severity::Error, "/stages/0/analysis/equilibrium_ratio", "must be positive"));
 }

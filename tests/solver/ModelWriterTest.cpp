@@ -113,7 +113,7 @@ TEST(ModelWriter, ConvertsUnitsAndSignsBack) {
     const std::string text = write_model_text(m);
     const auto has = [&](const std::string& fragment) { return text.find(fragment) != std::string::npos; };
     EXPECT_TRUE(has("\"format\": \"mcdda-model\"")) << text;
-    EXPECT_TRUE(has("\"version\": 1")) << text;
+    EXPECT_TRUE(has("\"version\": 2")) << text;
     EXPECT_TRUE(has("\"density\": 2500")) << text;        // unit weight 24525 N/m³ / 9.81
     EXPECT_FALSE(has("unit_weight")) << text;
     EXPECT_TRUE(has("\"sxx\": 10000000")) << text;         // compression positive again

@@ -32,7 +32,7 @@ Run run(Preprocessed p, int steps) {
         return r;
     }
     r.simulation = std::make_unique<Simulation>(r.model);
-    const int total = steps > 0 ? steps : r.model.model.analysis.steps;
+    const int total = steps > 0 ? steps : r.simulation->planned_steps();
     auto record = [&] {
         const SimulationState& s = r.simulation->state();
         r.history.time.push_back(s.time);
@@ -42,7 +42,7 @@ Run run(Preprocessed p, int steps) {
         r.history.points.push_back(row);
     };
     record();
-    while (r.simulation->state().step < total) {
+    while (r.simulation->state().step < total && !r.simulation->finished()) {
         r.simulation->advance();
         record();
     }
