@@ -46,8 +46,9 @@ Options:
                        or stress_3 (in-plane principal; kPa or MPa, tension +)
   --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0)
   --contacts STEP.vtp  with --results: draw the step's contact forces (lines along the force
-                       on each contact, the largest 6 % of the model long) and bolts, from
-                       the run's <model>_contacts_NNNNNN.vtp
+                       on each contact, the largest 6 % of the model long), joint slip (along
+                       the joint) and opening (across it), and bolts, from the run's
+                       <model>_contacts_NNNNNN.vtp
   --quiet              print errors only
   --threads N          threads for the element loops and the contact search of run (default:
                        $MCDDA_THREADS, else one per core); results are the same for any number

@@ -51,6 +51,8 @@ const Rgb joint_color{0.55, 0.0, 0.60};  // purple: not in the rainbow nor the s
 // Contact forces and bolts: neither in the rainbow, the state colours nor the outline's near-black.
 const Rgb contact_force_color{0.0, 0.40, 0.75};
 const Rgb bolt_color{0.0, 0.55, 0.25};
+const Rgb slip_color{0.95, 0.45, 0.0};     // joint slip: along the joint
+const Rgb opening_color{0.45, 0.25, 0.05};  // joint opening: across it
 
 /// How a field's value comes out of its array.
 enum Derived : int {
@@ -459,7 +461,8 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
 
     // Contact forces and bolts (docs/running.md, the contacts files).
     const bool contact_forces = r.contacts != nullptr;
-    double largest_force = 0.0;
+    double largest_force = 0.0, largest_slip = 0.0, largest_opening = 0.0;
+    bool any_bolt = false;
     if (contact_forces) {
         vtkPolyData* c = r.contacts;
         vtkDataArray* force = c->GetPointData()->GetArray("force");
@@ -486,6 +489,39 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         lines_data->SetPoints(force_points);
         lines_data->SetLines(force_lines);
         renderer->AddActor(flat_actor(lines_data, contact_force_color, 1.5 * pixel));
+        // Joint slip (UDEC's jdisp) along the joint and opening across it, centred on each
+        // contact's vertex, the largest of each 6 % of the model long.
+        vtkDataArray* normal = c->GetPointData()->GetArray("normal");
+        for (const char* name : {"slip", "opening"}) {
+            vtkDataArray* value = c->GetPointData()->GetArray(name);
+            if (value == nullptr || normal == nullptr) continue;
+            const bool along = std::string(name) == "slip";
+            double& largest = along ? largest_slip : largest_opening;
+            for (vtkIdType p : at) largest = std::max(largest, std::fabs(value->GetTuple1(p)));
+            // Round-off gaps and creep (a millionth of the model) are not drawn as if they mattered.
+            if (largest <= 1e-6 * box.size()) {
+                largest = 0.0;
+                continue;
+            }
+            vtkNew<vtkPoints> points_of;
+            vtkNew<vtkCellArray> lines_of;
+            for (vtkIdType p : at) {
+                const double v = std::fabs(value->GetTuple1(p));
+                if (v < 0.01 * largest) continue;
+                const double nx = normal->GetComponent(p, 0), ny = normal->GetComponent(p, 1);
+                const double dx = along ? -ny : nx, dy = along ? nx : ny;
+                const double half = 0.03 * box.size() * v / largest;
+                double q[3];
+                c->GetPoint(p, q);
+                const vtkIdType l[2] = {points_of->InsertNextPoint(q[0] - half * dx, q[1] - half * dy, 4.5 * z_step),
+                                        points_of->InsertNextPoint(q[0] + half * dx, q[1] + half * dy, 4.5 * z_step)};
+                lines_of->InsertNextCell(2, l);
+            }
+            vtkNew<vtkPolyData> data_of;
+            data_of->SetPoints(points_of);
+            data_of->SetLines(lines_of);
+            renderer->AddActor(flat_actor(data_of, along ? slip_color : opening_color, 2.5 * pixel));
+        }
         // Bolts: the poly data's lines, between their anchors.
         vtkNew<vtkPoints> bolt_points;
         vtkNew<vtkCellArray> bolt_lines;
@@ -505,6 +541,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         bolts_data->SetPoints(bolt_points);
         bolts_data->SetLines(bolt_lines);
         renderer->AddActor(flat_actor(bolts_data, bolt_color, 3.0 * pixel));
+        any_bolt = bolt_lines->GetNumberOfCells() > 0;
     }
 
     // Legend.
@@ -524,7 +561,18 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             std::snprintf(largest, sizeof largest, " (%.3g kN/m)", largest_force / 1e3);
             entries.push_back({LegendEntry::Icon::Line, contact_force_color,
                                picture_text(QT_TRANSLATE_NOOP("mcdda::view", "contact force, largest")) + largest});
-            entries.push_back({LegendEntry::Icon::Line, bolt_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt"))});
+            if (any_bolt)
+                entries.push_back({LegendEntry::Icon::Line, bolt_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt"))});
+            if (largest_slip > 0.0) {
+                std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * largest_slip);
+                entries.push_back({LegendEntry::Icon::Line, slip_color,
+                                   picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint slip, largest")) + largest});
+            }
+            if (largest_opening > 0.0) {
+                std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * largest_opening);
+                entries.push_back({LegendEntry::Icon::Line, opening_color,
+                                   picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint opening, largest")) + largest});
+            }
         }
         const std::string title = picture_text(field.title);
         add_legend(renderer, title, entries, dpi);

@@ -27,8 +27,9 @@ struct ResultOptions {
     bool show_joints = true;  ///< joint traces of the model (only drawn undeformed)
     /// A step's contacts file of `mcdda run` (<model>_contacts_NNNNNN.vtp): its contact forces
     /// are drawn as lines from each closed contact's vertex along the force on it, the largest
-    /// 6 % of the model's size long (UDEC's `plot cforce`), and its bolts as lines between their
-    /// anchors. Empty: none.
+    /// 6 % of the model's size long (UDEC's `plot cforce`); joint slip as lines along the joint
+    /// and opening as lines across it, centred on the vertex and scaled the same way (UDEC's
+    /// `plot jdisp`); its bolts as lines between their anchors. Empty: none.
     std::string contacts;
 };
 

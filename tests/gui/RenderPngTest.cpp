@@ -517,3 +517,35 @@ TEST_F(RenderPng, ResultContactForcesAndBolts)
         return o;
     }(), width, height, output_path("never.png")), std::runtime_error);
 }
+
+// The slope's wedge slides along its joint: the contacts file of a later step drawn over the
+// result shows the slip (orange lines) along that joint and nowhere else.
+TEST_F(RenderPng, ResultJointSlip)
+{
+    const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/slope-wedge.json", {"/analysis/steps=10"});
+    ASSERT_TRUE(p.ok);
+    const fs::path dir = fs::path(MCDDA_TEST_OUTPUT_DIR) / "slope-wedge";
+    fs::remove_all(dir);
+    {
+        Simulation simulation(p);
+        RunOutput output(dir.string(), "wedge");
+        run_steps(simulation, &output, nullptr, nullptr);
+    }
+    const std::string vtu = (dir / "wedge_000010.vtu").string(), vtp = (dir / "wedge_contacts_000010.vtp").string();
+    view::ResultOptions options;
+    options.contacts = vtp;
+    const std::string path = output_path("result_joint_slip.png");
+    view::render_result_png(p, vtu, options, width, height, path);
+    Picture picture(path);
+    auto is_slip = [](const Rgb8& c) { return near(c, to_bytes(view::Rgb{0.95, 0.45, 0.0}), 20); };
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, options); });
+    // Along the joint from (12, 3) to (32.8, 15): slip at its middle; none at the slope's base.
+    int along = 0;
+    for (double t : {0.3, 0.5, 0.7}) {
+        const auto q = projection.pixel({12.0 + t * 20.78, 3.0 + t * 12.0});
+        along += picture.count_around(q[0], q[1], 6, is_slip);
+    }
+    EXPECT_GT(along, 20);
+    const auto base = projection.pixel({30.0, -3.0});
+    EXPECT_EQ(picture.count_around(base[0], base[1], 6, is_slip), 0);
+}
