@@ -16,6 +16,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QScrollBar>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -187,6 +188,7 @@ void MainWindow::createActions()
     view->addAction(dock_->toggleViewAction());
     view->addAction(steps_dock_->toggleViewAction());
     view->addAction(plot_dock_->toggleViewAction());
+    view->addAction(property_dock_->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help_menu_ = help;
@@ -332,7 +334,7 @@ void MainWindow::newModel()
     rock.name = tr("rock").toStdString();
     rock.young_modulus = 10e9;
     rock.poisson_ratio = 0.25;
-    rock.density = 2600.0;
+    rock.density = 25.5e3 / 9.81;  // a unit weight of 25.5 kN/m³, as the forms show it (not 25.506)
     rock.cohesion = 1e6;
     rock.friction_angle = 35.0 * pi / 180.0;
     rock.dilation_angle = 0.0;
@@ -456,7 +458,8 @@ void MainWindow::createDock()
     dock_->setObjectName(QStringLiteral("messages"));
     dock_->setWidget(messages_);
     addDockWidget(Qt::BottomDockWidgetArea, dock_);
-    resizeDocks({dock_}, {140}, Qt::Vertical);  // the model gets most of the height
+    // Ten lines of messages; the model keeps most of the height.
+    resizeDocks({dock_}, {10 * messages_->fontMetrics().lineSpacing() + 24}, Qt::Vertical);
 }
 
 void MainWindow::createResultDocks()
@@ -870,7 +873,12 @@ double MainWindow::deformFactor() const { return deform_box_->value(); }
 
 void MainWindow::setDeformFactor(double factor) { deform_box_->setValue(factor); }
 
-void MainWindow::log(const QString& line) { messages_->appendPlainText(line); }
+void MainWindow::log(const QString& line)
+{
+    messages_->appendPlainText(line);
+    // The newest line stays in sight, even when the user scrolled up earlier (the run's log).
+    messages_->verticalScrollBar()->setValue(messages_->verticalScrollBar()->maximum());
+}
 
 bool MainWindow::startRun()
 {

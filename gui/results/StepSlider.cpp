@@ -16,6 +16,7 @@ StepSlider::StepSlider(QWidget* parent) : QWidget(parent)
     slider_->setPageStep(1);
     slider_->setTickPosition(QSlider::TicksBelow);
     label_ = new QLabel(this);
+    label_->setObjectName(QStringLiteral("stepLabel"));
     label_->setMinimumWidth(160);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
@@ -67,7 +68,13 @@ void StepSlider::showLabel()
         label_->setText(tr("no saved steps"));
         return;
     }
-    label_->setText(tr("%1 of %2, t = %3 s").arg(index + 1).arg(count()).arg(entries_[index].time, 0, 'g', 6));
+    // The step number is in the file's name (<model>_NNNNNN.vtu, RunOutput).
+    const QString base = QFileInfo(entries_[index].file).completeBaseName();
+    const int underscore = base.lastIndexOf(QLatin1Char('_'));
+    bool numbered = false;
+    const int step = underscore >= 0 ? base.mid(underscore + 1).toInt(&numbered) : 0;
+    const QString where = tr("%1 of %2, t = %3 s").arg(index + 1).arg(count()).arg(entries_[index].time, 0, 'g', 6);
+    label_->setText(numbered ? tr("step %1 (%2)").arg(step).arg(where) : where);
 }
 
 }  // namespace mcdda::gui

@@ -7,6 +7,7 @@
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
+#include <QKeyEvent>
 #include <QActionGroup>
 #include <QCheckBox>
 #include <QComboBox>
@@ -223,9 +224,26 @@ void EditingTools::createToolOptions()
     coordinate_edit_->setMaximumWidth(140);
     coordinate_edit_->setEnabled(false);
     connect(coordinate_edit_, &QLineEdit::returnPressed, this, [this] {
-        if (enterCoordinates(coordinate_edit_->text())) coordinate_edit_->clear();
+        // setText, not clear(): the field keeps no undo step of its own for a placed point, so
+        // Ctrl+Z there undoes the point (eventFilter).
+        if (enterCoordinates(coordinate_edit_->text())) coordinate_edit_->setText(QString());
     });
     bar->addWidget(coordinate_edit_);
+    coordinate_edit_->installEventFilter(this);
+}
+
+bool EditingTools::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == coordinate_edit_ && event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        const bool undo = key->matches(QKeySequence::Undo) && !coordinate_edit_->isUndoAvailable();
+        const bool redo = key->matches(QKeySequence::Redo) && !coordinate_edit_->isRedoAvailable();
+        if (undo || redo) {
+            event->ignore();  // not overridden: the window's Undo/Redo shortcut fires
+            return true;
+        }
+    }
+    return QObject::eventFilter(watched, event);
 }
 
 void EditingTools::tell(const QString& text)

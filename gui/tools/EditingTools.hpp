@@ -81,6 +81,11 @@ signals:
     /// A line for the window's log.
     void message(const QString& text);
 
+protected:
+    /// Ctrl+Z / Ctrl+Shift+Z in the coordinate field undo the model's last edit when the field
+    /// itself has nothing to undo (a QLineEdit would swallow the keys and do nothing).
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     DrawTool* makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply);
     void setTool(DrawTool* tool);

@@ -13,6 +13,12 @@
 #include "tools/DrawTool.hpp"
 #include "view/Palette.hpp"
 #include "widgets/ModelTree.hpp"
+#include "results/StepSlider.hpp"
+#include <QFile>
+#include <QLabel>
+#include <QScrollBar>
+#include <QPlainTextEdit>
+#include <QMenuBar>
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
@@ -42,6 +48,8 @@ private slots:
     void typedPointsHolesAndJointSets();
     void everyShortcutIsUnique();
     void stagesAndBoltsShownInTheTree();
+    void undoFromTheCoordinateField();
+    void viewMenuMessagesAndStepLabel();
 };
 
 void EditingTest::initTestCase()
@@ -64,6 +72,8 @@ void EditingTest::drawUndoRedoSaveOpen()
     gui::ModelDocument* doc = window.document();
     QCOMPARE(doc->model().materials.size(), std::size_t(1));
     QCOMPARE(doc->model().joint_materials.size(), std::size_t(1));
+    // Issue 13, item 13: a round unit weight (25.5 kN/m³, it read 25.506).
+    QVERIFY(std::fabs(doc->model().materials[0].density * 9.81 - 25.5e3) < 1e-9);
     QVERIFY(doc->model().regions.empty());
     QVERIFY(!doc->isModified());
     QVERIFY(window.windowTitle().contains(QStringLiteral("Untitled")));
@@ -362,6 +372,86 @@ void EditingTest::stagesAndBoltsShownInTheTree()
     QVERIFY2(stages->child(2)->text(1).contains(QStringLiteral("installs roof bolt 1")), qPrintable(stages->child(2)->text(1)));
     QVERIFY2(stages->child(3)->text(1).startsWith(QStringLiteral("10 step")), qPrintable(stages->child(3)->text(1)));
     QCOMPARE(bolts->child(0)->text(0), QStringLiteral("roof bolt 1"));
+}
+
+// Issue 13, item 11: Ctrl+Z with the focus in the coordinate field undoes the last model edit
+// (the field had nothing of its own to undo and swallowed the key).
+void EditingTest::undoFromTheCoordinateField()
+{
+    MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    gui::ModelDocument* doc = window.document();
+    window.findChild<QAction*>(QStringLiteral("drawRegionAction"))->trigger();
+    auto* field = window.findChild<QLineEdit*>(QStringLiteral("coordinateEdit"));
+    QVERIFY(field && field->isEnabled());
+    for (const char* point : {"0, 0", "10, 0", "10, 10", "0, 10"}) {
+        field->setText(QString::fromLatin1(point));
+        QTest::keyClick(field, Qt::Key_Return);
+    }
+    QTest::keyClick(field, Qt::Key_Return);  // Enter on the empty field finishes the region
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    // (No window manager under Xvfb: the window is made the active one by hand, as shortcuts
+    // of the window's actions need.)
+    QApplication::setActiveWindow(&window);
+    field->setFocus();
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(doc->model().regions.size(), std::size_t(0));
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+    // Text typed into the field is still undone there first.
+    field->clear();
+    QTest::keyClicks(field, QStringLiteral("3, 4"));
+    QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(doc->model().regions.size(), std::size_t(1));
+}
+
+// Issue 13, items 6 and 15: the Properties dock is in the View menu; the Messages dock shows ten
+// lines and keeps its newest line in sight; the step label names the step.
+void EditingTest::viewMenuMessagesAndStepLabel()
+{
+    MainWindow window;
+    window.resize(1200, 800);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QMenu* view_menu = nullptr;
+    for (QAction* a : window.menuBar()->actions())
+        if (a->text().remove(QLatin1Char('&')) == QLatin1String("View")) view_menu = a->menu();
+    QVERIFY(view_menu);
+    bool properties = false;
+    for (QAction* a : view_menu->actions()) properties = properties || a->text() == QLatin1String("Properties");
+    QVERIFY(properties);
+
+    auto* messages = window.findChild<QPlainTextEdit*>();
+    QVERIFY(messages);
+    QVERIFY2(messages->height() >= 8 * messages->fontMetrics().lineSpacing(), qPrintable(QString::number(messages->height())));
+    QVERIFY2(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/kirsch.json")), qPrintable(window.messages()));
+    for (int k = 0; k < 40; ++k) messages->appendPlainText(QStringLiteral("earlier line %1").arg(k));
+    messages->verticalScrollBar()->setValue(0);  // the user scrolled up to read
+    QTemporaryDir out;
+    window.setRunOutputFolder(out.path());
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+    QVERIFY(messages->verticalScrollBar()->maximum() > 0);
+    QCOMPARE(messages->verticalScrollBar()->value(), messages->verticalScrollBar()->maximum());
+    QVERIFY(messages->toPlainText().endsWith(QStringLiteral("Results in ") + out.path()));
+
+    // A results collection with steps 0 and 10: the label says "step 10".
+    QTemporaryDir dir;
+    QFile pvd(dir.filePath(QStringLiteral("m.pvd")));
+    QVERIFY(pvd.open(QIODevice::WriteOnly));
+    pvd.write("<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n"
+              "    <DataSet timestep=\"0\" group=\"\" part=\"0\" file=\"m_000000.vtu\"/>\n"
+              "    <DataSet timestep=\"2.5\" group=\"\" part=\"0\" file=\"m_000010.vtu\"/>\n  </Collection>\n</VTKFile>\n");
+    pvd.close();
+    gui::StepSlider slider;
+    QCOMPARE(slider.load(pvd.fileName()), 2);
+    auto* label = slider.findChild<QLabel*>(QStringLiteral("stepLabel"));
+    QVERIFY(label);
+    QVERIFY2(label->text().startsWith(QStringLiteral("step 10 (2 of 2, t = 2.5 s)")), qPrintable(label->text()));
 }
 
 QTEST_MAIN(EditingTest)
