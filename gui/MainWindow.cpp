@@ -895,6 +895,7 @@ bool MainWindow::startRun()
     connect(run_thread_, &QThread::started, controller_, &RunController::start);
     connect(controller_, &RunController::progress, this, &MainWindow::onRunProgress, Qt::QueuedConnection);
     connect(controller_, &RunController::snapshot, this, &MainWindow::onRunSnapshot, Qt::QueuedConnection);
+    connect(controller_, &RunController::iterating, this, &MainWindow::onRunIterating, Qt::QueuedConnection);
     connect(controller_, &RunController::finished, this, &MainWindow::onRunFinished, Qt::QueuedConnection);
 
     last_snapshot_.reset();
@@ -947,6 +948,20 @@ void MainWindow::onRunProgress(const RunProgress& p)
             .arg(p.plastic_iterations)
             .arg(p.yielding));
     emit runProgressed(p);
+}
+
+void MainWindow::onRunIterating(const IterationInfo& info)
+{
+    if (!isRunning()) return;
+    // Between steps the progress bar moves; inside a long step this line does.
+    statusBar()->showMessage(tr("Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding",
+                                "", info.yielding)
+                                 .arg(info.step)
+                                 .arg(info.iteration)
+                                 .arg(info.out_of_balance, 0, 'e', 2)
+                                 .arg(info.tolerance, 0, 'e', 0),
+                             5000);
+    emit runIterating(info);
 }
 
 void MainWindow::onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot)

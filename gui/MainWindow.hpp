@@ -175,6 +175,8 @@ signals:
     /// A run reported progress (throttled) / ended.
     void runProgressed(const mcdda::gui::RunProgress& progress);
     void runFinished(mcdda::RunStatus status, const QString& message);
+    /// Inside a long step: its iterations so far (the status bar shows them).
+    void runIterating(const mcdda::IterationInfo& info);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -217,6 +219,7 @@ private:
     void updateRunActions();
     void onRunProgress(const RunProgress& progress);
     void onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot);
+    void onRunIterating(const IterationInfo& info);
     void onRunFinished(RunStatus status, const QString& message);
     void showResult();
     void log(const QString& line);

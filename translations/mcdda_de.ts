@@ -35,17 +35,27 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="24"/>
+        <location filename="../app/gui/main.cpp" line="25"/>
         <source>Language of the program, e.g. &quot;de&quot; or &quot;en&quot; (default: $%1, else the system&apos;s).</source>
         <translation>Sprache des Programms, z. B. „de“ oder „en“ (Vorgabe: $%1, sonst die des Systems).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="33"/>
+        <location filename="../app/gui/main.cpp" line="34"/>
         <source>Pre- and post-processor for elastic-plastic discontinuous deformation analysis.</source>
         <translation>Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="39"/>
+        <location filename="../app/gui/main.cpp" line="40"/>
+        <source>Start the analysis once the model is open.</source>
+        <translation>Die Berechnung starten, sobald das Modell geöffnet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="43"/>
+        <source>Close the program when the run ends, with the exit status of mcdda run (for demonstrations and benchmarks).</source>
+        <translation>Das Programm nach der Berechnung schließen, mit dem Rückgabewert von mcdda run (für Vorführungen und Leistungsmessungen).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="46"/>
         <source>Model file (*.json) to open.</source>
         <translation>Zu öffnende Modelldatei (*.json).</translation>
     </message>
@@ -118,218 +128,218 @@
 <context>
     <name>mcdda::gui::EditingTools</name>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="118"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="119"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="132"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="133"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="133"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="134"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="136"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="137"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="137"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="138"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="139"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="140"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="140"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="141"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="143"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="144"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="144"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="146"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="146"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="147"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="148"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="150"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="151"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="153"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="154"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="155"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="155"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="156"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="158"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="159"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="163"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="164"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="167"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="177"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="178"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="184"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="185"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="187"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="204"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="205"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="205"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="207"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="208"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="205"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="207"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="207"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="208"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="209"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="210"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="210"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="212"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="213"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="214"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="215"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="218"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="219"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="221"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="222"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="222"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="247"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="265"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="262"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="280"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="315"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -797,361 +807,361 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="95"/>
+        <location filename="../gui/MainWindow.cpp" line="106"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="115"/>
+        <location filename="../gui/MainWindow.cpp" line="126"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="116"/>
+        <location filename="../gui/MainWindow.cpp" line="127"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="119"/>
+        <location filename="../gui/MainWindow.cpp" line="130"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="120"/>
+        <location filename="../gui/MainWindow.cpp" line="131"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="123"/>
+        <location filename="../gui/MainWindow.cpp" line="134"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="124"/>
+        <location filename="../gui/MainWindow.cpp" line="135"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="126"/>
+        <location filename="../gui/MainWindow.cpp" line="138"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="128"/>
+        <location filename="../gui/MainWindow.cpp" line="140"/>
         <source>Recent &amp;Files</source>
         <translation>&amp;Zuletzt geöffnete Dateien</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="132"/>
+        <location filename="../gui/MainWindow.cpp" line="144"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="136"/>
+        <location filename="../gui/MainWindow.cpp" line="148"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="137"/>
+        <location filename="../gui/MainWindow.cpp" line="149"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="140"/>
+        <location filename="../gui/MainWindow.cpp" line="152"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="144"/>
+        <location filename="../gui/MainWindow.cpp" line="156"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="147"/>
+        <location filename="../gui/MainWindow.cpp" line="159"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="148"/>
+        <location filename="../gui/MainWindow.cpp" line="160"/>
         <source>&amp;Fit</source>
         <translation>&amp;Einpassen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="151"/>
+        <location filename="../gui/MainWindow.cpp" line="163"/>
         <source>Show the whole model</source>
         <translation>Das ganze Modell zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="161"/>
-        <location filename="../gui/MainWindow.cpp" line="761"/>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
+        <location filename="../gui/MainWindow.cpp" line="775"/>
         <source>&amp;Mesh</source>
         <translation>&amp;Netz</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="161"/>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
         <source>Show the element edges</source>
         <translation>Die Elementkanten zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="162"/>
+        <location filename="../gui/MainWindow.cpp" line="174"/>
         <source>&amp;Joints</source>
         <translation>&amp;Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="162"/>
+        <location filename="../gui/MainWindow.cpp" line="174"/>
         <source>Show the joint traces</source>
         <translation>Die Kluftspuren zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="163"/>
+        <location filename="../gui/MainWindow.cpp" line="175"/>
         <source>&amp;Supports</source>
         <translation>A&amp;uflager</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="163"/>
+        <location filename="../gui/MainWindow.cpp" line="175"/>
         <source>Show fixed points and rollers</source>
         <translation>Festpunkte und Rollenlager zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="164"/>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
         <source>&amp;Loads</source>
         <translation>&amp;Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="164"/>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
         <source>Show point loads and edge pressures</source>
         <translation>Punktlasten und Kantendrücke zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="177"/>
         <source>Measurement &amp;points</source>
         <translation>&amp;Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="177"/>
         <source>Show the measurement points</source>
         <translation>Die Messpunkte zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="166"/>
+        <location filename="../gui/MainWindow.cpp" line="178"/>
         <source>Le&amp;gend</source>
         <translation>Le&amp;gende</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="166"/>
+        <location filename="../gui/MainWindow.cpp" line="178"/>
         <source>Show the legend</source>
         <translation>Die Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="168"/>
+        <location filename="../gui/MainWindow.cpp" line="180"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster fangen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="172"/>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
         <source>Drawn points snap to a grid (0.5 m) and to nearby region vertices</source>
         <translation>Gezeichnete Punkte rasten auf einem Raster (0,5 m) und an nahen Bereichsecken ein</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="180"/>
+        <location filename="../gui/MainWindow.cpp" line="193"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
+        <location filename="../gui/MainWindow.cpp" line="195"/>
         <source>&amp;About mcdda</source>
         <translation>Ü&amp;ber mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="183"/>
+        <location filename="../gui/MainWindow.cpp" line="196"/>
         <source>About mcdda</source>
         <translation>Über mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <location filename="../gui/MainWindow.cpp" line="197"/>
         <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
         <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="195"/>
+        <location filename="../gui/MainWindow.cpp" line="208"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="197"/>
+        <location filename="../gui/MainWindow.cpp" line="210"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="201"/>
+        <location filename="../gui/MainWindow.cpp" line="214"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="251"/>
+        <location filename="../gui/MainWindow.cpp" line="264"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="330"/>
+        <location filename="../gui/MainWindow.cpp" line="343"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="281"/>
+        <location filename="../gui/MainWindow.cpp" line="294"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="297"/>
+        <location filename="../gui/MainWindow.cpp" line="310"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="299"/>
-        <location filename="../gui/MainWindow.cpp" line="434"/>
+        <location filename="../gui/MainWindow.cpp" line="312"/>
+        <location filename="../gui/MainWindow.cpp" line="447"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="300"/>
+        <location filename="../gui/MainWindow.cpp" line="313"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="307"/>
+        <location filename="../gui/MainWindow.cpp" line="320"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="308"/>
+        <location filename="../gui/MainWindow.cpp" line="321"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="321"/>
+        <location filename="../gui/MainWindow.cpp" line="334"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="340"/>
+        <location filename="../gui/MainWindow.cpp" line="353"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="351"/>
+        <location filename="../gui/MainWindow.cpp" line="364"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="351"/>
+        <location filename="../gui/MainWindow.cpp" line="364"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="370"/>
-        <location filename="../gui/MainWindow.cpp" line="509"/>
-        <location filename="../gui/MainWindow.cpp" line="540"/>
+        <location filename="../gui/MainWindow.cpp" line="383"/>
+        <location filename="../gui/MainWindow.cpp" line="523"/>
+        <location filename="../gui/MainWindow.cpp" line="554"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="404"/>
+        <location filename="../gui/MainWindow.cpp" line="417"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="443"/>
+        <location filename="../gui/MainWindow.cpp" line="456"/>
         <source>Messages about the model appear here.</source>
         <translation>Meldungen zum Modell erscheinen hier.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="444"/>
+        <location filename="../gui/MainWindow.cpp" line="457"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="454"/>
+        <location filename="../gui/MainWindow.cpp" line="468"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="461"/>
+        <location filename="../gui/MainWindow.cpp" line="475"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="470"/>
+        <location filename="../gui/MainWindow.cpp" line="484"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="471"/>
+        <location filename="../gui/MainWindow.cpp" line="485"/>
         <source>&amp;Picture (PNG)...</source>
         <translation>&amp;Bild (PNG)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="472"/>
+        <location filename="../gui/MainWindow.cpp" line="486"/>
         <source>Export picture</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="473"/>
+        <location filename="../gui/MainWindow.cpp" line="487"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="478"/>
+        <location filename="../gui/MainWindow.cpp" line="492"/>
         <source>Save the picture of the view as a PNG file</source>
         <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="479"/>
+        <location filename="../gui/MainWindow.cpp" line="493"/>
         <source>Saved &amp;Steps (PVD/VTU)...</source>
         <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="480"/>
+        <location filename="../gui/MainWindow.cpp" line="494"/>
         <source>Export saved steps to</source>
         <translation>Gespeicherte Zeitschritte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="484"/>
+        <location filename="../gui/MainWindow.cpp" line="498"/>
         <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
         <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="485"/>
+        <location filename="../gui/MainWindow.cpp" line="499"/>
         <source>&amp;History (CSV)...</source>
         <translation>&amp;Verlauf (CSV)...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="486"/>
+        <location filename="../gui/MainWindow.cpp" line="500"/>
         <source>Export history</source>
         <translation>Verlauf exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="487"/>
+        <location filename="../gui/MainWindow.cpp" line="501"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="491"/>
+        <location filename="../gui/MainWindow.cpp" line="505"/>
         <source>Copy the run&apos;s history of loads and measured displacements</source>
         <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="497"/>
+        <location filename="../gui/MainWindow.cpp" line="511"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="516"/>
+        <location filename="../gui/MainWindow.cpp" line="530"/>
         <source>There are no saved steps yet: run the model first.</source>
         <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <location filename="../gui/MainWindow.cpp" line="539"/>
         <source>Copied %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 kopiert</numerusform>
@@ -1159,164 +1169,164 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="532"/>
+        <location filename="../gui/MainWindow.cpp" line="546"/>
         <source>There is no history yet: run the model first.</source>
         <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="595"/>
+        <location filename="../gui/MainWindow.cpp" line="609"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="616"/>
+        <location filename="../gui/MainWindow.cpp" line="630"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="617"/>
+        <location filename="../gui/MainWindow.cpp" line="631"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="694"/>
+        <location filename="../gui/MainWindow.cpp" line="708"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="695"/>
+        <location filename="../gui/MainWindow.cpp" line="709"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="757"/>
-        <location filename="../gui/MainWindow.cpp" line="768"/>
+        <location filename="../gui/MainWindow.cpp" line="771"/>
+        <location filename="../gui/MainWindow.cpp" line="782"/>
         <source>&amp;Run</source>
         <translation>Be&amp;rechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="759"/>
+        <location filename="../gui/MainWindow.cpp" line="773"/>
         <source>Run</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="765"/>
+        <location filename="../gui/MainWindow.cpp" line="779"/>
         <source>Cut the blocks and mesh them in the background (edits do this by themselves); the statistics go to the status bar and the Messages dock</source>
         <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und unter Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="772"/>
+        <location filename="../gui/MainWindow.cpp" line="786"/>
         <source>Analyse the model; the picture follows the run</source>
         <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="773"/>
-        <location filename="../gui/MainWindow.cpp" line="830"/>
+        <location filename="../gui/MainWindow.cpp" line="787"/>
+        <location filename="../gui/MainWindow.cpp" line="844"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="776"/>
+        <location filename="../gui/MainWindow.cpp" line="790"/>
         <source>Pause or resume the run</source>
         <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="777"/>
+        <location filename="../gui/MainWindow.cpp" line="791"/>
         <source>&amp;Stop</source>
         <translation>&amp;Abbrechen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="781"/>
+        <location filename="../gui/MainWindow.cpp" line="795"/>
         <source>Stop the run after the current step; the results so far are kept</source>
         <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="783"/>
+        <location filename="../gui/MainWindow.cpp" line="797"/>
         <source>Results &amp;Folder...</source>
         <translation>Ergebnis&amp;ordner...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="785"/>
+        <location filename="../gui/MainWindow.cpp" line="799"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="788"/>
+        <location filename="../gui/MainWindow.cpp" line="802"/>
         <source>Choose where runs write their files</source>
         <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="794"/>
+        <location filename="../gui/MainWindow.cpp" line="808"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="796"/>
+        <location filename="../gui/MainWindow.cpp" line="810"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="797"/>
+        <location filename="../gui/MainWindow.cpp" line="811"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="798"/>
+        <location filename="../gui/MainWindow.cpp" line="812"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="799"/>
+        <location filename="../gui/MainWindow.cpp" line="813"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="800"/>
+        <location filename="../gui/MainWindow.cpp" line="814"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="801"/>
+        <location filename="../gui/MainWindow.cpp" line="815"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="802"/>
+        <location filename="../gui/MainWindow.cpp" line="816"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="803"/>
+        <location filename="../gui/MainWindow.cpp" line="817"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="804"/>
+        <location filename="../gui/MainWindow.cpp" line="818"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="805"/>
+        <location filename="../gui/MainWindow.cpp" line="819"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="808"/>
+        <location filename="../gui/MainWindow.cpp" line="822"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="813"/>
+        <location filename="../gui/MainWindow.cpp" line="827"/>
         <source>Scale factor of the drawn displacements (0 = undeformed)</source>
         <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="830"/>
+        <location filename="../gui/MainWindow.cpp" line="844"/>
         <source>Res&amp;ume</source>
         <translation>&amp;Fortsetzen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="888"/>
+        <location filename="../gui/MainWindow.cpp" line="908"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1324,27 +1334,35 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="899"/>
+        <location filename="../gui/MainWindow.cpp" line="919"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="902"/>
+        <location filename="../gui/MainWindow.cpp" line="922"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="913"/>
+        <location filename="../gui/MainWindow.cpp" line="933"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="919"/>
+        <location filename="../gui/MainWindow.cpp" line="939"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="966"/>
+        <location filename="../gui/MainWindow.cpp" line="957"/>
+        <source>Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding</source>
+        <translation>
+            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkt plastifiziert</numerusform>
+            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkte plastifiziert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/MainWindow.cpp" line="1000"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -1352,72 +1370,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="967"/>
+        <location filename="../gui/MainWindow.cpp" line="1001"/>
+        <source>Run ended but the model is not in equilibrium: %1</source>
+        <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="1002"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="968"/>
+        <location filename="../gui/MainWindow.cpp" line="1003"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="969"/>
+        <location filename="../gui/MainWindow.cpp" line="1004"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="972"/>
+        <location filename="../gui/MainWindow.cpp" line="1007"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="979"/>
+        <location filename="../gui/MainWindow.cpp" line="1015"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="979"/>
+        <location filename="../gui/MainWindow.cpp" line="1015"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="981"/>
+        <location filename="../gui/MainWindow.cpp" line="1017"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="706"/>
+        <location filename="../gui/MainWindow.cpp" line="720"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="84"/>
+        <location filename="../gui/MainWindow.cpp" line="95"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="233"/>
+        <location filename="../gui/MainWindow.cpp" line="246"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="635"/>
+        <location filename="../gui/MainWindow.cpp" line="649"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="710"/>
+        <location filename="../gui/MainWindow.cpp" line="724"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="716"/>
+        <location filename="../gui/MainWindow.cpp" line="730"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="725"/>
+        <location filename="../gui/MainWindow.cpp" line="739"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -1425,12 +1448,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="739"/>
+        <location filename="../gui/MainWindow.cpp" line="753"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="743"/>
+        <location filename="../gui/MainWindow.cpp" line="757"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -1438,12 +1461,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="746"/>
+        <location filename="../gui/MainWindow.cpp" line="760"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="747"/>
+        <location filename="../gui/MainWindow.cpp" line="761"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -1692,33 +1715,33 @@
 <context>
     <name>mcdda::gui::ModelTree</name>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="45"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="46"/>
         <source>Item</source>
         <translation>Eintrag</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="45"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="46"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="72"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="73"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="77"/>
-        <location filename="../gui/widgets/ModelTree.cpp" line="94"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="78"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="95"/>
         <source>no material</source>
         <translation>kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="78"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="79"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="79"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
         <source>%1, %n vertices</source>
         <translation>
             <numerusform>%1, %n Eckpunkt</numerusform>
@@ -1726,12 +1749,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="82"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="83"/>
         <source>hole %1</source>
         <translation>Loch %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="82"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="83"/>
         <source>%n vertices</source>
         <translation>
             <numerusform>%n Eckpunkt</numerusform>
@@ -1739,17 +1762,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="89"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="90"/>
         <source>Blocks</source>
         <translation>Blöcke</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="97"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="98"/>
         <source>block %1</source>
         <translation>Block %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="98"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="99"/>
         <source>%1, %2 m², %n elements</source>
         <translation>
             <numerusform>%1, %2 m², %n Element</numerusform>
@@ -1757,89 +1780,145 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="102"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="103"/>
         <source>Joints</source>
         <translation>Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="103"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="104"/>
         <source>Explicit</source>
         <translation>Einzelklüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="108"/>
         <source>spacing %1 m</source>
         <translation>Abstand %1 m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="109"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="110"/>
         <source>, persistence %1 %, joints %2 m long</source>
         <translation>, Durchtrennungsgrad %1 %, Klüfte %2 m lang</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="110"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="111"/>
         <source>Set %1</source>
         <translation>Kluftschar %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="119"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="120"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="120"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="121"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="125"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="126"/>
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="126"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
         <source>rock/soil</source>
         <translation>Fels/Boden</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="129"/>
         <source>Supports</source>
         <translation>Auflager</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="130"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="131"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="134"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="135"/>
         <source>roller %1 to %2</source>
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="136"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="137"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="138"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="139"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="141"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="142"/>
         <source>pressure %1 Pa</source>
         <translation>Kantendruck %1 Pa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="143"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="144"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="149"/>
+        <source>Bolts</source>
+        <translation>Anker</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="151"/>
+        <source>%1 to %2, EA %3 MN/m</source>
+        <translation>%1 bis %2, EA %3 MN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="155"/>
+        <source>Stages</source>
+        <translation>Bauphasen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/widgets/ModelTree.cpp" line="169"/>
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n Zeitschritt</numerusform>
+            <numerusform>%n Zeitschritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
+        <source>excavates %1</source>
+        <translation>bricht %1 aus</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="171"/>
+        <source>builds %1</source>
+        <translation>baut %1 ein</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="172"/>
+        <source>installs %1</source>
+        <translation>setzt %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="173"/>
+        <source>removes %1</source>
+        <translation>entfernt %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
+        <source>%n material change(s)</source>
+        <translation>
+            <numerusform>%n Materialänderung</numerusform>
+            <numerusform>%n Materialänderungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="175"/>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
     </message>
 </context>
 <context>
@@ -2247,100 +2326,125 @@
         <translation>Angezeigter gespeicherter Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="22"/>
+        <location filename="../gui/results/StepSlider.cpp" line="23"/>
         <source>Step:</source>
         <translation>Zeitschritt:</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="67"/>
+        <location filename="../gui/results/StepSlider.cpp" line="68"/>
         <source>no saved steps</source>
         <translation>keine gespeicherten Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="70"/>
+        <location filename="../gui/results/StepSlider.cpp" line="76"/>
         <source>%1 of %2, t = %3 s</source>
         <translation>%1 von %2, t = %3 s</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/StepSlider.cpp" line="77"/>
+        <source>step %1 (%2)</source>
+        <translation>Zeitschritt %1 (%2)</translation>
     </message>
 </context>
 <context>
     <name>mcdda::view</name>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="37"/>
-        <location filename="../gui/view/ResultScene.cpp" line="47"/>
+        <location filename="../gui/view/ResultScene.cpp" line="49"/>
         <source>elastic</source>
         <translation>elastisch</translation>
     </message>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="38"/>
-        <location filename="../gui/view/ResultScene.cpp" line="47"/>
+        <location filename="../gui/view/ResultScene.cpp" line="49"/>
         <source>yielded before</source>
         <translation>früher plastifiziert</translation>
     </message>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="39"/>
-        <location filename="../gui/view/ResultScene.cpp" line="47"/>
+        <location filename="../gui/view/ResultScene.cpp" line="49"/>
         <source>yielding now</source>
         <translation>plastifiziert jetzt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="67"/>
+        <location filename="../gui/view/ResultScene.cpp" line="74"/>
         <source>plastic state</source>
         <translation>plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="68"/>
+        <location filename="../gui/view/ResultScene.cpp" line="75"/>
         <source>plastic strain</source>
         <translation>plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="69"/>
+        <location filename="../gui/view/ResultScene.cpp" line="76"/>
         <source>displacement</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="70"/>
+        <location filename="../gui/view/ResultScene.cpp" line="77"/>
         <source>x displacement</source>
         <translation>Verschiebung x</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="71"/>
+        <location filename="../gui/view/ResultScene.cpp" line="78"/>
         <source>y displacement</source>
         <translation>Verschiebung y</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="72"/>
+        <location filename="../gui/view/ResultScene.cpp" line="79"/>
         <source>stress xx</source>
         <translation>Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="73"/>
+        <location filename="../gui/view/ResultScene.cpp" line="80"/>
         <source>stress yy</source>
         <translation>Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="74"/>
+        <location filename="../gui/view/ResultScene.cpp" line="81"/>
         <source>shear stress xy</source>
         <translation>Schubspannung xy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="75"/>
+        <location filename="../gui/view/ResultScene.cpp" line="82"/>
         <source>principal stress 1</source>
         <translation>Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="76"/>
+        <location filename="../gui/view/ResultScene.cpp" line="83"/>
         <source>principal stress 3</source>
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="399"/>
+        <location filename="../gui/view/ResultScene.cpp" line="556"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="401"/>
+        <location filename="../gui/view/ResultScene.cpp" line="558"/>
         <source>joint</source>
         <translation>Kluft</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="563"/>
+        <source>contact force, largest</source>
+        <translation>Kontaktkraft, größte</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="565"/>
+        <source>bolt</source>
+        <translation>Anker</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="569"/>
+        <source>joint slip, largest</source>
+        <translation>Kluftverschiebung, größte</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="574"/>
+        <source>joint opening, largest</source>
+        <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
         <location filename="../gui/view/SceneLegend.cpp" line="144"/>

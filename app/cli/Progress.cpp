@@ -13,6 +13,7 @@ Progress::Progress(int total_steps, bool enabled)
 void Progress::update(const StepReport& r) {
     if (!enabled_) return;
     const auto now = std::chrono::steady_clock::now();
+    step_start_ = now;  // the next step starts now
     // Stage changes and broken bolts are always told, on their own lines.
     if (!r.events.empty()) {
         if (terminal_ && drawn_) std::fprintf(stderr, "\r\033[K");
@@ -40,6 +41,30 @@ void Progress::update(const StepReport& r) {
     }
     std::fflush(stderr);
     last_draw_ = now;
+}
+
+void Progress::iteration(const IterationInfo& info) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    // Only steps that take a while: a quick step's iterations would just flicker.
+    if (now - step_start_ < std::chrono::seconds(1)) return;
+    const auto every = terminal_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(10000);
+    if (now - last_iteration_line_ < every) return;
+    last_iteration_line_ = now;
+    const double seconds = std::chrono::duration<double>(now - step_start_).count();
+    char line[240];
+    std::snprintf(line, sizeof line,
+                  "step %d/%d: %.0f s, equilibrium iteration %d at %.0f %% of the step's load, out-of-balance %.2e "
+                  "(tolerance %.0e), %d points yielding",
+                  info.step, total_, seconds, info.iteration, 100.0 * info.load_fraction, info.out_of_balance,
+                  info.tolerance, info.yielding);
+    if (terminal_) {
+        std::fprintf(stderr, "\r%s\033[K", line);
+        drawn_ = true;
+    } else {
+        std::fprintf(stderr, "%s\n", line);
+    }
+    std::fflush(stderr);
 }
 
 void Progress::finish() {

@@ -88,6 +88,7 @@ int run_run(const Request& r) {
     auto previous_handler = std::signal(SIGINT, request_stop);
     auto previous_term_handler = std::signal(SIGTERM, request_stop);
     Progress progress(simulation->planned_steps(), !r.quiet);
+    simulation->set_iteration_observer([&progress](const IterationInfo& info) { progress.iteration(info); });
     RunEnd end;
     try {
         end = run_steps(*simulation, output.get(), [] { return stop_requested.load(); },

@@ -17,6 +17,7 @@ void register_run_types()
     qRegisterMetaType<mcdda::gui::RunProgress>();
     qRegisterMetaType<std::shared_ptr<const mcdda::ResultSnapshot>>();
     qRegisterMetaType<mcdda::RunStatus>();
+    qRegisterMetaType<mcdda::IterationInfo>();
 }
 
 RunController::RunController(const Preprocessed& model, QString output_folder, QString stem, QObject* parent)
@@ -94,6 +95,12 @@ void RunController::start()
         snapshot_clock.restart();
         snapshot_unsent = false;
     };
+    QElapsedTimer iteration_clock;
+    simulation->set_iteration_observer([&](const IterationInfo& info) {
+        if (iteration_clock.isValid() && iteration_clock.elapsed() < progress_ms_) return;
+        iteration_clock.restart();
+        emit iterating(info);
+    });
     auto on_step = [&](const StepReport& report) {
         RunProgress info;
         info.step = report.step;

@@ -60,6 +60,9 @@ public slots:
 signals:
     void progress(const mcdda::gui::RunProgress& progress);
     void snapshot(std::shared_ptr<const mcdda::ResultSnapshot> snapshot);
+    /// Inside a step: its equilibrium iterations so far (throttled like progress), so that a
+    /// long step is not silent (issue 13, item 2).
+    void iterating(const mcdda::IterationInfo& info);
     /// The run ended; `message` says why unless it completed. Results up to the last
     /// accepted step are kept (last snapshot sent, files written).
     void finished(mcdda::RunStatus status, const QString& message);
@@ -87,3 +90,4 @@ void register_run_types();
 Q_DECLARE_METATYPE(mcdda::gui::RunProgress)
 Q_DECLARE_METATYPE(std::shared_ptr<const mcdda::ResultSnapshot>)
 Q_DECLARE_METATYPE(mcdda::RunStatus)
+Q_DECLARE_METATYPE(mcdda::IterationInfo)

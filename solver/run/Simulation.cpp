@@ -314,6 +314,13 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
             return true;
         }
         if (k == 0) first_linear = eval.yielding == 0;
+        if (iteration_observer_) {
+            ++iterating_.iteration;
+            iterating_.out_of_balance = norm / scale;
+            iterating_.tolerance = tolerance;
+            iterating_.yielding = eval.yielding;
+            iteration_observer_(iterating_);
+        }
         // Diverging: non-finite, or growing far beyond the start once the tangent has had a few
         // corrections (a contact change alone may start from a large out-of-balance force).
         if (k == 0) first_norm = norm;
@@ -1009,6 +1016,8 @@ StepReport Simulation::advance() {
     const auto start = Clock::now();
     StepReport report;
     if (finished()) throw std::runtime_error("the analysis has run all its steps");
+    iterating_ = IterationInfo{};
+    iterating_.step = state_.step + 1;
     try {
         if (stage_complete()) begin_stage(stage_ + 1);
         report = model_.analysis.kind == AnalysisSettings::Kind::Static ? advance_static() : advance_dynamic();
@@ -1042,6 +1051,7 @@ StepReport Simulation::advance_static() {
         const double remaining = 1.0 - state_.step_fraction;
         increment = std::min(increment, remaining);
         const double to = from + increment;
+        iterating_.load_fraction = to - state_.step;
         const auto t0 = Clock::now();
         std::vector<Contact> contacts = detect_contacts(element_nodes(), mesh_, topology_, 2.5 * displacement_limit_,
                                                         state_.contacts, Eigen::VectorXd(), contact_tolerance_);

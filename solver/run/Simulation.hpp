@@ -31,6 +31,7 @@
 
 #include <Eigen/Dense>
 
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -108,6 +109,16 @@ struct StepReport {
     std::vector<std::string> events;  ///< things a user must hear of: a stage begun, a bolt broken
 };
 
+/// Where a step stands while it iterates: what a long step shows instead of silence.
+struct IterationInfo {
+    int step = 0;                 ///< the step being computed (accepted steps + 1)
+    int iteration = 0;            ///< equilibrium iterations of this step so far (all tries)
+    double out_of_balance = 0.0;  ///< largest out-of-balance nodal force over the force scale
+    double tolerance = 0.0;       ///< what out_of_balance must fall below
+    int yielding = 0;             ///< integration points yielding at this iteration
+    double load_fraction = 1.0;   ///< end of the load increment tried, as a fraction of the step
+};
+
 /// How each construction stage went (a model without stages has one).
 struct StageRecord {
     std::string name;
@@ -131,6 +142,12 @@ public:
     /// floor, a singular matrix, a diverging solution); the state then stays that of the last
     /// accepted step.
     StepReport advance();
+
+    /// Called at every equilibrium iteration, on the thread that runs advance(): a progress
+    /// report inside long steps (keep it cheap; throttle in the observer).
+    void set_iteration_observer(std::function<void(const IterationInfo&)> observer) {
+        iteration_observer_ = std::move(observer);
+    }
 
     /// True once the last stage has run its steps (or reached its target ratio).
     bool finished() const;
@@ -276,6 +293,8 @@ private:
     bool pattern_stale_ = false;        ///< the equation numbering changed (a stage began)
     std::vector<StageRecord> stages_;
     std::vector<std::string> pending_events_;
+    std::function<void(const IterationInfo&)> iteration_observer_;
+    IterationInfo iterating_;  ///< the step in progress, for the observer
 };
 
 /// Initial stress of every integration point from the model's in-situ stress (tension positive).

@@ -14,6 +14,7 @@
 #include <QFile>
 #include <QGuiApplication>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QtTest>
@@ -61,6 +62,7 @@ private slots:
     void stopKeepsResultsAndGuiResponsive();
     void closingStopsTheRun();
     void salenconOpenMeshRunShowsPlasticZone();
+    void longStepShowsItsIterations();
 };
 
 void RunTest::initTestCase()
@@ -309,6 +311,37 @@ void RunTest::salenconOpenMeshRunShowsPlasticZone()
     const QString text = window.cursorText();
     const double sigma3 = text.section(QStringLiteral("= "), -1).section(QLatin1Char(' '), 0, 0).toDouble();
     QVERIFY2(sigma3 < -9.0 && sigma3 > -12.0, qPrintable(text));
+}
+
+// Issue 13, item 2: inside a long step (Salençon's excavation, dozens of equilibrium
+// iterations) the status bar tells the iterations and the out-of-balance force.
+void RunTest::longStepShowsItsIterations()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    const QString path = QStringLiteral(MCDDA_EXAMPLES_DIR "/salencon-tunnel.json");
+    auto model = std::make_shared<const Preprocessed>(
+        preprocess_file(path.toStdString(), {"/analysis/steps=1", "/mesh/local/0/size=0.15"}));
+    QVERIFY(model->ok);
+    MainWindow window;
+    window.showPreprocessed(model, path);
+    window.setRunOutputFolder(out.path());
+    window.setRunThrottle(0, 1000);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy iterating(&window, &MainWindow::runIterating);
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    QTRY_VERIFY_WITH_TIMEOUT(window.statusBar()->currentMessage().contains(QStringLiteral("equilibrium iteration")), 60000);
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Step 1: equilibrium iteration")),
+             qPrintable(window.statusBar()->currentMessage()));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 120000);
+    QVERIFY(iterating.count() >= 5);
+    const auto last = iterating.last().at(0).value<IterationInfo>();
+    QCOMPARE(last.step, 1);
+    QVERIFY(last.iteration >= 5);
+    QVERIFY(last.yielding > 0);
+    QVERIFY(last.out_of_balance > 0.0);
 }
 
 QTEST_MAIN(RunTest)
