@@ -16,6 +16,11 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QWhatsThis>
+#include <QVBoxLayout>
+#include <QTextBrowser>
+#include <QFile>
+#include <QDialog>
 #include <QScrollBar>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
@@ -192,6 +197,23 @@ void MainWindow::createActions()
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help_menu_ = help;
+    // The documentation is compiled in (resources/mcdda.qrc): it matches the program and needs
+    // no network or installed files.
+    QAction* guide = help->addAction(tr("&User Guide"), this, [this] {
+        showDocument(tr("User Guide"), QStringLiteral(":/docs/desktop.md"));
+    });
+    guide->setObjectName(QStringLiteral("userGuideAction"));
+    guide->setShortcut(QKeySequence::HelpContents);
+    help->addAction(tr("Model &File Format"), this, [this] {
+        showDocument(tr("Model File Format"), QStringLiteral(":/docs/model-format.md"));
+    })->setObjectName(QStringLiteral("modelFormatHelpAction"));
+    help->addAction(tr("&Running and Results"), this, [this] {
+        showDocument(tr("Running and Results"), QStringLiteral(":/docs/running.md"));
+    })->setObjectName(QStringLiteral("runningHelpAction"));
+    QAction* whats_this = QWhatsThis::createAction(this);
+    whats_this->setObjectName(QStringLiteral("whatsThisAction"));
+    help->addAction(whats_this);
+    help->addSeparator();
     help->addAction(tr("&About mcdda"), this, [this] {
         QMessageBox::about(this, tr("About mcdda"),
                            tr("<b>mcdda %1</b><p>Pre- and post-processor for elastic-plastic "
@@ -200,6 +222,27 @@ void MainWindow::createActions()
                               "to zoom, press F to fit.</p>")
                                .arg(QString::fromLatin1(mcdda::version_string)));
     });
+}
+
+void MainWindow::showDocument(const QString& title, const QString& resource)
+{
+    QFile file(resource);
+    if (!file.open(QIODevice::ReadOnly)) {
+        reportExportError(tr("The document %1 is missing from this build.").arg(resource));
+        return;
+    }
+    auto* dialog = new QDialog(this);
+    dialog->setObjectName(QStringLiteral("helpDialog"));
+    dialog->setWindowTitle(tr("mcdda — %1").arg(title));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    auto* browser = new QTextBrowser(dialog);
+    browser->setObjectName(QStringLiteral("helpBrowser"));
+    browser->setOpenExternalLinks(true);
+    browser->setMarkdown(QString::fromUtf8(file.readAll()));
+    auto* layout = new QVBoxLayout(dialog);
+    layout->addWidget(browser);
+    dialog->resize(760, 640);
+    dialog->show();  // beside the window, not modal: read while working
 }
 
 void MainWindow::createEditActions()
@@ -575,7 +618,16 @@ void MainWindow::refreshResults()
 
 void MainWindow::showStep(const QString& vtu_path)
 {
-    if (isRunning()) return;  // the live picture has priority
+    // While running, an earlier saved step is looked at until the slider is back on the last
+    // one, when the picture follows the run again (issue 13, item 15).
+    if (isRunning()) {
+        looking_back_ = steps_->currentIndex() + 1 < steps_->count();
+        if (!looking_back_) {
+            shown_step_.clear();
+            showResult();
+            return;
+        }
+    }
     shown_step_ = vtu_path;
     showResult();
 }
@@ -900,6 +952,8 @@ bool MainWindow::startRun()
 
     last_snapshot_.reset();
     shown_step_.clear();
+    looking_back_ = false;
+    steps_->clear();
     plot_clock_.invalidate();
     results_stem_ = stem;
     progress_bar_->setRange(0, std::max(1, plannedSteps(scene->model)));
@@ -968,12 +1022,16 @@ void MainWindow::onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot)
 {
     if (!isRunning()) return;  // a late one from a run already joined
     last_snapshot_ = std::move(snapshot);
-    shown_step_.clear();
-    showResult();
-    // The history grows a flushed row per step: re-read it now and then for a live plot
-    // (about once a second, whatever the snapshot rate, so long histories stay cheap).
+    if (!looking_back_) {
+        shown_step_.clear();
+        showResult();
+    }
+    // The history grows a flushed row per step and the collection a step per save: re-read them
+    // now and then for a live plot and a Steps dock to look back with (about once a second,
+    // whatever the snapshot rate, so long histories stay cheap).
     if (!plot_clock_.isValid() || plot_clock_.elapsed() >= 1000) {
         plot_->load(QDir(running_folder_).absoluteFilePath(QStringLiteral("history.csv")));
+        steps_->load(QDir(running_folder_).absoluteFilePath(results_stem_ + QStringLiteral(".pvd")), looking_back_);
         plot_clock_.restart();
     }
 }
@@ -983,7 +1041,7 @@ void MainWindow::showResult()
     view::ResultOptions options;
     options.field = resultField().toStdString();
     options.deform = deformFactor();
-    if (!shown_step_.isEmpty() && !isRunning())
+    if (!shown_step_.isEmpty() && (!isRunning() || looking_back_))
         view_->setResultFile(shown_step_, options);
     else if (last_snapshot_)
         view_->setResult(last_snapshot_, options);
@@ -993,6 +1051,11 @@ void MainWindow::onRunFinished(RunStatus status, const QString& message)
 {
     const QString folder = running_folder_;
     joinRun();
+    if (looking_back_) {  // the slider goes to the last step below: the picture with it
+        looking_back_ = false;
+        shown_step_.clear();
+        showResult();
+    }
     progress_bar_->setVisible(false);
     const int step = last_snapshot_ ? last_snapshot_->step : 0;
     QString text;

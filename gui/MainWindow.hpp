@@ -119,6 +119,8 @@ public:
     QString resultsPvdPath() const;
     QString resultsHistoryPath() const;
     StepSlider* stepSlider() const { return steps_; }
+    /// The saved step the picture shows (empty: the model, or the run's latest state).
+    QString shownStep() const { return shown_step_; }
     HistoryPlot* historyPlot() const { return plot_; }
 
     /// The File ▸ Export actions without their dialogs; errors go to a message box and give false.
@@ -220,6 +222,8 @@ private:
     void onRunProgress(const RunProgress& progress);
     void onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot);
     void onRunIterating(const IterationInfo& info);
+    /// Shows a document compiled into the program (":/docs/…md") in a window of its own.
+    void showDocument(const QString& title, const QString& resource);
     void onRunFinished(RunStatus status, const QString& message);
     void showResult();
     void log(const QString& line);
@@ -251,6 +255,7 @@ private:
     QString results_folder_;  ///< of the last finished run
     QString results_stem_;
     QString shown_step_;      ///< saved step chosen in the slider; empty = the last snapshot
+    bool looking_back_ = false;  ///< during a run: an earlier saved step is shown, not the live state
     QProgressBar* progress_bar_ = nullptr;
     QThread* run_thread_ = nullptr;
     RunController* controller_ = nullptr;

@@ -30,12 +30,13 @@ StepSlider::StepSlider(QWidget* parent) : QWidget(parent)
     clear();
 }
 
-int StepSlider::load(const QString& pvd_path)
+int StepSlider::load(const QString& pvd_path, bool keep_current)
 {
+    const int kept = currentIndex();
     entries_ = QFileInfo::exists(pvd_path) ? read_pvd(pvd_path) : std::vector<PvdEntry>{};
     const QSignalBlocker block(slider_);
     slider_->setRange(0, std::max(0, count() - 1));
-    slider_->setValue(slider_->maximum());
+    slider_->setValue(keep_current && kept >= 0 ? std::min(kept, slider_->maximum()) : slider_->maximum());
     slider_->setEnabled(count() > 0);
     showLabel();
     return count();

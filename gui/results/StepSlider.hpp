@@ -21,9 +21,10 @@ class StepSlider : public QWidget {
 public:
     explicit StepSlider(QWidget* parent = nullptr);
 
-    /// Reads the .pvd at `path` (again) and moves to its last step without emitting
-    /// stepChosen. An unreadable or missing file leaves no steps. Returns the step count.
-    int load(const QString& pvd_path);
+    /// Reads the .pvd at `path` (again) and moves to its last step, or with `keep_current` stays
+    /// on the step shown, without emitting stepChosen. An unreadable or missing file leaves no
+    /// steps. Returns the step count.
+    int load(const QString& pvd_path, bool keep_current = false);
     /// Forgets the steps.
     void clear();
 

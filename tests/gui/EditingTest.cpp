@@ -25,6 +25,8 @@
 #include <QCheckBox>
 #include <QLineEdit>
 #include <QApplication>
+#include <QTextBrowser>
+#include <QDialog>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -50,6 +52,7 @@ private slots:
     void stagesAndBoltsShownInTheTree();
     void undoFromTheCoordinateField();
     void viewMenuMessagesAndStepLabel();
+    void helpShowsTheUserGuide();
 };
 
 void EditingTest::initTestCase()
@@ -452,6 +455,31 @@ void EditingTest::viewMenuMessagesAndStepLabel()
     auto* label = slider.findChild<QLabel*>(QStringLiteral("stepLabel"));
     QVERIFY(label);
     QVERIFY2(label->text().startsWith(QStringLiteral("step 10 (2 of 2, t = 2.5 s)")), qPrintable(label->text()));
+}
+
+// Issue 13, item 12: F1 opens the user guide (compiled into the program), What's This is in
+// the Help menu.
+void EditingTest::helpShowsTheUserGuide()
+{
+    MainWindow window;
+    window.show();
+    QAction* guide = window.findChild<QAction*>(QStringLiteral("userGuideAction"));
+    QVERIFY(guide);
+    QVERIFY(guide->shortcuts().contains(QKeySequence(Qt::Key_F1)));
+    QVERIFY(window.findChild<QAction*>(QStringLiteral("whatsThisAction")));
+    guide->trigger();
+    auto* dialog = window.findChild<QDialog*>(QStringLiteral("helpDialog"));
+    QVERIFY(dialog && dialog->isVisible());
+    auto* browser = dialog->findChild<QTextBrowser*>(QStringLiteral("helpBrowser"));
+    QVERIFY(browser);
+    const QString text = browser->toPlainText();
+    QVERIFY2(text.contains(QStringLiteral("Run ▸ Run")) && text.contains(QStringLiteral("F5")), qPrintable(text.left(400)));
+    window.findChild<QAction*>(QStringLiteral("modelFormatHelpAction"))->trigger();
+    bool format_shown = false;
+    for (auto* d : window.findChildren<QDialog*>(QStringLiteral("helpDialog")))
+        if (auto* b = d->findChild<QTextBrowser*>(QStringLiteral("helpBrowser")))
+            format_shown = format_shown || b->toPlainText().contains(QStringLiteral("Construction stages"));
+    QVERIFY(format_shown);
 }
 
 QTEST_MAIN(EditingTest)

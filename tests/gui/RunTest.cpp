@@ -5,6 +5,7 @@
 #include "MainWindow.hpp"
 #include "document/ModelDocument.hpp"
 #include "results/HistoryPlot.hpp"
+#include "results/StepSlider.hpp"
 #include "run/RunController.hpp"
 #include "widgets/ModelView.hpp"
 
@@ -63,6 +64,7 @@ private slots:
     void closingStopsTheRun();
     void salenconOpenMeshRunShowsPlasticZone();
     void longStepShowsItsIterations();
+    void lookBackWhileRunning();
 };
 
 void RunTest::initTestCase()
@@ -342,6 +344,35 @@ void RunTest::longStepShowsItsIterations()
     QVERIFY(last.iteration >= 5);
     QVERIFY(last.yielding > 0);
     QVERIFY(last.out_of_balance > 0.0);
+}
+
+// Issue 13, item 15: during a run the Steps dock lists the steps saved so far; choosing an
+// earlier one shows it and keeps it shown while the run goes on; the last one follows the run.
+void RunTest::lookBackWhileRunning()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    MainWindow window;
+    window.showPreprocessed(incline_with({"/analysis/steps=100000", "/analysis/output_every=2"}), incline);
+    window.setRunOutputFolder(out.path());
+    window.setRunThrottle(0, 50);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    gui::StepSlider* steps = window.stepSlider();
+    QTRY_VERIFY_WITH_TIMEOUT(steps->count() >= 3, 60000);
+    QVERIFY(window.isRunning());
+    steps->setCurrentIndex(0);
+    QVERIFY2(window.shownStep().endsWith(QStringLiteral("_000000.vtu")), qPrintable(window.shownStep()));
+    const int seen = steps->count();
+    QTRY_VERIFY_WITH_TIMEOUT(steps->count() > seen, 60000);  // the list grows, the choice stays
+    QCOMPARE(steps->currentIndex(), 0);
+    QVERIFY(window.shownStep().endsWith(QStringLiteral("_000000.vtu")));
+    steps->setCurrentIndex(steps->count() - 1);  // back to the newest: the run is followed
+    QVERIFY(window.shownStep().isEmpty());
+    window.stopRun();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
 }
 
 QTEST_MAIN(RunTest)
