@@ -1,36 +1,25 @@
 #pragma once
 /// \file MainWindow.hpp
-/// The desktop program's main window: opens a model file, pre-processes it (read, check, cut,
-/// mesh) and shows the result; messages go to a dock, cursor position and mesh figures to the
-/// status bar. Run ▸ Run analyses the model on a worker thread (RunController) and shows the
-/// latest result snapshot live, coloured by the field chosen in the Run toolbar and drawn
-/// deformed by its scale factor. After a run the Steps dock replays the saved steps, the Plots
-/// dock plots the history, and File ▸ Export writes the picture, the steps or the history.
+/// The desktop program's main window: the wiring between the model document, the view, the docks
+/// and menus, and the logic that runs without widgets (session/: RunSession runs the analysis on
+/// a worker thread, PreprocessScheduler cuts and meshes after edits). It opens a model file,
+/// pre-processes it and shows it; Run ▸ Run shows the latest result snapshot live, coloured as
+/// the Results toolbar says. After a run the Steps dock replays the saved steps, the Plots dock
+/// plots the history, and File ▸ Export writes the picture, the steps or the history.
 
 #include "Preprocess.hpp"
 #include "document/ModelItems.hpp"
-#include "run/ResultSnapshot.hpp"
-#include "run/RunController.hpp"
-#include "run/RunOutput.hpp"
+#include "session/RunController.hpp"
+#include "view/ResultSnapshot.hpp"
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QString>
 
 #include <memory>
 #include <vector>
 
-class QAction;
-class QMenu;
-class QLabel;
-class QPlainTextEdit;
 class QDockWidget;
-class QComboBox;
-class QDoubleSpinBox;
-class QProgressBar;
-class QThread;
-template <typename T>
-class QFutureWatcher;
+class QMenu;
 
 namespace mcdda::gui {
 
@@ -43,6 +32,16 @@ class PropertyEditor;
 class SelectTool;
 class EditingTools;
 class ModelTree;
+class MessageLog;
+class PreprocessScheduler;
+class RunSession;
+class ResultToolBar;
+class RecentFilesMenu;
+class ExportMenu;
+class ViewMenu;
+class RunMenu;
+class WindowStatusBar;
+class QueryPlot;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -69,15 +68,15 @@ public:
     ModelDocument* document() const { return document_; }
     /// The Model dock's tree.
     ModelTree* modelTree() const { return tree_; }
-    /// The Select tool (always there; active when no drawing tool is).
-    SelectTool* selectionTool() const;
+    /// The Edit menu's tools, their options and the selection.
+    EditingTools* editingTools() const { return editing_; }
     /// The selected item or vertex (invalid when none).
     ItemRef selection() const;
     /// The Properties dock's forms.
     PropertyEditor* propertyEditor() const { return property_editor_; }
     /// Whether the document is being pre-processed again after an edit (on the thread pool;
     /// the view shows the previous picture meanwhile).
-    bool isPreprocessing() const { return requested_ != 0; }
+    bool isPreprocessing() const;
     /// The active drawing tool (null for Select).
     DrawTool* activeTool() const;
     /// Grid snapping of the drawing tools (View ▸ Snap to Grid) and its spacing (m).
@@ -100,10 +99,10 @@ public:
     QString cursorText() const;
 
     /// Whether an analysis is running (possibly paused).
-    bool isRunning() const { return controller_ != nullptr; }
+    bool isRunning() const;
     /// Folder the next run writes its files to; empty = the default, <model>-results next to
     /// the model file.
-    void setRunOutputFolder(const QString& folder) { output_folder_ = folder; }
+    void setRunOutputFolder(const QString& folder);
     /// The folder the current or next run writes to.
     QString runOutputFolder() const;
     /// Minimum intervals between progress and snapshot updates of the next runs (ms).
@@ -115,13 +114,18 @@ public:
     double deformFactor() const;
     void setDeformFactor(double factor);
     /// The results folder of the last finished run (empty before one), and its files.
-    QString resultsFolder() const { return results_folder_; }
+    QString resultsFolder() const;
     QString resultsPvdPath() const;
     QString resultsHistoryPath() const;
     StepSlider* stepSlider() const { return steps_; }
     /// The saved step the picture shows (empty: the model, or the run's latest state).
     QString shownStep() const { return shown_step_; }
     HistoryPlot* historyPlot() const { return plot_; }
+    /// The Query dock: the field along a line drawn with Edit ▸ Query Line.
+    QueryPlot* queryPlot() const { return query_; }
+    /// The run and its files, and the background pre-processing (the window's logic).
+    RunSession* runSession() const { return session_; }
+    PreprocessScheduler* preprocessScheduler() const { return scheduler_; }
 
     /// The File ▸ Export actions without their dialogs; errors go to a message box and give false.
     bool exportPng(const QString& path);
@@ -135,25 +139,10 @@ public slots:
     bool save();
     /// File ▸ Save As: asks for a file.
     bool saveAsDialog();
-    /// Edit ▸ tools: select/move (and navigate), drawing regions, drawing joints.
-    void selectTool();
     /// Makes Select the tool and selects `ref` in the view and the tree.
     void selectItem(const ItemRef& ref);
-    /// Edit ▸ Delete: deletes `ref` (undoable); false with a message when it cannot go.
-    bool deleteSelection(const ItemRef& ref);
+    /// Edit ▸ Draw Region (the other tools: editingTools()).
     void drawRegionTool();
-    void drawJointTool();
-    /// Edit ▸ tools for supports, loads and measurement points: Fixed Point (click), Roller
-    /// (two clicks; fixed directions from the Tool Options bar), Point Load (click; force from
-    /// the bar, default (0, −1) kN/m), Edge Pressure (two clicks; default 100 kPa), Measurement
-    /// Point (click; named "point N").
-    void fixedPointTool();
-    void rollerTool();
-    void pointLoadTool();
-    void edgePressureTool();
-    void measurementPointTool();
-    /// Edit ▸ Add Joint Set: asks for a joint set and adds it (undoable).
-    void addJointSetDialog();
     /// The Tool Options' coordinate field: "x, y" (metres) places a vertex there as a click
     /// does; empty text finishes the shape (as Enter in the view). False when no drawing tool
     /// is active or the text is not two numbers.
@@ -186,16 +175,17 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    void createDocks();
+    /// A dock of `widget`; a tab behind `tab_of` when given.
+    QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area,
+                         QDockWidget* tab_of = nullptr);
     void createActions();
-    void createEditActions();
-    /// Pre-processes the document on the thread pool (a newer request supersedes it).
-    void startPreprocess();
-    void onPreprocessed();
-    void createModelDock();
+    void createRunActions();
+    void connectRunSession();
     void refreshModelTree();
-    void refreshRecentMenu();
-    void addRecentFile(const QString& path);
     void updateTitle();
+    /// The model file shown (empty: none): Reload, the title, the results folder follow it.
+    void setModelFile(const QString& path);
     /// The document changed: pre-processes it again and shows it, keeping the camera.
     void onDocumentChanged();
     /// Shows a pre-processed model; `interactive` reports failures in a message box.
@@ -205,85 +195,50 @@ private:
     bool maybeSave();
     void onSelectionChanged(const ItemRef& ref);
     void applySnap();
-    void createDock();
-    void createStatusBar();
-    void createResultDocks();
-    void createExportActions(QMenu* file);
-    /// Reads the results folder again into the step slider and the plot.
-    void refreshResults();
     void showStep(const QString& vtu_path);
     void reportExportError(const QString& message);
-    void applySceneOptions();
     void showCursor(const QPointF& model_pos);
     void reportFailure(const Preprocessed& p, const QString& source);
     bool load(const QString& path, bool keep_camera);
-    void createRunActions();
     void updateRunActions();
-    void onRunProgress(const RunProgress& progress);
-    void onRunSnapshot(std::shared_ptr<const ResultSnapshot> snapshot);
-    void onRunIterating(const IterationInfo& info);
-    /// Shows a document compiled into the program (":/docs/…md") in a window of its own.
-    void showDocument(const QString& title, const QString& resource);
     void onRunFinished(RunStatus status, const QString& message);
+    /// Draws the result chosen: a saved step, or the run's latest snapshot.
     void showResult();
     void log(const QString& line);
-    /// Stops the run if one is going on and joins its thread.
-    void joinRun();
 
     ModelView* view_ = nullptr;
-    QPlainTextEdit* messages_ = nullptr;
-    QDockWidget* dock_ = nullptr;
-    QLabel* cursor_label_ = nullptr;
-    QLabel* statistics_label_ = nullptr;
-    QAction* reload_action_ = nullptr;
-    QAction* show_mesh_ = nullptr;
-    QAction* show_joints_ = nullptr;
-    QAction* show_supports_ = nullptr;
-    QAction* show_loads_ = nullptr;
-    QAction* show_points_ = nullptr;
-    QAction* show_legend_ = nullptr;
-    QAction* run_action_ = nullptr;
-    QAction* mesh_action_ = nullptr;
-    QAction* pause_action_ = nullptr;
-    QAction* stop_action_ = nullptr;
-    QComboBox* field_box_ = nullptr;
-    QDoubleSpinBox* deform_box_ = nullptr;
+    ModelDocument* document_ = nullptr;
+    PreprocessScheduler* scheduler_ = nullptr;
+    RunSession* session_ = nullptr;
+    EditingTools* editing_ = nullptr;  ///< tools, tool options, selection
+    MessageLog* messages_ = nullptr;
+    ModelTree* tree_ = nullptr;
+    PropertyEditor* property_editor_ = nullptr;
     StepSlider* steps_ = nullptr;
     HistoryPlot* plot_ = nullptr;
+    QDockWidget* messages_dock_ = nullptr;
+    QDockWidget* model_dock_ = nullptr;
     QDockWidget* steps_dock_ = nullptr;
     QDockWidget* plot_dock_ = nullptr;
-    QString results_folder_;  ///< of the last finished run
-    QString results_stem_;
-    QString shown_step_;      ///< saved step chosen in the slider; empty = the last snapshot
+    QDockWidget* query_dock_ = nullptr;
+    QueryPlot* query_ = nullptr;
+    QDockWidget* property_dock_ = nullptr;
+    WindowStatusBar* status_bar_ = nullptr;
+    QAction* reload_action_ = nullptr;
+    RecentFilesMenu* recent_menu_ = nullptr;
+    ExportMenu* export_menu_ = nullptr;
+    ViewMenu* view_menu_ = nullptr;
+    RunMenu* run_menu_ = nullptr;
+    QMenu* help_menu_ = nullptr;
+    ResultToolBar* result_bar_ = nullptr;
+    QString shown_step_;         ///< saved step chosen in the slider; empty = the last snapshot
     bool looking_back_ = false;  ///< during a run: an earlier saved step is shown, not the live state
-    QProgressBar* progress_bar_ = nullptr;
-    QThread* run_thread_ = nullptr;
-    RunController* controller_ = nullptr;
-    std::shared_ptr<const ResultSnapshot> last_snapshot_;
-    QElapsedTimer plot_clock_;  ///< since the plot last re-read the running history
-    QString output_folder_;  ///< chosen by the user; empty = default
-    QString running_folder_;  ///< of the current run
-    int progress_ms_ = 100, snapshot_ms_ = 250;
     QString path_;
     QString last_folder_;
-    ModelDocument* document_ = nullptr;
     bool syncing_ = false;  ///< the document is being set from an already pre-processed model
     bool ask_to_save_ = true;
     bool loading_ = false;
     bool close_after_load_ = false;
-    ModelTree* tree_ = nullptr;
-    EditingTools* editing_ = nullptr;  ///< tools, tool options, selection
-
-    QDockWidget* model_dock_ = nullptr;
-    QMenu* recent_menu_ = nullptr;
-    QMenu* help_menu_ = nullptr;
-    QAction* snap_action_ = nullptr;
-    PropertyEditor* property_editor_ = nullptr;
-    QDockWidget* property_dock_ = nullptr;
-    QFutureWatcher<std::shared_ptr<Preprocessed>>* preprocess_ = nullptr;
-    unsigned long generation_ = 0;  ///< counts model changes
-    unsigned long requested_ = 0;   ///< generation waiting for its picture; 0 = none
-    unsigned long running_ = 0;     ///< generation being pre-processed
     double grid_spacing_ = 0.5;
 };
 

@@ -14,6 +14,8 @@ packages=(
   libgtest-dev libgmock-dev
   qt6-base-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools libqt6opengl6-dev
   qt6-charts-dev qt6-svg-dev libgl1-mesa-dev
+  # Qt's own German texts: Strg/Entf in shortcuts, Abbrechen on dialog buttons.
+  qt6-translations-l10n
   libvtk9-dev
   xvfb xauth mesa-utils libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
 )

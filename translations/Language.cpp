@@ -47,6 +47,8 @@ Installed install_translations(const QLocale& locale, QObject* owner)
             break;
         }
     if (!installed.mcdda) delete own;
+    // Numbers in forms and messages as the language writes them (a decimal comma in German).
+    if (installed.mcdda) QLocale::setDefault(locale);
     return installed;
 }
 

@@ -128,220 +128,385 @@
 <context>
     <name>mcdda::gui::EditingTools</name>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="119"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="120"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="124"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="131"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="133"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="134"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="146"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="137"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="138"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="150"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="140"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="141"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="153"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="144"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="156"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="157"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="146"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="158"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="147"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="159"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="161"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="150"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="162"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="164"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="153"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="165"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="155"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="167"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="156"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="159"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="171"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="164"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="176"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="167"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="179"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="181"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="178"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="185"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="197"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="200"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="201"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="202"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="203"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="205"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="217"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="208"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="218"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="218"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="207"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="219"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="208"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="210"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="222"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="212"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="224"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="214"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="219"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="231"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="222"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="235"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="265"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="277"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="280"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="292"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="345"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::ExportMenu</name>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="13"/>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="15"/>
+        <source>&amp;Picture (PNG)...</source>
+        <translation>&amp;Bild (PNG)...</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="17"/>
+        <source>Export picture</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="17"/>
+        <source>PNG pictures (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="22"/>
+        <source>Save the picture of the view as a PNG file</source>
+        <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="23"/>
+        <source>Saved &amp;Steps (PVD/VTU)...</source>
+        <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="24"/>
+        <source>Export saved steps to</source>
+        <translation>Gespeicherte Zeitschritte exportieren nach</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="28"/>
+        <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
+        <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="29"/>
+        <source>&amp;History (CSV)...</source>
+        <translation>&amp;Verlauf (CSV)...</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="31"/>
+        <source>Export history</source>
+        <translation>Verlauf exportieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="31"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="35"/>
+        <source>Copy the run&apos;s history of loads and measured displacements</source>
+        <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="45"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="78"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="53"/>
+        <source>There are no saved steps yet: run the model first.</source>
+        <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/results/ExportMenu.cpp" line="62"/>
+        <source>Copied %n file(s) to %1</source>
+        <translation>
+            <numerusform>%n Datei nach %1 kopiert</numerusform>
+            <numerusform>%n Dateien nach %1 kopiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/results/ExportMenu.cpp" line="70"/>
+        <source>There is no history yet: run the model first.</source>
+        <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::HelpMenu</name>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="26"/>
+        <source>Help</source>
+        <translation>Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="26"/>
+        <source>The document %1 is missing from this build.</source>
+        <translation>Das Dokument %1 fehlt in diesem Programm.</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="31"/>
+        <source>mcdda — %1</source>
+        <translation>mcdda — %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="47"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="48"/>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="49"/>
+        <source>User Guide</source>
+        <translation>Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="53"/>
+        <source>Model &amp;File Format</source>
+        <translation>&amp;Modelldateiformat</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="54"/>
+        <source>Model File Format</source>
+        <translation>Modelldateiformat</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="56"/>
+        <source>&amp;Running and Results</source>
+        <translation>&amp;Berechnung und Ergebnisse</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="57"/>
+        <source>Running and Results</source>
+        <translation>Berechnung und Ergebnisse</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="63"/>
+        <source>&amp;About mcdda</source>
+        <translation>Ü&amp;ber mcdda</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="64"/>
+        <source>About mcdda</source>
+        <translation>Über mcdda</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/HelpMenu.cpp" line="65"/>
+        <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -541,265 +706,265 @@
 <context>
     <name>mcdda::gui::LoadForm</name>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="73"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="72"/>
         <source>Load tables</source>
         <translation>Lasttabellen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="82"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="81"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="85"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="84"/>
         <source>Delete</source>
         <translation>Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="92"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="91"/>
         <source>Table</source>
         <translation>Tabelle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="97"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="96"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="100"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="99"/>
         <source>Step number</source>
         <translation>Schrittnummer</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="101"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="100"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="103"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="102"/>
         <source>Variable</source>
         <translation>Veränderliche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="104"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="103"/>
         <source>Extrapolate (else hold the last factor)</source>
         <translation>Extrapolieren (sonst letzten Faktor halten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="106"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="105"/>
         <source>Beyond the last point, continue the last segment&apos;s slope</source>
         <translation>Nach dem letzten Punkt die Steigung des letzten Abschnitts fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="116"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="115"/>
         <source>Add Row</source>
         <translation>Zeile hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="119"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="118"/>
         <source>Remove Row</source>
         <translation>Zeile entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="128"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="164"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="186"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="127"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="163"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="185"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="141"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="140"/>
         <source>Point loads and edge pressures</source>
         <translation>Punktlasten und Kantendrücke</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="150"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="149"/>
         <source>Load</source>
         <translation>Last</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="151"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="153"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="150"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="152"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="152"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="151"/>
         <source>Force fx</source>
         <translation>Kraft fx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="154"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="153"/>
         <source>Force fy</source>
         <translation>Kraft fy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="155"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="154"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="156"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="155"/>
         <source>Normal pressure; positive pushes into the material</source>
         <translation>Normaldruck; positiv drückt in das Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="157"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="156"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="162"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="161"/>
         <source>The table whose factor multiplies the load; constant = factor 1</source>
         <translation>Die Tabelle, deren Faktor die Last multipliziert; konstant = Faktor 1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="163"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="162"/>
         <source>Load table</source>
         <translation>Lasttabelle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="177"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="176"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="179"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="181"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="178"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="180"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="180"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="179"/>
         <source>gx</source>
         <translation>gx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="182"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="181"/>
         <source>gy</source>
         <translation>gy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="183"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="182"/>
         <source>Standard (0, −9.81)</source>
         <translation>Standard (0, −9,81)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="205"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="204"/>
         <source>Time [s]</source>
         <translation>Zeit [s]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="205"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="204"/>
         <source>Step [–]</source>
         <translation>Schritt [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="205"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="204"/>
         <source>Factor [–]</source>
         <translation>Faktor [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="217"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="216"/>
         <source>constant</source>
         <translation>konstant</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="219"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="218"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="226"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="225"/>
         <source>Point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="227"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="226"/>
         <source>Edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="360"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="359"/>
         <source>Not applied: row %1: %2 &quot;%3&quot; is not a number</source>
         <translation>Nicht übernommen: Zeile %1: %2 „%3“ ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="362"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="361"/>
         <source>abscissa</source>
         <translation>Abszisse</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="362"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="361"/>
         <source>factor</source>
         <translation>Faktor</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="374"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="483"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="499"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="373"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="482"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="498"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="380"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="379"/>
         <source>Change load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="381"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="486"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="504"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="380"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="485"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="503"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="401"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="400"/>
         <source>Not added: %1</source>
         <translation>Nicht hinzugefügt: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="406"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="405"/>
         <source>Add load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="408"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="407"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="421"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="420"/>
         <source>Not deleted: load table &quot;%1&quot; is used by point load &quot;%2&quot;</source>
         <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Punktlast „%2“ verwendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="428"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="427"/>
         <source>Not deleted: load table &quot;%1&quot; is used by edge pressure &quot;%2&quot;</source>
         <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Kantendruck „%2“ verwendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="439"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="438"/>
         <source>Delete load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ löschen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="440"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="439"/>
         <source>Deleted &quot;%1&quot;.</source>
         <translation>„%1“ gelöscht.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="467"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="466"/>
         <source>Change point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="480"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="479"/>
         <source>Change edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="503"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="502"/>
         <source>Change gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
@@ -807,566 +972,188 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="111"/>
+        <location filename="../gui/MainWindow.cpp" line="88"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="131"/>
+        <location filename="../gui/MainWindow.cpp" line="145"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="132"/>
+        <location filename="../gui/MainWindow.cpp" line="146"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="135"/>
+        <location filename="../gui/MainWindow.cpp" line="149"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="136"/>
+        <location filename="../gui/MainWindow.cpp" line="150"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="139"/>
+        <location filename="../gui/MainWindow.cpp" line="153"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="140"/>
+        <location filename="../gui/MainWindow.cpp" line="154"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="143"/>
+        <location filename="../gui/MainWindow.cpp" line="157"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="145"/>
-        <source>Recent &amp;Files</source>
-        <translation>&amp;Zuletzt geöffnete Dateien</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="149"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="153"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="154"/>
+        <location filename="../gui/MainWindow.cpp" line="170"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="157"/>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="161"/>
+        <location filename="../gui/MainWindow.cpp" line="181"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="164"/>
-        <source>&amp;View</source>
-        <translation>&amp;Ansicht</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
-        <source>&amp;Fit</source>
-        <translation>&amp;Einpassen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="168"/>
-        <source>Show the whole model</source>
-        <translation>Das ganze Modell zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="178"/>
-        <location filename="../gui/MainWindow.cpp" line="818"/>
-        <source>&amp;Mesh</source>
-        <translation>&amp;Netz</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="178"/>
-        <source>Show the element edges</source>
-        <translation>Die Elementkanten zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="179"/>
-        <source>&amp;Joints</source>
-        <translation>&amp;Klüfte</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="179"/>
-        <source>Show the joint traces</source>
-        <translation>Die Kluftspuren zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="180"/>
-        <source>&amp;Supports</source>
-        <translation>A&amp;uflager</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="180"/>
-        <source>Show fixed points and rollers</source>
-        <translation>Festpunkte und Rollenlager zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="181"/>
-        <source>&amp;Loads</source>
-        <translation>&amp;Lasten</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="181"/>
-        <source>Show point loads and edge pressures</source>
-        <translation>Punktlasten und Kantendrücke zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
-        <source>Measurement &amp;points</source>
-        <translation>&amp;Messpunkte</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
-        <source>Show the measurement points</source>
-        <translation>Die Messpunkte zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="183"/>
-        <source>Le&amp;gend</source>
-        <translation>Le&amp;gende</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="183"/>
-        <source>Show the legend</source>
-        <translation>Die Legende zeigen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="185"/>
-        <source>Snap to &amp;Grid</source>
-        <translation>Am &amp;Raster fangen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="189"/>
-        <source>Drawn points snap to a grid (0.5 m) and to nearby region vertices</source>
-        <translation>Gezeichnete Punkte rasten auf einem Raster (0,5 m) und an nahen Bereichsecken ein</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="198"/>
-        <source>&amp;Help</source>
-        <translation>&amp;Hilfe</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="217"/>
-        <source>&amp;About mcdda</source>
-        <translation>Ü&amp;ber mcdda</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="218"/>
-        <source>About mcdda</source>
-        <translation>Über mcdda</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="219"/>
-        <source>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- and post-processor for elastic-plastic discontinuous deformation analysis.&lt;/p&gt;&lt;p&gt;Drag with the left or middle mouse button to pan, turn the wheel to zoom, press F to fit.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;mcdda %1&lt;/b&gt;&lt;p&gt;Pre- und Postprozessor für die elastisch-plastische diskontinuierliche Deformationsanalyse.&lt;/p&gt;&lt;p&gt;Zum Verschieben mit der linken oder mittleren Maustaste ziehen, zum Zoomen das Mausrad drehen, zum Einpassen F drücken.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="251"/>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="253"/>
-        <source>&amp;Undo</source>
-        <translation>&amp;Rückgängig</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="257"/>
-        <source>&amp;Redo</source>
-        <translation>&amp;Wiederherstellen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="307"/>
+        <location filename="../gui/MainWindow.cpp" line="116"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="386"/>
+        <location filename="../gui/MainWindow.cpp" line="255"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="337"/>
-        <source>&amp;%1 %2</source>
-        <translation>&amp;%1 %2</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="202"/>
-        <source>&amp;User Guide</source>
-        <translation>&amp;Benutzerhandbuch</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="203"/>
-        <source>User Guide</source>
-        <translation>Benutzerhandbuch</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="207"/>
-        <source>Model &amp;File Format</source>
-        <translation>&amp;Modelldateiformat</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="208"/>
-        <source>Model File Format</source>
-        <translation>Modelldateiformat</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="210"/>
-        <source>&amp;Running and Results</source>
-        <translation>&amp;Berechnung und Ergebnisse</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="211"/>
-        <source>Running and Results</source>
-        <translation>Berechnung und Ergebnisse</translation>
-    </message>
-    <message>
         <location filename="../gui/MainWindow.cpp" line="231"/>
-        <source>The document %1 is missing from this build.</source>
-        <translation>Das Dokument %1 fehlt in diesem Programm.</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="236"/>
-        <source>mcdda — %1</source>
-        <translation>mcdda — %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="353"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="355"/>
-        <location filename="../gui/MainWindow.cpp" line="490"/>
+        <location filename="../gui/MainWindow.cpp" line="70"/>
+        <location filename="../gui/MainWindow.cpp" line="233"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="356"/>
+        <location filename="../gui/MainWindow.cpp" line="234"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="363"/>
+        <location filename="../gui/MainWindow.cpp" line="241"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="364"/>
+        <location filename="../gui/MainWindow.cpp" line="242"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="377"/>
+        <location filename="../gui/MainWindow.cpp" line="255"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="396"/>
+        <location filename="../gui/MainWindow.cpp" line="258"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="407"/>
+        <location filename="../gui/MainWindow.cpp" line="269"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="407"/>
+        <location filename="../gui/MainWindow.cpp" line="269"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="426"/>
-        <location filename="../gui/MainWindow.cpp" line="566"/>
-        <location filename="../gui/MainWindow.cpp" line="597"/>
+        <location filename="../gui/MainWindow.cpp" line="289"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="460"/>
+        <location filename="../gui/MainWindow.cpp" line="74"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="499"/>
-        <source>Messages about the model appear here.</source>
-        <translation>Meldungen zum Modell erscheinen hier.</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="500"/>
+        <location filename="../gui/MainWindow.cpp" line="108"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="511"/>
+        <location filename="../gui/MainWindow.cpp" line="119"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="518"/>
+        <location filename="../gui/MainWindow.cpp" line="123"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="527"/>
-        <source>&amp;Export</source>
-        <translation>&amp;Exportieren</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="528"/>
-        <source>&amp;Picture (PNG)...</source>
-        <translation>&amp;Bild (PNG)...</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="529"/>
-        <source>Export picture</source>
-        <translation>Bild exportieren</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="530"/>
-        <source>PNG pictures (*.png)</source>
-        <translation>PNG-Bilder (*.png)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="535"/>
-        <source>Save the picture of the view as a PNG file</source>
-        <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="536"/>
-        <source>Saved &amp;Steps (PVD/VTU)...</source>
-        <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="537"/>
-        <source>Export saved steps to</source>
-        <translation>Gespeicherte Zeitschritte exportieren nach</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="541"/>
-        <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
-        <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="542"/>
-        <source>&amp;History (CSV)...</source>
-        <translation>&amp;Verlauf (CSV)...</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="543"/>
-        <source>Export history</source>
-        <translation>Verlauf exportieren</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="544"/>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV-Dateien (*.csv)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="548"/>
-        <source>Copy the run&apos;s history of loads and measured displacements</source>
-        <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="554"/>
+        <location filename="../gui/MainWindow.cpp" line="322"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="573"/>
-        <source>There are no saved steps yet: run the model first.</source>
-        <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="582"/>
-        <source>Copied %n file(s) to %1</source>
-        <translation>
-            <numerusform>%n Datei nach %1 kopiert</numerusform>
-            <numerusform>%n Dateien nach %1 kopiert</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="589"/>
-        <source>There is no history yet: run the model first.</source>
-        <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="652"/>
-        <source>x = %1 m   y = %2 m</source>
-        <translation>x = %1 m   y = %2 m</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="673"/>
+        <location filename="../gui/MainWindow.cpp" line="350"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="674"/>
+        <location filename="../gui/MainWindow.cpp" line="351"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="751"/>
+        <location filename="../gui/MainWindow.cpp" line="409"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="752"/>
+        <location filename="../gui/MainWindow.cpp" line="410"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="814"/>
-        <location filename="../gui/MainWindow.cpp" line="825"/>
-        <source>&amp;Run</source>
-        <translation>Be&amp;rechnung</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="816"/>
-        <source>Run</source>
-        <translation>Berechnung</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="822"/>
-        <source>Cut the blocks and mesh them in the background (edits do this by themselves); the statistics go to the status bar and the Messages dock</source>
-        <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und unter Meldungen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="829"/>
-        <source>Analyse the model; the picture follows the run</source>
-        <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="830"/>
-        <location filename="../gui/MainWindow.cpp" line="887"/>
-        <source>&amp;Pause</source>
-        <translation>&amp;Pause</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="833"/>
-        <source>Pause or resume the run</source>
-        <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="834"/>
-        <source>&amp;Stop</source>
-        <translation>&amp;Abbrechen</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="838"/>
-        <source>Stop the run after the current step; the results so far are kept</source>
-        <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="840"/>
-        <source>Results &amp;Folder...</source>
-        <translation>Ergebnis&amp;ordner...</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="842"/>
+        <location filename="../gui/MainWindow.cpp" line="448"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="845"/>
-        <source>Choose where runs write their files</source>
-        <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="851"/>
-        <source>Field shown for results</source>
-        <translation>Angezeigtes Ergebnisfeld</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="853"/>
-        <source>Displacement |u|</source>
-        <translation>Verschiebung |u|</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="854"/>
-        <source>Displacement ux</source>
-        <translation>Verschiebung ux</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="855"/>
-        <source>Displacement uy</source>
-        <translation>Verschiebung uy</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="856"/>
-        <source>Stress σxx</source>
-        <translation>Spannung σxx</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="857"/>
-        <source>Stress σyy</source>
-        <translation>Spannung σyy</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="858"/>
-        <source>Stress τxy</source>
-        <translation>Spannung τxy</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="859"/>
-        <source>Principal stress σ1</source>
-        <translation>Hauptspannung σ1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="860"/>
-        <source>Principal stress σ3</source>
-        <translation>Hauptspannung σ3</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="861"/>
-        <source>Plastic state</source>
-        <translation>Plastischer Zustand</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="862"/>
-        <source>Plastic strain</source>
-        <translation>Plastische Dehnung</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="865"/>
-        <source>Deformation ×</source>
-        <translation>Verformung ×</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="870"/>
-        <source>Scale factor of the drawn displacements (0 = undeformed)</source>
-        <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="887"/>
-        <source>Res&amp;ume</source>
-        <translation>&amp;Fortsetzen</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="951"/>
+        <location filename="../gui/MainWindow.cpp" line="501"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1374,139 +1161,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="962"/>
+        <location filename="../gui/MainWindow.cpp" line="525"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="965"/>
+        <location filename="../gui/MainWindow.cpp" line="525"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="976"/>
+        <location filename="../gui/MainWindow.cpp" line="491"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="982"/>
-        <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
-        <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1000"/>
-        <source>Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding</source>
-        <translation>
-            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkt plastifiziert</numerusform>
-            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkte plastifiziert</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="1043"/>
-        <source>Run completed: %n step(s).</source>
-        <translation>
-            <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
-            <numerusform>Berechnung abgeschlossen: %n Zeitschritte.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="1044"/>
-        <source>Run ended but the model is not in equilibrium: %1</source>
-        <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="1045"/>
-        <source>Run stopped after step %1.</source>
-        <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="1046"/>
-        <source>The model collapsed: %1</source>
-        <translation>Das Modell ist kollabiert: %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="1047"/>
-        <source>The run failed: %1</source>
-        <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="1050"/>
+        <location filename="../gui/MainWindow.cpp" line="551"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1058"/>
+        <location filename="../gui/MainWindow.cpp" line="559"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1058"/>
+        <location filename="../gui/MainWindow.cpp" line="559"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="1060"/>
+        <location filename="../gui/MainWindow.cpp" line="560"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="763"/>
-        <source>Model: %1</source>
-        <translation>Modell: %1</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="100"/>
+        <location filename="../gui/MainWindow.cpp" line="129"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="289"/>
+        <location filename="../gui/MainWindow.cpp" line="209"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="692"/>
+        <location filename="../gui/MainWindow.cpp" line="369"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="767"/>
-        <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
-        <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="773"/>
-        <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
-        <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="782"/>
-        <source>Not meshed: %n error(s)</source>
-        <translation>
-            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
-            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="796"/>
-        <source>pre-processing stopped without a message</source>
-        <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="800"/>
-        <source>... and %n more</source>
-        <translation>
-            <numerusform>... und %n weitere</numerusform>
-            <numerusform>... und %n weitere</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="803"/>
+        <location filename="../gui/MainWindow.cpp" line="433"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="804"/>
+        <location filename="../gui/MainWindow.cpp" line="434"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -1637,6 +1347,14 @@
         <location filename="../gui/panels/MeshForm.cpp" line="157"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::MessageLog</name>
+    <message>
+        <location filename="../gui/widgets/MessageLog.cpp" line="12"/>
+        <source>Messages about the model appear here.</source>
+        <translation>Meldungen zum Modell erscheinen hier.</translation>
     </message>
 </context>
 <context>
@@ -1964,366 +1682,622 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="83"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="124"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="82"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="123"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="176"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="83"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="175"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="89"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="92"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="91"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="108"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="107"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="125"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="177"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="124"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="176"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
         <source>Add a material (a copy of the one shown)</source>
         <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="463"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="465"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="462"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
         <source>The region selected in the view or the Model tree is made of this material</source>
         <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="135"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="137"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="138"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="137"/>
         <source>Young&apos;s modulus E</source>
         <translation>Elastizitätsmodul E</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
         <source>Poisson&apos;s ratio ν [–]</source>
         <translation>Querdehnzahl ν [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
         <source>Unit weight γ</source>
         <translation>Wichte γ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="191"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="145"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
         <source>Cohesion c</source>
         <translation>Kohäsion c</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="145"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
         <source>Friction angle φ</source>
         <translation>Reibungswinkel φ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
         <source>Dilation angle ψ</source>
         <translation>Dilatanzwinkel ψ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
         <source>Tensile strength</source>
         <translation>Zugfestigkeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
         <source>Plastic (Mohr–Coulomb)</source>
         <translation>Plastisch (Mohr-Coulomb)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="179"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="178"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="183"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="182"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
         <source>Friction angle φj</source>
         <translation>Reibungswinkel φj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="191"/>
         <source>Cohesion cj</source>
         <translation>Kohäsion cj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
         <source>Tensile strength tj</source>
         <translation>Zugfestigkeit tj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="198"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
         <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
         <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
         <source>Normal stiffness kn</source>
         <translation>Normalsteifigkeit kn</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="198"/>
         <source>Shear stiffness; 0 = automatic</source>
         <translation>Schubsteifigkeit; 0 = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
         <source>Shear stiffness ks</source>
         <translation>Schubsteifigkeit ks</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="221"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="225"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="231"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="231"/>
         <source>Max displacement ratio [–]</source>
         <translation>Max. Verschiebungsverhältnis [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
         <source>Penalty</source>
         <translation>Penalty</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="240"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="239"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="240"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="242"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="320"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="325"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="319"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="324"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="463"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="465"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="462"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="485"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="502"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="484"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="501"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="513"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="523"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="512"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="522"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="548"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="574"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="599"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="625"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="547"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="573"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="598"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="624"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="552"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="578"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="603"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="629"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="551"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="577"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="602"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="628"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::RecentFilesMenu</name>
+    <message>
+        <location filename="../gui/widgets/RecentFilesMenu.cpp" line="15"/>
+        <source>Recent &amp;Files</source>
+        <translation>&amp;Zuletzt geöffnete Dateien</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RecentFilesMenu.cpp" line="40"/>
+        <source>&amp;%1 %2</source>
+        <translation>&amp;%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::ResultToolBar</name>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="9"/>
+        <source>Results</source>
+        <translation>Ergebnisse</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="13"/>
+        <source>Field shown for results</source>
+        <translation>Angezeigtes Ergebnisfeld</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="15"/>
+        <source>Displacement |u|</source>
+        <translation>Verschiebung |u|</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="16"/>
+        <source>Displacement ux</source>
+        <translation>Verschiebung ux</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="17"/>
+        <source>Displacement uy</source>
+        <translation>Verschiebung uy</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="18"/>
+        <source>Stress σxx</source>
+        <translation>Spannung σxx</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="19"/>
+        <source>Stress σyy</source>
+        <translation>Spannung σyy</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="20"/>
+        <source>Stress τxy</source>
+        <translation>Spannung τxy</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="21"/>
+        <source>Principal stress σ1</source>
+        <translation>Hauptspannung σ1</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="22"/>
+        <source>Principal stress σ3</source>
+        <translation>Hauptspannung σ3</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="23"/>
+        <source>Plastic state</source>
+        <translation>Plastischer Zustand</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="24"/>
+        <source>Plastic strain</source>
+        <translation>Plastische Dehnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="28"/>
+        <source>Deformation ×</source>
+        <translation>Verformung ×</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="33"/>
+        <source>Scale factor of the drawn displacements (0 = undeformed)</source>
+        <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::RunMenu</name>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="9"/>
+        <location filename="../gui/widgets/RunMenu.cpp" line="23"/>
+        <source>&amp;Run</source>
+        <translation>Be&amp;rechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="19"/>
+        <source>&amp;Mesh</source>
+        <translation>&amp;Netz</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="20"/>
+        <source>Cut the blocks and mesh them in the background (edits do this by themselves); the statistics go to the status bar and the Messages dock</source>
+        <translation>Blöcke schneiden und im Hintergrund vernetzen (Änderungen tun das von selbst); die Kennzahlen erscheinen in der Statusleiste und unter Meldungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="24"/>
+        <source>Analyse the model; the picture follows the run</source>
+        <translation>Das Modell berechnen; das Bild folgt der Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="26"/>
+        <location filename="../gui/widgets/RunMenu.cpp" line="49"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="27"/>
+        <source>Pause or resume the run</source>
+        <translation>Die Berechnung unterbrechen oder fortsetzen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="28"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="29"/>
+        <source>Stop the run after the current step; the results so far are kept</source>
+        <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="32"/>
+        <source>Results &amp;Folder...</source>
+        <translation>Ergebnis&amp;ordner...</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="33"/>
+        <source>Choose where runs write their files</source>
+        <translation>Wählen, wohin Berechnungen ihre Dateien schreiben</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="38"/>
+        <source>Run</source>
+        <translation>Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/RunMenu.cpp" line="49"/>
+        <source>Res&amp;ume</source>
+        <translation>&amp;Fortsetzen</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::RunMessages</name>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="22"/>
+        <source>Model: %1</source>
+        <translation>Modell: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="26"/>
+        <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
+        <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="43"/>
+        <source>%1 blocks, %2 nodes, %3 triangles</source>
+        <translation>%1 Blöcke, %2 Knoten, %3 Dreiecke</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="48"/>
+        <source>angles: smallest %1°, largest %2°</source>
+        <translation>Winkel: kleinster %1°, größter %2°</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="51"/>
+        <source>areas: smallest %1 m², largest %2 m², total %3 m²</source>
+        <translation>Flächen: kleinste %1 m², größte %2 m², gesamt %3 m²</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="54"/>
+        <source>sharpest block corner: %1°</source>
+        <translation>spitzeste Blockecke: %1°</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="56"/>
+        <source>triangles by smallest angle: %1</source>
+        <translation>Dreiecke nach kleinstem Winkel: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="63"/>
+        <source>Not meshed: %n error(s)</source>
+        <translation>
+            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
+            <numerusform>Nicht vernetzt: %n Fehler</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="66"/>
+        <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
+        <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="79"/>
+        <source>pre-processing stopped without a message</source>
+        <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="88"/>
+        <source>... and %n more</source>
+        <translation>
+            <numerusform>... und %n weitere</numerusform>
+            <numerusform>... und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="94"/>
+        <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
+        <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="109"/>
+        <source>Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding</source>
+        <translation>
+            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkt plastifiziert</numerusform>
+            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkte plastifiziert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="121"/>
+        <source>Run completed: %n step(s).</source>
+        <translation>
+            <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
+            <numerusform>Berechnung abgeschlossen: %n Zeitschritte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="123"/>
+        <source>Run ended but the model is not in equilibrium: %1</source>
+        <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="124"/>
+        <source>Run stopped after step %1.</source>
+        <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="125"/>
+        <source>The model collapsed: %1</source>
+        <translation>Das Modell ist kollabiert: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="126"/>
+        <source>The run failed: %1</source>
+        <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
 </context>
 <context>
@@ -2371,19 +2345,115 @@
         <translation>Zeitschritt:</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="68"/>
+        <location filename="../gui/results/StepSlider.cpp" line="69"/>
         <source>no saved steps</source>
         <translation>keine gespeicherten Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="76"/>
+        <location filename="../gui/results/StepSlider.cpp" line="77"/>
         <source>%1 of %2, t = %3 s</source>
         <translation>%1 von %2, t = %3 s</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="77"/>
+        <location filename="../gui/results/StepSlider.cpp" line="78"/>
         <source>step %1 (%2)</source>
         <translation>Zeitschritt %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::ViewMenu</name>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="11"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="13"/>
+        <source>&amp;Fit</source>
+        <translation>&amp;Einpassen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="16"/>
+        <source>Show the whole model</source>
+        <translation>Das ganze Modell zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="26"/>
+        <source>&amp;Mesh</source>
+        <translation>&amp;Netz</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="26"/>
+        <source>Show the element edges</source>
+        <translation>Die Elementkanten zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="27"/>
+        <source>&amp;Joints</source>
+        <translation>&amp;Klüfte</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="27"/>
+        <source>Show the joint traces</source>
+        <translation>Die Kluftspuren zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="28"/>
+        <source>&amp;Supports</source>
+        <translation>A&amp;uflager</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="28"/>
+        <source>Show fixed points and rollers</source>
+        <translation>Festpunkte und Rollenlager zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="29"/>
+        <source>&amp;Loads</source>
+        <translation>&amp;Lasten</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="29"/>
+        <source>Show point loads and edge pressures</source>
+        <translation>Punktlasten und Kantendrücke zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="30"/>
+        <source>Measurement &amp;points</source>
+        <translation>&amp;Messpunkte</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="30"/>
+        <source>Show the measurement points</source>
+        <translation>Die Messpunkte zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="31"/>
+        <source>Le&amp;gend</source>
+        <translation>Le&amp;gende</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="31"/>
+        <source>Show the legend</source>
+        <translation>Die Legende zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="33"/>
+        <source>Snap to &amp;Grid</source>
+        <translation>Am &amp;Raster fangen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ViewMenu.cpp" line="37"/>
+        <source>Drawn points snap to a grid (0.5 m) and to nearby region vertices</source>
+        <translation>Gezeichnete Punkte rasten auf einem Raster (0,5 m) und an nahen Bereichsecken ein</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::WindowStatusBar</name>
+    <message>
+        <location filename="../gui/widgets/WindowStatusBar.cpp" line="31"/>
+        <source>x = %1 m   y = %2 m</source>
+        <translation>x = %1 m   y = %2 m</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,8 @@
 #include "dialogs/JointSetDialog.hpp"
 
+#include "dialogs/JointSetPreview.hpp"
+#include "model/Defaults.hpp"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -7,19 +10,37 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace mcdda::gui {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
+
+/// The regions' box (xmin, ymin, xmax, ymax); a 10 m square at the origin without regions.
+std::array<double, 4> model_box(const Model& model)
+{
+    std::array<double, 4> box{1e300, 1e300, -1e300, -1e300};
+    for (const Region& r : model.regions)
+        for (const Point2& p : r.boundary)
+            box = {std::min(box[0], p.x), std::min(box[1], p.y), std::max(box[2], p.x), std::max(box[3], p.y)};
+    if (!(box[0] < box[2] && box[1] < box[3])) return {0.0, 0.0, 10.0, 10.0};
+    return box;
 }
+
+/// `v` rounded to millimetres: defaults that read well.
+double to_mm(double v) { return std::round(v * 1e3) / 1e3; }
+
+}  // namespace
 
 JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(parent)
 {
     setWindowTitle(tr("Add Joint Set"));
+    const std::array<double, 4> box = model_box(model);
     auto spin = [this](const QString& name, double min, double max, double value, const QString& suffix) {
         auto* box = new QDoubleSpinBox(this);
         box->setObjectName(name);
@@ -31,17 +52,29 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
     };
     angle_ = spin(QStringLiteral("angleBox"), -180.0, 180.0, 45.0, QStringLiteral(" °"));
     angle_->setToolTip(tr("Direction of the traces, counter-clockwise from the x axis"));
+    name_ = new QLineEdit(tr("set %1").arg(model.joint_sets.size() + 1), this);
+    name_->setObjectName(QStringLiteral("nameEdit"));
+    name_->setToolTip(tr("Name of the set (tree, messages, results)"));
+    // The convention stated where it is typed (issue 13, item 14): engineers think in apparent dip.
+    auto* convention = new QLabel(tr("Apparent dip in the section: the angle of the traces from the horizontal, "
+                                     "counter-clockwise. 0° is horizontal, 90° vertical, 30° rises to the "
+                                     "right, 150° (or −30°) dips 30° to the right."),
+                                  this);
+    convention->setObjectName(QStringLiteral("angleConvention"));
+    convention->setWordWrap(true);
     spacing_ = spin(QStringLiteral("spacingBox"), 0.0, 1e6, 1.0, QStringLiteral(" m"));
     spacing_->setToolTip(tr("Normal distance between neighbouring traces"));
-    origin_x_ = spin(QStringLiteral("originXBox"), -1e9, 1e9, 0.0, QStringLiteral(" m"));
-    origin_y_ = spin(QStringLiteral("originYBox"), -1e9, 1e9, 0.0, QStringLiteral(" m"));
+    // The box's centre: through a model corner a trace would cut a sliver of a block (item 4).
+    origin_x_ = spin(QStringLiteral("originXBox"), -1e9, 1e9, to_mm((box[0] + box[2]) / 2), QStringLiteral(" m"));
+    origin_y_ = spin(QStringLiteral("originYBox"), -1e9, 1e9, to_mm((box[1] + box[3]) / 2), QStringLiteral(" m"));
     use_extent_ = new QCheckBox(tr("Limit to a box"), this);
     use_extent_->setObjectName(QStringLiteral("extentCheck"));
     use_extent_->setToolTip(tr("Without a box the traces cross the whole model"));
     const char* const names[4] = {"xminBox", "yminBox", "xmaxBox", "ymaxBox"};
     auto* extent_row = new QHBoxLayout;
     for (int i = 0; i < 4; ++i) {
-        extent_[i] = spin(QString::fromLatin1(names[i]), -1e9, 1e9, i < 2 ? 0.0 : 10.0, QStringLiteral(" m"));
+        extent_[i] = spin(QString::fromLatin1(names[i]), -1e9, 1e9, to_mm(box[static_cast<std::size_t>(i)]),
+                          QStringLiteral(" m"));
         extent_[i]->setEnabled(false);
         extent_row->addWidget(extent_[i]);
         connect(use_extent_, &QCheckBox::toggled, extent_[i], &QWidget::setEnabled);
@@ -76,7 +109,9 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
     enable_segment_fields(persistence_->value());
 
     auto* form = new QFormLayout;
-    form->addRow(tr("Angle"), angle_);
+    form->addRow(tr("Name"), name_);
+    form->addRow(tr("Angle from horizontal"), angle_);
+    form->addRow(convention);
     form->addRow(tr("Spacing"), spacing_);
     form->addRow(tr("Origin x"), origin_x_);
     form->addRow(tr("Origin y"), origin_y_);
@@ -93,8 +128,22 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &JointSetDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &JointSetDialog::reject);
+    preview_ = new JointSetPreview(model, this);
+    count_ = new QLabel(this);
+    count_->setObjectName(QStringLiteral("traceCount"));
+    auto* columns = new QHBoxLayout;
+    columns->addLayout(form);
+    auto* picture = new QVBoxLayout;
+    picture->addWidget(preview_, 1);
+    picture->addWidget(count_);
+    columns->addLayout(picture, 1);
+    // The preview follows every field.
+    for (QDoubleSpinBox* field : findChildren<QDoubleSpinBox*>())
+        connect(field, &QDoubleSpinBox::valueChanged, this, &JointSetDialog::updatePreview);
+    connect(use_extent_, &QCheckBox::toggled, this, &JointSetDialog::updatePreview);
+    updatePreview();
     auto* layout = new QVBoxLayout(this);
-    layout->addLayout(form);
+    layout->addLayout(columns);
     layout->addWidget(error_);
     layout->addWidget(buttons);
 }
@@ -102,6 +151,7 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
 JointSet JointSetDialog::jointSet() const
 {
     JointSet set;
+    set.name = name_->text().trimmed().toStdString();
     set.angle = angle_->value() * pi / 180.0;
     set.spacing = spacing_->value();
     set.origin = {origin_x_->value(), origin_y_->value()};
@@ -119,6 +169,7 @@ JointSet JointSetDialog::jointSet() const
 
 void JointSetDialog::setJointSet(const JointSet& set)
 {
+    name_->setText(QString::fromStdString(set.name));
     angle_->setValue(set.angle * 180.0 / pi);
     spacing_->setValue(set.spacing);
     origin_x_->setValue(set.origin.x);
@@ -143,6 +194,13 @@ QString JointSetDialog::validationError() const
     if (persistence_->value() < 100.0 && !(trace_length_->value() > 0.0))
         return tr("A persistence below 100 % needs a positive trace length.");
     return {};
+}
+
+void JointSetDialog::updatePreview()
+{
+    const bool usable = validationError().isEmpty();
+    preview_->setJointSet(usable ? jointSet() : JointSet{});
+    count_->setText(usable ? tr("%n trace(s) cut rock", "", preview_->traceCount()) : validationError());
 }
 
 void JointSetDialog::accept()

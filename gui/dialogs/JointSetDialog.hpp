@@ -1,10 +1,12 @@
 #pragma once
 /// \file JointSetDialog.hpp
-/// Edit ▸ Add Joint Set: a family of parallel joints given by its trace angle (°, counter-
-/// clockwise from +x), spacing (m), a point one trace passes through, an optional extent
-/// (default: the model's box), its joint material and its persistence (%): below 100 % each
-/// trace is cut into segments of the trace length (m), the pattern shifted from trace to trace by
-/// the stagger (% of the period). jointSet() gives the entered set.
+/// Edit ▸ Add Joint Set: a named family of parallel joints given by its trace angle (apparent
+/// dip: ° from the horizontal, counter-clockwise, as the dialog says), spacing (m), a point one
+/// trace passes through (default: the middle of the model), an optional extent (default: the
+/// model's box), its joint material and its persistence (%): below 100 % each trace is cut into
+/// segments of the trace length (m), the pattern shifted from trace to trace by the stagger (% of
+/// the period). A preview beside the fields shows the traces where they cut rock, and how many
+/// there are. jointSet() gives the entered set.
 
 #include "model/Model.hpp"
 
@@ -14,8 +16,11 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLineEdit;
 
 namespace mcdda::gui {
+
+class JointSetPreview;
 
 class JointSetDialog : public QDialog {
     Q_OBJECT
@@ -36,7 +41,15 @@ public slots:
     /// Closes the dialog with Accepted when the values are usable, else shows why.
     void accept() override;
 
+    /// The picture of the set (traces where they cut rock).
+    JointSetPreview* preview() const { return preview_; }
+
 private:
+    void updatePreview();
+
+    QLineEdit* name_ = nullptr;
+    JointSetPreview* preview_ = nullptr;
+    QLabel* count_ = nullptr;
     QDoubleSpinBox* angle_ = nullptr;
     QDoubleSpinBox* spacing_ = nullptr;
     QDoubleSpinBox* origin_x_ = nullptr;

@@ -1,5 +1,7 @@
 #include "document/ModelDocument.hpp"
 
+#include <QFileInfo>
+
 #include "document/Commands.hpp"
 #include "geometry/PolygonChecks.hpp"
 #include "io/ModelReader.hpp"
@@ -228,6 +230,14 @@ void ModelDocument::setPath(const QString& path) {
     if (path == path_) return;
     path_ = path;
     emit pathChanged();
+}
+
+QString ModelDocument::displayName() const
+{
+    const QString model_name = QString::fromStdString(model_.name);
+    if (path_.isEmpty()) return model_name.isEmpty() ? tr("Untitled") : model_name;
+    const QString file = QFileInfo(path_).fileName();
+    return model_name.isEmpty() ? file : tr("%1 (%2)").arg(file, model_name);
 }
 
 }  // namespace mcdda::gui

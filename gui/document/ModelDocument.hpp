@@ -29,6 +29,9 @@ public:
     const Model& model() const { return model_; }
     /// The model file; empty for a document never saved.
     QString path() const { return path_; }
+    /// What the window title calls the model: "file.json (model name)", the file or the
+    /// model's name alone, or "Untitled".
+    QString displayName() const;
     QUndoStack* undoStack() { return &undo_; }
     /// True when the model differs from its file (or from the state when it was set).
     bool isModified() const { return !undo_.isClean(); }

@@ -1,5 +1,6 @@
 #include "panels/FormFields.hpp"
 
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLocale>
@@ -33,6 +34,18 @@ double si(const QDoubleSpinBox* box, double original, double factor)
     const QVariant shown = box->property("shown");
     if (shown.isValid() && shown.toDouble() == box->value()) return original;
     return box->value() * factor;
+}
+
+void explain(QWidget* field, const QString& text)
+{
+    field->setToolTip(text);
+    field->setWhatsThis(text);
+}
+
+void zero_is_automatic(QDoubleSpinBox* box)
+{
+    box->setMinimum(0.0);  // below 0 means nothing: the validator refuses it anyway
+    box->setSpecialValueText(QCoreApplication::translate("mcdda::gui::form", "automatic"));
 }
 
 QLabel* status_label(const QString& name, QWidget* parent)

@@ -3,6 +3,8 @@
 /// Small helpers shared by the Properties dock's forms (PropertyEditor, LoadForm, MeshForm):
 /// number fields with their unit, exact round trips of untouched values, status lines.
 
+#include "model/Defaults.hpp"
+
 #include <QString>
 
 #include <string>
@@ -13,8 +15,8 @@ class QWidget;
 
 namespace mcdda::gui::form {
 
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi / 180.0;
+using mcdda::pi;
+constexpr double deg = mcdda::degree;
 
 inline QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 
@@ -28,6 +30,12 @@ void display(QDoubleSpinBox* box, double value);
 
 /// The field's value converted to SI by `factor`, or `original` when the field is untouched.
 double si(const QDoubleSpinBox* box, double original, double factor);
+
+/// Says what a field means, in its tooltip and in Help ▸ What's This (Shift+F1).
+void explain(QWidget* field, const QString& text);
+
+/// A number field whose value 0 means "automatic" and reads so (e.g. the contact penalty).
+void zero_is_automatic(QDoubleSpinBox* box);
 
 /// A word-wrapped, selectable status line under a form.
 QLabel* status_label(const QString& name, QWidget* parent);

@@ -28,13 +28,13 @@ namespace mcdda::gui {
 namespace {
 
 using form::display;
+using form::explain;
 using form::number;
 using form::set_status;
 using form::si;
 using form::status_label;
 using form::to_qt;
 
-constexpr double standard_gravity = 9.81;  // m/s², as the model reader
 
 bool same(const LoadTable& a, const LoadTable& b)
 {
@@ -73,6 +73,7 @@ QWidget* LoadForm::createTableGroup()
     auto* group = new QGroupBox(tr("Load tables"), this);
     auto* form = new QFormLayout(group);
     table_box_ = new QComboBox(group);
+    explain(table_box_, tr("The load table shown below: a factor against time (or step) that loads may follow"));
     table_box_->setObjectName(QStringLiteral("loadTableBox"));
     table_box_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     table_box_->setMinimumContentsLength(8);
@@ -92,10 +93,12 @@ QWidget* LoadForm::createTableGroup()
     form->addRow(tr("Table"), choose);
 
     tbl_name_ = new QLineEdit(group);
+    explain(tbl_name_, tr("Name of the load table, as loads refer to it"));
     tbl_name_->setObjectName(QStringLiteral("loadTableName"));
     connect(tbl_name_, &QLineEdit::returnPressed, this, &LoadForm::applyTable);
     form->addRow(tr("Name"), tbl_name_);
     tbl_variable_ = new QComboBox(group);
+    explain(tbl_variable_, tr("Whether the table's abscissa is the time (s) or the step number"));
     tbl_variable_->setObjectName(QStringLiteral("loadTableVariable"));
     tbl_variable_->addItem(tr("Step number"), static_cast<int>(LoadTable::Variable::Step));
     tbl_variable_->addItem(tr("Time"), static_cast<int>(LoadTable::Variable::Time));
@@ -103,7 +106,7 @@ QWidget* LoadForm::createTableGroup()
     form->addRow(tr("Variable"), tbl_variable_);
     tbl_extrapolate_ = new QCheckBox(tr("Extrapolate (else hold the last factor)"), group);
     tbl_extrapolate_->setObjectName(QStringLiteral("loadTableExtrapolate"));
-    tbl_extrapolate_->setToolTip(tr("Beyond the last point, continue the last segment's slope"));
+    explain(tbl_extrapolate_, tr("Beyond the last point, continue the last segment's slope"));
     form->addRow(QString(), tbl_extrapolate_);
 
     tbl_points_ = new QTableWidget(0, 2, group);
@@ -141,6 +144,7 @@ QWidget* LoadForm::createLoadGroup()
     auto* group = new QGroupBox(tr("Point loads and edge pressures"), this);
     auto* form = new QFormLayout(group);
     load_box_ = new QComboBox(group);
+    explain(load_box_, tr("The point load or edge pressure shown below"));
     load_box_->setObjectName(QStringLiteral("loadBox"));
     load_box_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     load_box_->setMinimumContentsLength(8);
@@ -149,17 +153,19 @@ QWidget* LoadForm::createLoadGroup()
     });
     form->addRow(tr("Load"), load_box_);
     ld_fx_ = number(QStringLiteral("loadFx"), tr("kN/m"), -1e9, 1e9, 3, group);
+    explain(ld_fx_, tr("x component of the point load, per metre out of plane"));
     form->addRow(tr("Force fx"), ld_fx_);
     ld_fy_ = number(QStringLiteral("loadFy"), tr("kN/m"), -1e9, 1e9, 3, group);
+    explain(ld_fy_, tr("y component of the point load, per metre out of plane (negative = downwards)"));
     form->addRow(tr("Force fy"), ld_fy_);
     ld_pressure_ = number(QStringLiteral("loadPressure"), tr("kPa"), -1e9, 1e9, 3, group);
-    ld_pressure_->setToolTip(tr("Normal pressure; positive pushes into the material"));
+    explain(ld_pressure_, tr("Normal pressure; positive pushes into the material"));
     form->addRow(tr("Pressure"), ld_pressure_);
     ld_table_ = new QComboBox(group);
     ld_table_->setObjectName(QStringLiteral("loadTableChoice"));
     ld_table_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     ld_table_->setMinimumContentsLength(8);
-    ld_table_->setToolTip(tr("The table whose factor multiplies the load; constant = factor 1"));
+    explain(ld_table_, tr("The table whose factor multiplies the load; constant = factor 1"));
     form->addRow(tr("Load table"), ld_table_);
     ld_apply_ = new QPushButton(tr("Apply"), group);
     ld_apply_->setObjectName(QStringLiteral("loadApply"));
@@ -177,8 +183,10 @@ QWidget* LoadForm::createGravityGroup()
     auto* group = new QGroupBox(tr("Gravity"), this);
     auto* form = new QFormLayout(group);
     grav_x_ = number(QStringLiteral("gravityX"), tr("m/s²"), -1e3, 1e3, 4, group);
+    explain(grav_x_, tr("x component of the acceleration of gravity"));
     form->addRow(tr("gx"), grav_x_);
     grav_y_ = number(QStringLiteral("gravityY"), tr("m/s²"), -1e3, 1e3, 4, group);
+    explain(grav_y_, tr("y component of the acceleration of gravity (−9.81 m/s²: standard)"));
     form->addRow(tr("gy"), grav_y_);
     auto* standard = new QPushButton(tr("Standard (0, −9.81)"), group);
     standard->setObjectName(QStringLiteral("gravityStandard"));

@@ -24,6 +24,8 @@ namespace {
 using form::cell_text;
 using form::deg;
 using form::display;
+using form::explain;
+using form::zero_is_automatic;
 using form::number;
 using form::set_status;
 using form::si;
@@ -51,21 +53,22 @@ MeshForm::MeshForm(ModelDocument* document, QWidget* parent) : QWidget(parent), 
     auto* form = new QFormLayout;
     column->addLayout(form);
     size_ = number(QStringLiteral("meshSize"), tr("m"), 0.0, 1e6, 4, this);
+    zero_is_automatic(size_);
     size_->setSpecialValueText(tr("automatic"));  // shown for 0
-    size_->setToolTip(tr("Target longest edge of a triangle; 0 = automatic (1/20 of the model's diagonal)"));
+    explain(size_, tr("Target longest edge of a triangle; 0 = automatic (1/20 of the model's diagonal)"));
     form->addRow(tr("Element size"), size_);
     min_angle_ = number(QStringLiteral("meshMinAngle"), tr("°"), -360.0, 360.0, 2, this);
-    min_angle_->setToolTip(tr("Smallest angle a triangle may have, (0°, 34°]"));
+    explain(min_angle_, tr("Smallest angle a triangle may have, (0°, 34°]"));
     form->addRow(tr("Minimum angle"), min_angle_);
     grading_ = number(QStringLiteral("meshGrading"), QString(), -100.0, 100.0, 3, this);
     grading_->setSingleStep(0.05);
-    grading_->setToolTip(tr("Growth of the size away from a local refinement: size = local size + grading × "
+    explain(grading_, tr("Growth of the size away from a local refinement: size = local size + grading × "
                             "(distance − radius)"));
     form->addRow(tr("Grading [–]"), grading_);
     max_elements_ = number(QStringLiteral("meshMaxElements"), tr("elements"), -1.0, 1e12, 0, this);
     max_elements_->setGroupSeparatorShown(true);
     max_elements_->setSingleStep(100000.0);
-    max_elements_->setToolTip(tr("The mesher refuses a model whose size field asks for more triangles"));
+    explain(max_elements_, tr("The mesher refuses a model whose size field asks for more triangles"));
     form->addRow(tr("Element limit"), max_elements_);
 
     local_ = new QTableWidget(0, 3, this);

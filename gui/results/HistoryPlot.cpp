@@ -1,5 +1,7 @@
 #include "results/HistoryPlot.hpp"
 
+#include "results/UnbalancedPlot.hpp"
+
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
@@ -54,6 +56,8 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
     layout->addLayout(controls);
     layout->addWidget(note_);
     layout->addWidget(view_, 1);
+    unbalanced_ = new UnbalancedPlot(this);
+    layout->addWidget(unbalanced_, 1);
 
     connect(y_box_, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
     connect(x_box_, &QComboBox::currentIndexChanged, this, [this] { redraw(); });
@@ -114,6 +118,7 @@ QString HistoryPlot::xColumn() const { return x_box_->currentData().toString(); 
 
 void HistoryPlot::redraw()
 {
+    unbalanced_->show(table_);
     const int xi = table_.column(xColumn()), yi = table_.column(yColumn());
     QList<QPointF> points;
     if (xi >= 0 && yi >= 0)

@@ -1,7 +1,8 @@
 #pragma once
 /// \file HistoryPlot.hpp
 /// Plots a run's history.csv with Qt Charts: one measurement-point column (…:ux or …:uy)
-/// against time or against a load column (load:<name>, a load–settlement curve).
+/// against time or against a load column (load:<name>, a load–settlement curve), and under it
+/// the unbalanced-force ratio per step.
 
 #include "results/HistoryCsv.hpp"
 
@@ -9,6 +10,7 @@
 #include <QWidget>
 
 class QComboBox;
+namespace mcdda::gui { class UnbalancedPlot; }
 class QLabel;
 
 QT_BEGIN_NAMESPACE
@@ -39,6 +41,8 @@ public:
     void setColumns(const QString& y_column, const QString& x_column);
     QString yColumn() const;
     QString xColumn() const;
+    /// The unbalanced-force ratio of the same history, under the plot.
+    UnbalancedPlot* unbalancedPlot() const { return unbalanced_; }
 
 private:
     void redraw();
@@ -46,6 +50,7 @@ private:
     QComboBox* y_box_ = nullptr;
     QComboBox* x_box_ = nullptr;
     QLabel* note_ = nullptr;
+    UnbalancedPlot* unbalanced_ = nullptr;
     QChartView* view_ = nullptr;
     QLineSeries* series_ = nullptr;
     QValueAxis* x_axis_ = nullptr;

@@ -4,6 +4,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <QXmlStreamReader>
 
 namespace mcdda::gui {
@@ -35,6 +36,16 @@ std::vector<PvdEntry> read_pvd(const QString& path, QString* error)
         return fail(QCoreApplication::translate("PvdFile", "%1 is not a valid collection: %2").arg(path, xml.errorString()));
     if (!collection) return fail(QCoreApplication::translate("PvdFile", "%1 holds no collection").arg(path));
     return entries;
+}
+
+QString contacts_file_for(const QString& vtu_path)
+{
+    static const QRegularExpression step(QStringLiteral("_(\\d{6})\\.vtu$"));
+    const QRegularExpressionMatch m = step.match(vtu_path);
+    if (!m.hasMatch()) return {};
+    QString contacts = vtu_path;
+    contacts.replace(m.capturedStart(), m.capturedLength(), QStringLiteral("_contacts_%1.vtp").arg(m.captured(1)));
+    return QFileInfo::exists(contacts) ? contacts : QString();
 }
 
 }  // namespace mcdda::gui

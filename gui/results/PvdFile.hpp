@@ -18,4 +18,9 @@ struct PvdEntry {
 /// with `error` set (when given) when the file cannot be read or is not a collection.
 std::vector<PvdEntry> read_pvd(const QString& path, QString* error = nullptr);
 
+/// The contacts file RunOutput writes beside a step (<stem>_NNNNNN.vtu ->
+/// <stem>_contacts_NNNNNN.vtp): contact forces, joint slip and opening, bolts. Empty when there
+/// is none.
+QString contacts_file_for(const QString& vtu_path);
+
 }  // namespace mcdda::gui

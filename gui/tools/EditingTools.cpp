@@ -22,6 +22,7 @@
 #include <QRegularExpression>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QUndoStack>
 
 #include <cmath>
 
@@ -92,6 +93,10 @@ EditingTools::EditingTools(QMainWindow* window, ModelView* view, ModelDocument* 
         q.point = points.front();
         document_->addMeasurementPoint(q);
     });
+    // Two clicks on the result picture; the tool stays for the next line.
+    query_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
+        emit queryLineDrawn(points.front(), points.back());
+    });
     connect(region_tool_, &DrawTool::started, this, [this] {
         hole_shift_ = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
     });
@@ -116,6 +121,17 @@ DrawTool* EditingTools::makeTool(int shape, std::function<void(const std::vector
 
 void EditingTools::createActions(QMenu* edit)
 {
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("undoAction"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setIcon(QIcon(QStringLiteral(":/icons/undo.svg")));
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("redoAction"));
+    redo->setShortcut(QKeySequence::Redo);
+    redo->setIcon(QIcon(QStringLiteral(":/icons/redo.svg")));
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
     QToolBar* bar = window_->addToolBar(tr("Tools"));
     bar->setObjectName(QStringLiteral("tools"));
     auto* group = new QActionGroup(this);
@@ -155,6 +171,11 @@ void EditingTools::createActions(QMenu* edit)
     QAction* point = tool(tr("&Measurement Point"), QStringLiteral("measurementPointAction"),
                           QStringLiteral("measurement-point"), tr("Click where displacements are recorded"),
                           &EditingTools::useMeasurementPoint);
+    bar->addSeparator();
+    QAction* query = tool(tr("&Query Line"), QStringLiteral("queryLineAction"), QStringLiteral("query-line"),
+                          tr("Click the two ends of a line across the result picture: the Query dock plots the "
+                             "field shown along it"),
+                          &EditingTools::useQueryLine);
     edit->addSeparator();
     delete_action_ = edit->addAction(tr("&Delete"), this, [this] { deleteItem(select_tool_->selection()); });
     delete_action_->setObjectName(QStringLiteral("deleteAction"));
@@ -168,7 +189,8 @@ void EditingTools::createActions(QMenu* edit)
     joint_set->setObjectName(QStringLiteral("addJointSetAction"));
     joint_set->setStatusTip(tr("Add a family of parallel joints"));
     tool_actions_ = {{region_tool_, region}, {joint_tool_, joint}, {fixed_tool_, fixed}, {roller_tool_, roller},
-                     {load_tool_, load},     {pressure_tool_, pressure}, {point_tool_, point}};
+                     {load_tool_, load},     {pressure_tool_, pressure}, {point_tool_, point},
+                     {query_tool_, query}};
     select_action_->setChecked(true);
     createToolOptions();
 }
@@ -306,7 +328,7 @@ void EditingTools::setTool(DrawTool* tool)
     hole_shift_ = false;
     setSnapping(snap_grid_, grid_spacing_);  // the grid shows with the drawing tools
     if (tool) {
-        view_->clearResult();
+        if (tool != query_tool_) view_->clearResult();  // drawing edits the model; a query reads the result
         view_->setFocus();
     }
 }
@@ -319,6 +341,7 @@ void EditingTools::useRoller() { setTool(roller_tool_); }
 void EditingTools::usePointLoad() { setTool(load_tool_); }
 void EditingTools::useEdgePressure() { setTool(pressure_tool_); }
 void EditingTools::useMeasurementPoint() { setTool(point_tool_); }
+void EditingTools::useQueryLine() { setTool(query_tool_); }
 
 void EditingTools::selectItem(const ItemRef& ref)
 {
@@ -344,7 +367,8 @@ void EditingTools::setSnapping(bool grid, double spacing)
     options.grid = snap_grid_;
     options.spacing = grid_spacing_;
     view_->setGridSpacing(options.grid && activeTool() ? grid_spacing_ : 0.0);
-    for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_})
+    for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_,
+                           query_tool_})
         tool->setSnapOptions(options);
     select_tool_->setSnapOptions(options);
 }

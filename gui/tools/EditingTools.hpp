@@ -38,7 +38,7 @@ public:
     /// Tools for `view` that edit `document`; toolbars and messages go to `window`.
     EditingTools(QMainWindow* window, ModelView* view, ModelDocument* document);
 
-    /// Adds the tool, Delete and Add Joint Set entries to `edit` and the Tools and Tool Options
+    /// Adds Undo, Redo, the tool, Delete and Add Joint Set entries to `edit` and the Tools and Tool Options
     /// toolbars to the window.
     void createActions(QMenu* edit);
 
@@ -63,6 +63,8 @@ public slots:
     void usePointLoad();
     void useEdgePressure();
     void useMeasurementPoint();
+    /// Edit ▸ Query Line: two clicks on the result picture give queryLineDrawn().
+    void useQueryLine();
     /// Makes Select the tool and selects `ref` (highlighted in the view).
     void selectItem(const ItemRef& ref);
     /// Deletes `ref` (undoable); false with a message when it cannot go.
@@ -80,6 +82,8 @@ signals:
     void selectionChanged(const mcdda::gui::ItemRef& ref);
     /// A line for the window's log.
     void message(const QString& text);
+    /// A query line was drawn from `from` to `to` (m).
+    void queryLineDrawn(const mcdda::Point2& from, const mcdda::Point2& to);
 
 protected:
     /// Ctrl+Z / Ctrl+Shift+Z in the coordinate field undo the model's last edit when the field
@@ -105,6 +109,7 @@ private:
     DrawTool* load_tool_ = nullptr;
     DrawTool* pressure_tool_ = nullptr;
     DrawTool* point_tool_ = nullptr;
+    DrawTool* query_tool_ = nullptr;
     QAction* select_action_ = nullptr;
     QAction* delete_action_ = nullptr;
     std::vector<std::pair<DrawTool*, QAction*>> tool_actions_;

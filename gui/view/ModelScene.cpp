@@ -258,8 +258,12 @@ void add_joints(vtkRenderer* renderer, const Model& model, const Style& st)
     Shapes inside, outside;
     for (const Joint& j : model.joints)
         for (std::size_t i = 0; i + 1 < j.points.size(); ++i)
-            for (const SegmentPiece& piece : split_by_material(model, j.points[i], j.points[i + 1]))
+            for (const SegmentPiece& piece : split_by_material(model, j.points[i], j.points[i + 1])) {
+                // A joint set's traces beyond the rock (openings, empty space) cut nothing: not
+                // drawn. An explicit joint's are, lightly, to show where it was drawn wrong.
+                if (!piece.in_material && j.joint_set >= 0) continue;
                 (piece.in_material ? inside : outside).lines.push_back({piece.from, piece.to});
+            }
     const double z = joint_layer * st.z_step;
     add_shapes(renderer, outside, palette::joint_outside, 1.5 * st.pixel, z);
     add_shapes(renderer, inside, palette::joint, 3.0 * st.pixel, z);

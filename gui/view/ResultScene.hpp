@@ -5,7 +5,7 @@
 /// Both go through the same grid and colouring code. VTK stays out of this header.
 
 #include "Preprocess.hpp"
-#include "run/ResultSnapshot.hpp"
+#include "view/ResultSnapshot.hpp"
 #include "view/ResultProbe.hpp"
 
 #include <stdexcept>

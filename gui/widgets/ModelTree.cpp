@@ -42,6 +42,7 @@ ItemRef ref_of(const QTreeWidgetItem* item)
 
 ModelTree::ModelTree(QWidget* parent) : QTreeWidget(parent)
 {
+    setObjectName(QStringLiteral("modelTree"));
     setColumnCount(2);
     setHeaderLabels({tr("Item"), tr("Details")});
     header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);

@@ -310,6 +310,8 @@ std::shared_ptr<const ResultSnapshot> ModelView::result() const { return impl_->
 
 QString ModelView::resultFile() const { return impl_->result_file; }
 
+const view::ResultProbe& ModelView::resultProbe() const { return impl_->probe; }
+
 QString ModelView::resultValueAt(const QPointF& model_pos) const
 {
     return QString::fromStdString(impl_->probe.describe(model_pos.x(), model_pos.y()));
@@ -445,6 +447,18 @@ void ModelView::fitView()
     view::fit_camera(impl_->renderer, impl_->scene ? *impl_->scene : empty, impl_->options);
     impl_->camera_touched = false;
     update();
+}
+
+void ModelView::ensureRegionsVisible()
+{
+    if (!impl_->scene) return;
+    const QRectF shown(QPointF(0, 0), QSizeF(size()));
+    for (const Region& region : impl_->scene->model.regions)
+        for (const Point2& p : region.boundary)
+            if (!shown.contains(toWidget(QPointF(p.x, p.y)))) {
+                fitView();
+                return;
+            }
 }
 
 void ModelView::zoomAt(const QPointF& widget_pos, double factor)

@@ -4,7 +4,7 @@
 /// vtkRenderWindow draws into (docs/architecture.md), with 2-D navigation done here in Qt's
 /// event handlers (drag pans, wheel zooms about the cursor). VTK stays in the .cpp.
 
-#include "run/ResultSnapshot.hpp"
+#include "view/ResultSnapshot.hpp"
 #include "view/ModelScene.hpp"
 #include "view/ResultScene.hpp"
 
@@ -54,6 +54,8 @@ public:
     /// What the result picture shows at a model point (m), e.g. "principal stress 1 = -12.3
     /// MPa"; empty over the model picture or outside the mesh.
     QString resultValueAt(const QPointF& model_pos) const;
+    /// What the result picture shows where (empty over the model picture): for query lines.
+    const view::ResultProbe& resultProbe() const;
 
     /// What is drawn; changing it rebuilds the picture and keeps the camera.
     void setSceneOptions(const view::SceneOptions& options);
@@ -101,6 +103,9 @@ public:
 public slots:
     /// Shows the whole model with a margin.
     void fitView();
+    /// Fits the view when part of a region lies outside it (the first region of a new model
+    /// may be typed far from the default view).
+    void ensureRegionsVisible();
     /// Zooms by `factor` (> 1 magnifies) keeping the model point under `widget_pos` in place.
     void zoomAt(const QPointF& widget_pos, double factor);
     /// Moves the picture by a widget-pixel offset (as if dragged by it).

@@ -2,6 +2,7 @@
 
 #include "io/JsonOverrides.hpp"
 #include "Version.hpp"
+#include "model/Defaults.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -22,9 +23,6 @@ namespace mcdda {
 namespace {
 
 using nlohmann::json;
-constexpr double pi = 3.14159265358979323846;
-constexpr double degree = pi / 180.0;
-constexpr double standard_gravity = 9.81;  // m/s², converts unit weight to density
 
 std::string type_name(const json& j) {
     switch (j.type()) {

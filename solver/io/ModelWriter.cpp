@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.hpp"
 #include "Version.hpp"
+#include "model/Defaults.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -16,8 +17,6 @@ namespace {
 
 // Keys in the order of docs/model-format.md, not sorted.
 using json = nlohmann::ordered_json;
-constexpr double pi = 3.14159265358979323846;
-constexpr double degree = pi / 180.0;
 
 /// Radians (inside) to degrees (file). The reader multiplies by `degree`; the shortest decimal
 /// that gives back exactly `radians` that way is chosen, so 30° is written as 30, not as

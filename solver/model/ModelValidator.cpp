@@ -1,6 +1,7 @@
 #include "model/ModelValidator.hpp"
 
 #include "geometry/PolygonChecks.hpp"
+#include "model/Defaults.hpp"
 
 #include <cmath>
 #include <algorithm>
@@ -12,7 +13,6 @@ namespace mcdda {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double max_coordinate = 1e7;  // m; beyond this the model is surely in the wrong units
 // Beyond these a value is no physical input but a typo or a unit error; the solver would spend
 // minutes on it or overflow (issue 10). The pressure at the Earth's centre is 3.6e11 Pa, the
@@ -100,6 +100,7 @@ void check_materials(Checker& c, const Model& m) {
 }
 
 void check_geometry(Checker& c, const Model& m) {
+    if (m.regions.empty()) c.error("/regions", "at least one region is required");
     for (std::size_t i = 0; i < m.regions.size(); ++i) {
         const Region& r = m.regions[i];
         const std::string path = "/regions/" + std::to_string(i);
@@ -217,7 +218,8 @@ void check_boundary_conditions(Checker& c, const Model& m) {
         if (m.gravity.x == 0.0 && m.gravity.y == 0.0)
             c.warning("/initial_stress", "gravity-based in-situ stress with zero gravity gives no stress");
     }
-    if (m.fixed_points.empty() && m.rollers.empty()) {
+    // Before anything is drawn only the missing region is worth saying.
+    if (m.fixed_points.empty() && m.rollers.empty() && !m.regions.empty()) {
         if (m.analysis.kind == AnalysisSettings::Kind::Static)
             c.error("", "nothing is fixed: add fixed points or rollers (a static analysis of free blocks is a mechanism)");
         else

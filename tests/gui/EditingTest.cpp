@@ -9,7 +9,7 @@
 #include "document/ModelDocument.hpp"
 #include "panels/LoadForm.hpp"
 #include "panels/PropertyEditor.hpp"
-#include "run/RunController.hpp"
+#include "session/RunController.hpp"
 #include "tools/DrawTool.hpp"
 #include "view/Palette.hpp"
 #include "widgets/ModelTree.hpp"
@@ -53,6 +53,7 @@ private slots:
     void undoFromTheCoordinateField();
     void viewMenuMessagesAndStepLabel();
     void helpShowsTheUserGuide();
+    void newModelTalksOfRegionsAndFitsTheFirst();
 };
 
 void EditingTest::initTestCase()
@@ -480,6 +481,39 @@ void EditingTest::helpShowsTheUserGuide()
         if (auto* b = d->findChild<QTextBrowser*>(QStringLiteral("helpBrowser")))
             format_shown = format_shown || b->toPlainText().contains(QStringLiteral("Construction stages"));
     QVERIFY(format_shown);
+}
+
+// Issue 13, item 13: an empty new model asks for a region (not "nothing is fixed"), and the
+// first region, typed far outside the default view, is brought into view.
+void EditingTest::newModelTalksOfRegionsAndFitsTheFirst()
+{
+    MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QTRY_VERIFY(!window.isPreprocessing());
+    QVERIFY2(window.messages().contains(QStringLiteral("at least one region")), qPrintable(window.messages()));
+    QVERIFY2(!window.messages().contains(QStringLiteral("nothing is fixed")), qPrintable(window.messages()));
+
+    window.drawRegionTool();
+    auto* field = window.findChild<QLineEdit*>(QStringLiteral("coordinateEdit"));
+    for (const char* point : {"200, 100", "260, 100", "260, 140", "200, 140"}) {
+        field->setText(QString::fromLatin1(point));
+        QTest::keyClick(field, Qt::Key_Return);
+    }
+    QTest::keyClick(field, Qt::Key_Return);
+    QTRY_VERIFY_WITH_TIMEOUT(!window.isPreprocessing() && window.modelView()->scene() &&
+                                 !window.modelView()->scene()->model.regions.empty(), 30000);
+    gui::ModelView* view = window.modelView();
+    const QRect shown = view->rect();
+    for (auto [x, y] : {std::pair{200.0, 100.0}, {260.0, 100.0}, {260.0, 140.0}, {200.0, 140.0}})
+        QVERIFY2(shown.contains(guitest::pixel_of(*view, x, y)), qPrintable(QStringLiteral("(%1, %2) not in view").arg(x).arg(y)));
+    // And it is drawn: the rock's colour fills the middle of the picture.
+    const view::Rgb rock = view::material_color(0);
+    QVERIFY(guitest::count_around(*view, 230.0, 120.0, rock) > 40);
+    // Now "nothing is fixed" is worth saying.
+    QVERIFY2(window.messages().contains(QStringLiteral("nothing is fixed")), qPrintable(window.messages()));
 }
 
 QTEST_MAIN(EditingTest)

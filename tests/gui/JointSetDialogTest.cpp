@@ -4,7 +4,11 @@
 #include "dialogs/JointSetDialog.hpp"
 
 #include <QApplication>
+#include "dialogs/JointSetPreview.hpp"
+
 #include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
 #include <QtTest>
 
 using namespace mcdda;
@@ -18,6 +22,8 @@ private slots:
     void enteredPersistenceGivesSegments();
     void setJointSetFillsTheFields();
     void refusesZeroPersistenceAndMissingTraceLength();
+    void defaultsFollowTheModelAndTheConventionIsStated();
+    void previewDrawsTracesOnlyInRock();
 };
 
 namespace {
@@ -27,6 +33,37 @@ QDoubleSpinBox* box(const JointSetDialog& dialog, const char* name)
     auto* found = dialog.findChild<QDoubleSpinBox*>(QString::fromLatin1(name));
     if (!found) qWarning("no spin box \"%s\"", name);
     return found;
+}
+
+/// A 20 m square of rock at (x0, y0) with a 4 m square opening in its middle.
+Model block_with_opening(double x0, double y0)
+{
+    Model m;
+    m.materials.push_back(Material{});
+    m.joint_materials.push_back(JointMaterial{});
+    Region r;
+    r.material = 0;
+    r.boundary = {{x0, y0}, {x0 + 20, y0}, {x0 + 20, y0 + 20}, {x0, y0 + 20}};
+    r.holes = {{{x0 + 8, y0 + 8}, {x0 + 12, y0 + 8}, {x0 + 12, y0 + 12}, {x0 + 8, y0 + 12}}};
+    m.regions.push_back(r);
+    return m;
+}
+
+/// Pixels of the traces' colour within 3 pixels of the model point p.
+int trace_pixels_near(const gui::JointSetPreview& preview, const QImage& image, Point2 p)
+{
+    const QPoint c = preview.toPixel(p).toPoint();
+    int n = 0;
+    for (int y = c.y() - 3; y <= c.y() + 3; ++y)
+        for (int x = c.x() - 3; x <= c.x() + 3; ++x) {
+            if (!image.rect().contains(x, y)) continue;
+            const QColor px = image.pixelColor(x, y);
+            const QColor want = gui::JointSetPreview::traceColor();
+            if (std::abs(px.red() - want.red()) < 40 && std::abs(px.green() - want.green()) < 40 &&
+                std::abs(px.blue() - want.blue()) < 40)
+                ++n;
+        }
+    return n;
 }
 
 }  // namespace
@@ -112,6 +149,54 @@ void JointSetDialogTest::refusesZeroPersistenceAndMissingTraceLength()
     box(no_length, "traceLengthBox")->setValue(3.0);
     no_length.accept();
     QCOMPARE(no_length.result(), int(QDialog::Accepted));
+}
+
+// Issue 13, item 14: the box and the origin come from the model (not 0–10 m and a corner), the
+// set has a name, and the angle convention is written beside the angle.
+void JointSetDialogTest::defaultsFollowTheModelAndTheConventionIsStated()
+{
+    const Model model = block_with_opening(100.0, 20.0);
+    JointSetDialog dialog(model);
+    QCOMPARE(box(dialog, "xminBox")->value(), 100.0);
+    QCOMPARE(box(dialog, "yminBox")->value(), 20.0);
+    QCOMPARE(box(dialog, "xmaxBox")->value(), 120.0);
+    QCOMPARE(box(dialog, "ymaxBox")->value(), 40.0);
+    QCOMPARE(box(dialog, "originXBox")->value(), 110.0);
+    QCOMPARE(box(dialog, "originYBox")->value(), 30.0);
+    auto* name = dialog.findChild<QLineEdit*>(QStringLiteral("nameEdit"));
+    QVERIFY(name);
+    QCOMPARE(name->text(), QStringLiteral("set 1"));
+    name->setText(QStringLiteral("J1 bedding"));
+    QCOMPARE(dialog.jointSet().name, std::string("J1 bedding"));
+    auto* convention = dialog.findChild<QLabel*>(QStringLiteral("angleConvention"));
+    QVERIFY(convention);
+    QVERIFY(convention->text().contains(QStringLiteral("from the horizontal")));
+    QVERIFY(convention->text().contains(QStringLiteral("counter-clockwise")));
+}
+
+// The preview draws the set's traces where they cut rock, not across the opening, and counts them.
+void JointSetDialogTest::previewDrawsTracesOnlyInRock()
+{
+    const Model model = block_with_opening(0.0, 0.0);
+    JointSetDialog dialog(model);
+    box(dialog, "angleBox")->setValue(0.0);  // horizontal traces at y = 0.5, 1.5, ... 19.5
+    box(dialog, "spacingBox")->setValue(1.0);
+    box(dialog, "originXBox")->setValue(0.0);
+    box(dialog, "originYBox")->setValue(10.5);
+    gui::JointSetPreview* preview = dialog.preview();
+    QVERIFY(preview);
+    preview->resize(400, 400);
+    const int dense = preview->traceCount();
+    QVERIFY2(dense >= 18, qPrintable(QString::number(dense)));
+    const QImage image = preview->grab().toImage();
+    QVERIFY(trace_pixels_near(*preview, image, {4.0, 10.5}) > 0);   // in rock, left of the opening
+    QVERIFY(trace_pixels_near(*preview, image, {16.0, 10.5}) > 0);  // in rock, right of it
+    QCOMPARE(trace_pixels_near(*preview, image, {10.0, 10.5}), 0);   // none across the opening
+    auto* count = dialog.findChild<QLabel*>(QStringLiteral("traceCount"));
+    QVERIFY(count->text().contains(QString::number(dense)));
+    box(dialog, "spacingBox")->setValue(2.0);
+    QVERIFY(preview->traceCount() < dense);
+    QVERIFY(count->text().contains(QString::number(preview->traceCount())));
 }
 
 QTEST_MAIN(JointSetDialogTest)

@@ -123,6 +123,7 @@ private slots:
     void mainWindowOpensExample();
     void resourcesHoldTheIcon();
     void legendSpeaksTheWindowLanguage();
+    void jointSetTracesStopAtTheOpening();
 };
 
 void ModelViewTest::initTestCase()
@@ -416,6 +417,40 @@ void ModelViewTest::legendSpeaksTheWindowLanguage()
                  qPrintable(german.join(QLatin1Char('|'))));
     }
     QVERIFY(labels().contains(QStringLiteral("Joint")));
+}
+
+// Issue 13, item 14: a joint set's traces are drawn where they cut rock, not across the tunnel
+// opening or empty space (an explicit joint's stray parts still are, lightly).
+void ModelViewTest::jointSetTracesStopAtTheOpening()
+{
+    Model m = guitest::tunnel_model();
+    m.joints.clear();
+    JointSet set;
+    set.name = "horizontal";
+    set.angle = 0.0;
+    set.spacing = 3.0;
+    set.origin = {0.0, hole_centre.y};  // one trace through the opening's centre
+    m.joint_sets.push_back(set);
+    const auto p = std::make_shared<const Preprocessed>(preprocess_model(m, PreprocessStage::Mesh));
+    QVERIFY2(p->ok, p->diagnostics.empty() ? "" : p->diagnostics.front().message.c_str());
+    ModelView view;
+    view.resize(640, 480);
+    view::SceneOptions options = view.sceneOptions();
+    options.show_mesh = false;
+    view.setSceneOptions(options);
+    view.setScene(p);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const QImage frame = view.grabFrame();
+    keep(frame, QStringLiteral("joint_set_opening"));
+    const QColor joint = to_qcolor(view::palette::joint);
+    const QColor stray = to_qcolor(view::palette::joint_outside);
+    QVERIFY(count_around(frame, widget_pos(view, {1.5, hole_centre.y}), joint) > 0);  // in rock
+    QVERIFY(count_around(frame, widget_pos(view, {8.5, hole_centre.y}), joint) > 0);
+    for (const Point2& q : {hole_centre, Point2{hole_centre.x - 1.0, hole_centre.y}, Point2{hole_centre.x + 1.0, hole_centre.y}}) {
+        QCOMPARE(count_around(frame, widget_pos(view, q), joint), 0);
+        QCOMPARE(count_around(frame, widget_pos(view, q), stray), 0);
+    }
 }
 
 QTEST_MAIN(ModelViewTest)

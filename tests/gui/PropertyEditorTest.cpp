@@ -11,7 +11,9 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
+#include <QLineEdit>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QStandardPaths>
@@ -40,6 +42,7 @@ private slots:
     void toolsPlaceRollerAndMeasurementPoint();
     void otherToolsPlaceItems();
     void viewFollowsEditsOffTheGuiThread();
+    void everyFieldExplainsItself();
 };
 
 void PropertyEditorTest::initTestCase()
@@ -277,6 +280,35 @@ void PropertyEditorTest::viewFollowsEditsOffTheGuiThread()
     while (!doc->model().regions.empty()) doc->undoStack()->undo();
     QTRY_VERIFY(count_around(*window->modelView(), 5, 7, view::palette::background, 7) > 100);
     QTRY_VERIFY(!window->isPreprocessing());
+}
+
+// Issue 13, item 12: every field of the Properties dock says what it means, in its tooltip and in
+// What's This, and the fields where 0 means "automatic" read so.
+void PropertyEditorTest::everyFieldExplainsItself()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    QTRY_VERIFY2(settled(*window), qPrintable(window->messages()));
+    PropertyEditor* editor = window->propertyEditor();
+    int fields = 0;
+    for (QWidget* w : editor->findChildren<QWidget*>()) {
+        const bool input = qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QComboBox*>(w) ||
+                           qobject_cast<QCheckBox*>(w) || qobject_cast<QLineEdit*>(w);
+        // (A spin box's or combo box's own line edit is part of it.)
+        if (!input || qobject_cast<QAbstractSpinBox*>(w->parentWidget()) || qobject_cast<QComboBox*>(w->parentWidget()))
+            continue;
+        if (qobject_cast<QLineEdit*>(w) && w->parentWidget() && w->parentWidget()->inherits("QTableView")) continue;
+        ++fields;
+        const QString name = w->objectName().isEmpty() ? QString::fromLatin1(w->metaObject()->className()) : w->objectName();
+        QVERIFY2(!w->toolTip().isEmpty(), qPrintable(name + QStringLiteral(" has no tooltip")));
+        QVERIFY2(!w->whatsThis().isEmpty(), qPrintable(name + QStringLiteral(" has no What's This")));
+    }
+    QVERIFY2(fields >= 40, qPrintable(QString::number(fields)));
+    auto* penalty = editor->findChild<QDoubleSpinBox*>(QStringLiteral("analysisPenalty"));
+    QVERIFY(penalty);
+    penalty->setValue(0.0);
+    QCOMPARE(penalty->text(), QStringLiteral("automatic"));
+    QVERIFY(penalty->toolTip().contains(QStringLiteral("automatic")));
 }
 
 QTEST_MAIN(PropertyEditorTest)

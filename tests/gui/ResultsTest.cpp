@@ -5,11 +5,14 @@
 #include "MainWindow.hpp"
 #include "results/HistoryPlot.hpp"
 #include "results/StepSlider.hpp"
-#include "run/RunController.hpp"
+#include "results/UnbalancedPlot.hpp"
+#include "session/RunController.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QChart>
+#include <QChartView>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QGuiApplication>
 #include <QImageReader>
@@ -84,6 +87,7 @@ private slots:
     void fieldsChangeThePicture();
     void stepSliderReplaysSavedSteps();
     void plotShowsTheHistory();
+    void unbalancedRatioBesideTheHistory();
     void exportPngWritesTheFrame();
     void exportsCopyTheFiles();
     void cleanupTestCase();
@@ -214,6 +218,41 @@ void ResultsTest::plotShowsTheHistory()
         }
     const int column = plot->table().column(plot->yColumn());
     QCOMPARE(plot->series()->at(rows - 1).y(), plot->table().rows.back()[column]);
+}
+
+// Issue 13: the unbalanced-force ratio per step under the history plot, with the equilibrium
+// limit as a dashed line; both drawn.
+void ResultsTest::unbalancedRatioBesideTheHistory()
+{
+    gui::HistoryPlot* plot = window_->historyPlot();
+    gui::UnbalancedPlot* unbalanced = plot->unbalancedPlot();
+    QVERIFY(unbalanced);
+    const gui::HistoryTable& table = plot->table();
+    const int step = table.column(QStringLiteral("step")), ratio = table.column(QStringLiteral("unbalanced_ratio"));
+    QVERIFY(step >= 0 && ratio >= 0);
+    QCOMPARE(unbalanced->series()->count(), static_cast<int>(table.rows.size()));
+    for (int i = 0; i < unbalanced->series()->count(); ++i) {
+        QCOMPARE(unbalanced->series()->at(i).x(), table.rows[static_cast<std::size_t>(i)][step]);
+        QCOMPARE(unbalanced->series()->at(i).y(), std::max(table.rows[static_cast<std::size_t>(i)][ratio], 1e-12));
+    }
+    QCOMPARE(unbalanced->limitSeries()->count(), 2);
+    QCOMPARE(unbalanced->limitSeries()->at(0).y(), window_->modelView()->scene()->model.analysis.equilibrium_ratio);
+    window_->findChild<QDockWidget*>(QStringLiteral("plots"))->raise();
+    QTest::qWait(100);
+    const QImage image = unbalanced->chartView()->grab().toImage();
+    auto count = [&](QColor want) {
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                if (std::abs(c.red() - want.red()) < 40 && std::abs(c.green() - want.green()) < 40 &&
+                    std::abs(c.blue() - want.blue()) < 40)
+                    ++n;
+            }
+        return n;
+    };
+    QVERIFY2(count(gui::UnbalancedPlot::seriesColor()) > 30, qPrintable(QString::number(count(gui::UnbalancedPlot::seriesColor()))));
+    QVERIFY2(count(gui::UnbalancedPlot::limitColor()) > 10, qPrintable(QString::number(count(gui::UnbalancedPlot::limitColor()))));
 }
 
 void ResultsTest::exportPngWritesTheFrame()

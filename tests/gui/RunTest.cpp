@@ -3,15 +3,19 @@
 // results while the GUI stays responsive.
 
 #include "MainWindow.hpp"
+#include "results/QueryPlot.hpp"
 #include "document/ModelDocument.hpp"
 #include "results/HistoryPlot.hpp"
 #include "results/StepSlider.hpp"
-#include "run/RunController.hpp"
+#include "session/RunController.hpp"
+#include "tools/EditingTools.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QChartView>
+#include <QDockWidget>
 #include <QFile>
 #include <QGuiApplication>
 #include <QSignalSpy>
@@ -65,6 +69,7 @@ private slots:
     void salenconOpenMeshRunShowsPlasticZone();
     void longStepShowsItsIterations();
     void lookBackWhileRunning();
+    void contactsAndQueryLineOnTheStagedTunnel();
 };
 
 void RunTest::initTestCase()
@@ -139,10 +144,10 @@ void RunTest::runShowsResultColours()
     QVERIFY(window.messages().contains(QStringLiteral("step 6/6")));
     QVERIFY(QFile::exists(out.filePath(QStringLiteral("incline-sliding.pvd"))));
 
-    // The last step is shown, coloured by the displacement magnitude (a rainbow map), where
-    // the model picture had only its material colours.
-    QVERIFY(window.modelView()->result() != nullptr);
-    QCOMPARE(window.modelView()->result()->step, 6);
+    // The last step is shown (its saved file, with its contacts), coloured by the displacement
+    // magnitude (a rainbow map), where the model picture had only its material colours.
+    QVERIFY2(window.modelView()->resultFile().endsWith(QStringLiteral("_000006.vtu")),
+             qPrintable(window.modelView()->resultFile()));
     QCOMPARE(window.resultField(), QStringLiteral("displacement"));
     const QImage frame = window.modelView()->grabFrame();
     keep(frame, QStringLiteral("displacement"));
@@ -373,6 +378,100 @@ void RunTest::lookBackWhileRunning()
     QVERIFY(window.shownStep().isEmpty());
     window.stopRun();
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+}
+
+// Issue 13, contacts on screen and query lines: after a run of the staged jointed tunnel
+// (shortened: one step for the bolts and the bench) the last saved step is shown with its contact
+// forces and bolts, which the Contacts toggle takes away; a query line across the tunnel plots
+// the field with a gap in the opening and exports it.
+void RunTest::contactsAndQueryLineOnTheStagedTunnel()
+{
+    const QString path = QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json");
+    const auto model = std::make_shared<const Preprocessed>(preprocess_file(
+        path.toStdString(), {"/stages/2/analysis/steps=1", "/stages/3/analysis/steps=1", "/analysis/output_every=1"}));
+    QVERIFY(model->ok);
+    QTemporaryDir out;
+    MainWindow window;
+    window.resize(1100, 750);
+    window.showPreprocessed(model, path);
+    window.setRunOutputFolder(out.path());
+    window.setResultField(QStringLiteral("plastic_state"));  // greys, yellow, red: no blue or green
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy finished(&window, &MainWindow::runFinished);
+    QVERIFY(window.startRun());
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 240000);
+    QVERIFY2(window.shownStep().endsWith(QStringLiteral("_000008.vtu")), qPrintable(window.shownStep()));
+    auto count = [](const QImage& image, QColor want) {
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                if (std::abs(c.red() - want.red()) < 30 && std::abs(c.green() - want.green()) < 30 &&
+                    std::abs(c.blue() - want.blue()) < 30)
+                    ++n;
+            }
+        return n;
+    };
+    const QColor force_blue = QColor::fromRgbF(0.0, 0.40, 0.75);  // view/ResultScene: contact forces
+    const QColor bolt_green = QColor::fromRgbF(0.0, 0.55, 0.25);   // and bolts
+    const QImage with = window.modelView()->grabFrame();
+    keep(with, QStringLiteral("staged_tunnel_contacts"));
+    const int forces = count(with, force_blue), bolts = count(with, bolt_green);
+    QVERIFY2(forces > 200, qPrintable(QString::number(forces)));
+    QVERIFY2(bolts > 20, qPrintable(QString::number(bolts)));
+    window.findChild<QAction*>(QStringLiteral("contactsAction"))->trigger();  // off
+    const QImage without = window.modelView()->grabFrame();
+    QVERIFY2(count(without, force_blue) < forces / 20, qPrintable(QString::number(count(without, force_blue))));
+    QVERIFY(count(without, bolt_green) < bolts / 5);
+
+    // A query line through the tunnel's springlines, drawn with two clicks.
+    window.setResultField(QStringLiteral("stress_yy"));
+    window.editingTools()->useQueryLine();
+    ModelView* view = window.modelView();
+    QVERIFY(!view->resultProbe().empty());  // the tool keeps the result picture
+    for (const QPointF& p : {QPointF(-19.0, 0.5), QPointF(19.0, 0.5)})
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->toWidget(p).toPoint());
+    gui::QueryPlot* query = window.queryPlot();
+    QTRY_VERIFY(query->hasLine());
+    const auto& samples = query->samples();
+    QCOMPARE(samples.size(), std::size_t(200));
+    QVERIFY(std::abs(samples.front().point.x + 19.0) < 0.3 && std::abs(samples.back().point.x - 19.0) < 0.3);
+    int in_rock = 0, in_opening = 0;
+    for (const gui::QuerySample& q : samples) {
+        if (std::abs(q.point.x) < 2.5) {
+            QVERIFY2(!q.inside, "the tunnel opening is a gap");
+            ++in_opening;
+        } else if (std::abs(q.point.x) > 3.5 && std::abs(q.point.x) < 18.5) {
+            QVERIFY(q.inside);
+            double v = 0.0;
+            QVERIFY(view->resultProbe().valueAt(q.point.x, q.point.y, &v));
+            QCOMPARE(q.value, v);  // what the picture shows there
+            ++in_rock;
+        }
+    }
+    QVERIFY(in_opening > 10 && in_rock > 100);
+    window.findChild<QDockWidget*>(QStringLiteral("query"))->raise();
+    QTest::qWait(100);
+    const QImage chart = query->chartView()->grab().toImage();
+    keep(chart, QStringLiteral("query_chart"));
+    keep(window.grab().toImage(), QStringLiteral("query_window"));
+    QVERIFY2(count(chart, gui::QueryPlot::curveColor()) > 50, qPrintable(QString::number(count(chart, gui::QueryPlot::curveColor()))));
+    // A step change redraws the query (the first saved step has no excavation yet).
+    const double last = samples[20].value;
+    window.stepSlider()->setCurrentIndex(0);
+    QVERIFY(query->samples()[20].value != last);
+    // CSV: a header and one row per point on the mesh.
+    QString error;
+    const QString csv = out.filePath(QStringLiteral("query.csv"));
+    QVERIFY2(query->exportCsv(csv, error), qPrintable(error));
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+    QVERIFY(lines.front().startsWith("distance (m),x (m),y (m),"));
+    int inside = 0;
+    for (const gui::QuerySample& q : query->samples()) inside += q.inside ? 1 : 0;
+    QCOMPARE(static_cast<int>(lines.size()) - 1, inside);
 }
 
 QTEST_MAIN(RunTest)

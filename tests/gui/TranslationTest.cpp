@@ -5,6 +5,8 @@
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QKeySequence>
+#include <QLocale>
 #include <QObject>
 #include <QTest>
 #include <QTranslator>
@@ -15,6 +17,11 @@ namespace {
 
 QString tr_main_window(const char* source) { return QCoreApplication::translate("mcdda::gui::MainWindow", source); }
 QString tr_editing(const char* source) { return QCoreApplication::translate("mcdda::gui::EditingTools", source); }
+QString tr_run(const char* source) { return QCoreApplication::translate("mcdda::gui::RunMenu", source); }
+QString tr_messages(const char* source, int n = -1)
+{
+    return QCoreApplication::translate("mcdda::gui::RunMessages", source, nullptr, n);
+}
 
 /// The access key of a menu text ("Be&rechnung" -> 'r').
 QChar mnemonic(const QString& text)
@@ -40,14 +47,6 @@ bool distinct_mnemonics(const QStringList& texts)
         seen.append(key);
     }
     return true;
-}
-
-/// The same for texts of MainWindow.
-bool distinct_mnemonics(std::initializer_list<const char*> sources)
-{
-    QStringList texts;
-    for (const char* source : sources) texts << tr_main_window(source);
-    return distinct_mnemonics(texts);
 }
 
 /// Installs the translations for `code` as `mcdda-gui --language code` does; they go when the
@@ -83,9 +82,8 @@ private slots:
         QTranslator translator;
         QVERIFY(translator.load(QStringLiteral(":/i18n/mcdda_de.qm")));
         QCoreApplication::installTranslator(&translator);
-        QCOMPARE(QCoreApplication::translate("mcdda::gui::MainWindow", "... and %n more", nullptr, 3),
-                 QStringLiteral("... und 3 weitere"));
-        QCOMPARE(QCoreApplication::translate("mcdda::gui::MainWindow", "Not meshed: %n error(s)", nullptr, 1),
+        QCOMPARE(tr_messages("... and %n more", 3), QStringLiteral("... und 3 weitere"));
+        QCOMPARE(tr_messages("Not meshed: %n error(s)", 1),
                  QStringLiteral("Nicht vernetzt: 1 Fehler"));
         QCoreApplication::removeTranslator(&translator);
     }
@@ -95,7 +93,7 @@ private slots:
         QTranslator translator;
         QVERIFY(translator.load(QLocale(QLocale::German, QLocale::Germany), QStringLiteral("mcdda"),
                                 QStringLiteral("_"), QStringLiteral(":/i18n")));
-        QCOMPARE(translator.translate("mcdda::gui::MainWindow", "&Help"), QStringLiteral("&Hilfe"));
+        QCOMPARE(translator.translate("mcdda::gui::HelpMenu", "&Help"), QStringLiteral("&Hilfe"));
     }
 
     void languageOptionGivesGermanMenus() {
@@ -105,32 +103,49 @@ private slots:
         // Main window menus.
         QCOMPARE(tr_main_window("&File"), QStringLiteral("&Datei"));
         QCOMPARE(tr_main_window("&Edit"), QStringLiteral("&Bearbeiten"));
-        QCOMPARE(tr_main_window("&View"), QStringLiteral("&Ansicht"));
-        QCOMPARE(tr_main_window("&Help"), QStringLiteral("&Hilfe"));
-        QCOMPARE(tr_main_window("&Export"), QStringLiteral("&Exportieren"));
+        QCOMPARE(QCoreApplication::translate("mcdda::gui::ViewMenu", "&View"), QStringLiteral("&Ansicht"));
+        QCOMPARE(QCoreApplication::translate("mcdda::gui::HelpMenu", "&Help"), QStringLiteral("&Hilfe"));
+        QCOMPARE(QCoreApplication::translate("mcdda::gui::ExportMenu", "&Export"), QStringLiteral("&Exportieren"));
         QCOMPARE(tr_main_window("&Save"), QStringLiteral("&Speichern"));
-        QCOMPARE(tr_main_window("&Undo"), QStringLiteral("&Rückgängig"));
+        QCOMPARE(tr_editing("&Undo"), QStringLiteral("&Rückgängig"));
         QCOMPARE(tr_editing("Draw &Joint"), QStringLiteral("&Kluft zeichnen"));
         // The Run menu.
-        QCOMPARE(tr_main_window("&Run"), QStringLiteral("Be&rechnung"));
-        QCOMPARE(tr_main_window("&Pause"), QStringLiteral("&Pause"));
-        QCOMPARE(tr_main_window("Res&ume"), QStringLiteral("&Fortsetzen"));
-        QCOMPARE(tr_main_window("&Stop"), QStringLiteral("&Abbrechen"));
-        QCOMPARE(tr_main_window("Results &Folder..."), QStringLiteral("Ergebnis&ordner..."));
-        QCOMPARE(QCoreApplication::translate("mcdda::gui::MainWindow", "Run completed: %n step(s).", nullptr, 1),
-                 QStringLiteral("Berechnung abgeschlossen: 1 Zeitschritt."));
-        QCOMPARE(QCoreApplication::translate("mcdda::gui::MainWindow", "Run completed: %n step(s).", nullptr, 40),
-                 QStringLiteral("Berechnung abgeschlossen: 40 Zeitschritte."));
+        QCOMPARE(tr_run("&Run"), QStringLiteral("Be&rechnung"));
+        QCOMPARE(tr_run("&Pause"), QStringLiteral("&Pause"));
+        QCOMPARE(tr_run("Res&ume"), QStringLiteral("&Fortsetzen"));
+        QCOMPARE(tr_run("&Stop"), QStringLiteral("&Abbrechen"));
+        QCOMPARE(tr_run("Results &Folder..."), QStringLiteral("Ergebnis&ordner..."));
+        QCOMPARE(tr_messages("Run completed: %n step(s).", 1), QStringLiteral("Berechnung abgeschlossen: 1 Zeitschritt."));
+        QCOMPARE(tr_messages("Run completed: %n step(s).", 40), QStringLiteral("Berechnung abgeschlossen: 40 Zeitschritte."));
         // Access keys stay unique in the menu bar and the Run menu.
-        QVERIFY(distinct_mnemonics({"&File", "&Edit", "&View", "&Run", "&Help"}));
-        QVERIFY(distinct_mnemonics({"&Mesh", "&Run", "&Pause", "&Stop", "Results &Folder..."}));
-        // The Edit menu: undo/redo of the window, the tools' entries.
-        QStringList edit{tr_main_window("&Undo"), tr_main_window("&Redo")};
+        QVERIFY(distinct_mnemonics(QStringList{tr_main_window("&File"), tr_main_window("&Edit"),
+                                               QCoreApplication::translate("mcdda::gui::ViewMenu", "&View"), tr_run("&Run"),
+                                               QCoreApplication::translate("mcdda::gui::HelpMenu", "&Help")}));
+        QVERIFY(distinct_mnemonics(QStringList{tr_run("&Mesh"), tr_run("&Run"), tr_run("&Pause"), tr_run("&Stop"),
+                                               tr_run("Results &Folder...")}));
+        // The Edit menu: undo/redo, the tools' entries.
+        QStringList edit{tr_editing("&Undo"), tr_editing("&Redo")};
         for (const char* source : {"&Select", "Draw &Region", "Draw &Joint", "&Fixed Point", "R&oller", "Point &Load",
                                    "Edge &Pressure", "&Measurement Point", "&Delete", "Add Joint Se&t..."})
             edit << tr_editing(source);
         QVERIFY(distinct_mnemonics(edit));
-        QVERIFY(distinct_mnemonics({"&Run", "Res&ume", "&Stop", "Results &Folder..."}));
+        QVERIFY(distinct_mnemonics(QStringList{tr_run("&Run"), tr_run("Res&ume"), tr_run("&Stop"), tr_run("Results &Folder...")}));
+        // The mesh statistics in Messages (issue 13, item 16).
+        QVERIFY(tr_messages("%1 blocks, %2 nodes, %3 triangles").contains(QStringLiteral("Blöcke")));
+    }
+
+    void germanShortcutsNumbersAndButtons() {
+        // Qt's own German texts (Debian's qt6-translations-l10n) and the German locale: Strg and
+        // Entf in shortcuts, Abbrechen on dialog buttons, a decimal comma (issue 13, item 16).
+        mcdda::i18n::Installed installed;
+        const QLocale before;
+        const auto owner = install(QStringLiteral("de"), &installed);
+        QVERIFY2(installed.qt, "Qt's German translation (qtbase_de.qm) was not found");
+        QCOMPARE(QKeySequence(Qt::CTRL | Qt::Key_Z).toString(QKeySequence::NativeText), QStringLiteral("Strg+Z"));
+        QCOMPARE(QKeySequence(Qt::Key_Delete).toString(QKeySequence::NativeText), QStringLiteral("Entf"));
+        QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), QStringLiteral("Abbrechen"));
+        QCOMPARE(QLocale().toString(1.5), QStringLiteral("1,5"));
+        QLocale::setDefault(before);
     }
 
     void englishNeedsNoTranslation() {

@@ -55,6 +55,19 @@ TEST(ModelValidation, NothingFixed) {
     EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Warning, "", "nothing is fixed"));
 }
 
+TEST(ModelValidation, AnEmptyModelOnlyLacksARegion) {
+    // A new model in the desktop program, before anything is drawn (issue 13, item 13): the
+    // missing region is the one thing to say, not "nothing is fixed".
+    Model empty;
+    empty.materials.push_back(Material{});
+    empty.materials[0].young_modulus = 1e9;
+    empty.materials[0].poisson_ratio = 0.25;
+    std::vector<Diagnostic> found;
+    validate_model(empty, found);
+    EXPECT_TRUE(has_diagnostic(found, Severity::Error, "/regions", "at least one region")) << all_messages(found);
+    for (const Diagnostic& d : found) EXPECT_EQ(d.message.find("nothing is fixed"), std::string::npos) << d.message;
+}
+
 TEST(ModelValidation, DegenerateAndSelfIntersectingPolygons) {
     expect_error({"/regions/0/boundary=[[0,0],[10,10],[10,0],[0,10]]"}, "/regions/0/boundary", "intersects itself");
     expect_error({"/regions/0/boundary=[[0,0],[5,5],[10,10]]"}, "/regions/0/boundary", "zero area");

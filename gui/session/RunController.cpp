@@ -1,4 +1,4 @@
-#include "run/RunController.hpp"
+#include "session/RunController.hpp"
 
 #include "run/RunLoop.hpp"
 #include "run/Simulation.hpp"

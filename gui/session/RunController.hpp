@@ -7,7 +7,7 @@
 /// files with RunOutput so that results stay on disk whatever the ending.
 
 #include "Preprocess.hpp"
-#include "run/ResultSnapshot.hpp"
+#include "view/ResultSnapshot.hpp"
 #include "run/RunOutput.hpp"
 
 #include <QMetaType>

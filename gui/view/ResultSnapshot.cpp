@@ -1,4 +1,4 @@
-#include "run/ResultSnapshot.hpp"
+#include "view/ResultSnapshot.hpp"
 
 #include "run/Simulation.hpp"
 

@@ -1,0 +1,134 @@
+#include "session/RunMessages.hpp"
+
+#include <QCoreApplication>
+#include <QLocale>
+
+#include <algorithm>
+
+namespace mcdda::gui {
+
+namespace {
+
+
+QString to_qt(const std::string& s) { return QString::fromStdString(s); }
+
+bool is_error(const Diagnostic& d) { return d.severity == Diagnostic::Severity::Error; }
+
+}  // namespace
+
+QStringList preprocess_report(const Preprocessed& p, const QString& source)
+{
+    QStringList lines;
+    lines << QCoreApplication::translate("mcdda::gui::RunMessages", "Model: %1").arg(source);
+    for (const Diagnostic& d : p.diagnostics) lines << to_qt(format_diagnostic(d));
+    if (p.ok) {
+        lines << mesh_report(p.statistics);
+        lines << QCoreApplication::translate("mcdda::gui::RunMessages", "Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms")
+                     .arg(1e3 * p.seconds_read, 0, 'f', 0)
+                     .arg(1e3 * p.seconds_validate, 0, 'f', 0)
+                     .arg(1e3 * p.seconds_cut, 0, 'f', 0)
+                     .arg(1e3 * p.seconds_mesh, 0, 'f', 0);
+    }
+    return lines;
+}
+
+QString mesh_report(const MeshStatistics& s)
+{
+    const QLocale locale;  // decimal comma in German
+    auto number = [&](double v) { return locale.toString(v, 'g', 4); };
+    QStringList histogram;
+    for (int k = 0; k < 6; ++k)
+        histogram << (k < 5 ? QStringLiteral("%1–%2°: %3").arg(10 * k).arg(10 * k + 10) : QStringLiteral("50+°: %3"))
+                         .arg(s.min_angle_histogram[k]);
+    return QCoreApplication::translate("mcdda::gui::RunMessages", "%1 blocks, %2 nodes, %3 triangles")
+               .arg(s.blocks)
+               .arg(s.nodes)
+               .arg(s.elements) +
+           QLatin1Char('\n') +
+           QCoreApplication::translate("mcdda::gui::RunMessages", "angles: smallest %1°, largest %2°")
+               .arg(number(s.min_angle_deg), number(s.max_angle_deg)) +
+           QLatin1Char('\n') +
+           QCoreApplication::translate("mcdda::gui::RunMessages", "areas: smallest %1 m², largest %2 m², total %3 m²")
+               .arg(number(s.min_area), number(s.max_area), number(s.total_area)) +
+           QLatin1Char('\n') +
+           QCoreApplication::translate("mcdda::gui::RunMessages", "sharpest block corner: %1°").arg(number(s.min_input_angle_deg)) +
+           QLatin1Char('\n') +
+           QCoreApplication::translate("mcdda::gui::RunMessages", "triangles by smallest angle: %1").arg(histogram.join(QStringLiteral(", ")));
+}
+
+QString mesh_summary(const Preprocessed& p)
+{
+    if (!p.ok) {
+        const int errors = static_cast<int>(std::count_if(p.diagnostics.begin(), p.diagnostics.end(), is_error));
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "Not meshed: %n error(s)", "", errors);
+    }
+    const MeshStatistics& s = p.statistics;
+    return QCoreApplication::translate("mcdda::gui::RunMessages", "%1 blocks, %2 nodes, %3 elements, smallest angle %4°")
+        .arg(s.blocks)
+        .arg(s.nodes)
+        .arg(s.elements)
+        .arg(QLocale().toString(s.min_angle_deg, 'f', 1));
+}
+
+QStringList error_lines(const Preprocessed& p)
+{
+    QStringList errors;
+    for (const Diagnostic& d : p.diagnostics)
+        if (is_error(d)) errors << to_qt(format_diagnostic(d));
+    if (errors.isEmpty())
+        errors << QCoreApplication::translate("mcdda::gui::RunMessages", "pre-processing stopped without a message");
+    return errors;
+}
+
+QString first_lines(const QStringList& lines, int count)
+{
+    QString text = QStringList(lines.mid(0, count)).join(QLatin1Char('\n'));
+    if (lines.size() > count)
+        text += QLatin1Char('\n') +
+                QCoreApplication::translate("mcdda::gui::RunMessages", "... and %n more", "", int(lines.size() - count));
+    return text;
+}
+
+QString progress_line(const RunProgress& p)
+{
+    return QCoreApplication::translate("mcdda::gui::RunMessages", "step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  "
+                                                "plastic iterations %8  yielding %9")
+        .arg(p.step)
+        .arg(p.total_steps)
+        .arg(p.time, 0, 'g', 6)
+        .arg(p.time_step, 0, 'g', 4)
+        .arg(p.open)
+        .arg(p.sliding)
+        .arg(p.locked)
+        .arg(p.plastic_iterations)
+        .arg(p.yielding);
+}
+
+QString iteration_line(const IterationInfo& info)
+{
+    return QCoreApplication::translate(
+               "mcdda::gui::RunMessages", "Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding", "",
+               info.yielding)
+        .arg(info.step)
+        .arg(info.iteration)
+        .arg(info.out_of_balance, 0, 'e', 2)
+        .arg(info.tolerance, 0, 'e', 0);
+}
+
+QString end_line(RunStatus status, int step, const QString& message)
+{
+    switch (status) {
+        case RunStatus::Completed: return QCoreApplication::translate("mcdda::gui::RunMessages", "Run completed: %n step(s).", "", step);
+        case RunStatus::Unbalanced: {
+            // The solver's message says "not in equilibrium: ..." itself: said once, translated.
+            const QString prefix = QStringLiteral("not in equilibrium: ");
+            const QString why = message.startsWith(prefix) ? message.mid(prefix.size()) : message;
+            return QCoreApplication::translate("mcdda::gui::RunMessages", "Run ended but the model is not in equilibrium: %1").arg(why);
+        }
+        case RunStatus::Cancelled: return QCoreApplication::translate("mcdda::gui::RunMessages", "Run stopped after step %1.").arg(step);
+        case RunStatus::Collapsed: return QCoreApplication::translate("mcdda::gui::RunMessages", "The model collapsed: %1").arg(message);
+        default: return QCoreApplication::translate("mcdda::gui::RunMessages", "The run failed: %1").arg(message);
+    }
+}
+
+}  // namespace mcdda::gui
