@@ -539,15 +539,12 @@ void MainWindow::showResult()
     else if (session_->lastSnapshot())
         view_->setResult(session_->lastSnapshot(), options);
     query_->refresh(view_->resultProbe());  // the query line follows the picture
+    result_bar_->showInfo(view_->resultInfo());
 }
 
 void MainWindow::onRunFinished(RunStatus status, const QString& message)
 {
-    if (looking_back_) {  // the slider goes to the last step below: the picture with it
-        looking_back_ = false;
-        shown_step_.clear();
-        showResult();
-    }
+    looking_back_ = false;  // the picture goes to the last saved step below
     status_bar_->hideProgress();
     const auto last = session_->lastSnapshot();
     const QString text = end_line(status, last ? last->step : 0, message);

@@ -17,17 +17,17 @@
 <context>
     <name>PvdFile</name>
     <message>
-        <location filename="../gui/results/PvdFile.cpp" line="19"/>
+        <location filename="../gui/results/PvdFile.cpp" line="20"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../gui/results/PvdFile.cpp" line="35"/>
+        <location filename="../gui/results/PvdFile.cpp" line="36"/>
         <source>%1 is not a valid collection: %2</source>
         <translation>%1 ist keine gültige Sammlung: %2</translation>
     </message>
     <message>
-        <location filename="../gui/results/PvdFile.cpp" line="36"/>
+        <location filename="../gui/results/PvdFile.cpp" line="37"/>
         <source>%1 holds no collection</source>
         <translation>%1 enthält keine Sammlung</translation>
     </message>
@@ -128,228 +128,238 @@
 <context>
     <name>mcdda::gui::EditingTools</name>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="120"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="124"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="124"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="128"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="131"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="135"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="146"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="150"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="153"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="150"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="154"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="156"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="153"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="157"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="156"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="160"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="157"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="161"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="158"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="162"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="159"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="163"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="161"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="165"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="162"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="164"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="165"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="167"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="171"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="172"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="171"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="175"/>
+        <source>&amp;Query Line</source>
+        <translation>Abfragel&amp;inie</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="176"/>
+        <source>Click the two ends of a line across the result picture: the Query dock plots the field shown along it</source>
+        <translation>Die beiden Enden einer Linie über das Ergebnisbild anklicken: das Abfrage-Fenster zeigt das Feld entlang der Linie</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="180"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="176"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="185"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="179"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="181"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="200"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="197"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="207"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="200"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="210"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="201"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="202"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="212"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="203"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="213"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="217"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="227"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="218"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="230"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="218"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="219"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="229"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="230"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="222"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="232"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="233"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="224"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="236"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="238"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="231"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="241"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="244"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="235"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="245"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="277"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="287"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="292"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="302"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="345"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="356"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -512,52 +522,52 @@
 <context>
     <name>mcdda::gui::HistoryPlot</name>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="25"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="27"/>
         <source>Measured displacement plotted</source>
         <translation>Dargestellte gemessene Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="28"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="30"/>
         <source>Plotted against time or a load (load-settlement curve)</source>
         <translation>Aufgetragen über der Zeit oder einer Last (Last-Setzungs-Kurve)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="48"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="50"/>
         <source>Plot</source>
         <translation>Darstellen</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="50"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="52"/>
         <source>against</source>
         <translation>über</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="89"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="93"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="92"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="96"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="94"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="98"/>
         <source>%1 (m)</source>
         <translation>%1 (m)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="123"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="128"/>
         <source>No history: run the model.</source>
         <translation>Kein Verlauf: Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="125"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="130"/>
         <source>The model has no measurement points.</source>
         <translation>Das Modell hat keine Messpunkte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="127"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="132"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -568,137 +578,165 @@
 <context>
     <name>mcdda::gui::JointSetDialog</name>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="22"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="42"/>
         <source>Add Joint Set</source>
         <translation>Kluftschar hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="33"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="54"/>
         <source>Direction of the traces, counter-clockwise from the x axis</source>
         <translation>Richtung der Spuren, gegen den Uhrzeigersinn von der x-Achse</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="35"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="55"/>
+        <source>set %1</source>
+        <translation>Schar %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="57"/>
+        <source>Name of the set (tree, messages, results)</source>
+        <translation>Name der Schar (Baum, Meldungen, Ergebnisse)</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="59"/>
+        <source>Apparent dip in the section: the angle of the traces from the horizontal, counter-clockwise. 0° is horizontal, 90° vertical, 30° rises to the right, 150° (or −30°) dips 30° to the right.</source>
+        <translation>Scheinbares Einfallen im Schnitt: Winkel der Spuren zur Horizontalen, gegen den Uhrzeigersinn. 0° ist horizontal, 90° vertikal, 30° steigt nach rechts an, 150° (oder −30°) fällt mit 30° nach rechts ein.</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="66"/>
         <source>Normal distance between neighbouring traces</source>
         <translation>Normalabstand benachbarter Spuren</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="38"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="70"/>
         <source>Limit to a box</source>
         <translation>Auf ein Rechteck begrenzen</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="40"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="72"/>
         <source>Without a box the traces cross the whole model</source>
         <translation>Ohne Rechteck durchqueren die Spuren das ganze Modell</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="49"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="82"/>
         <source>Smallest x of the box</source>
         <translation>Kleinstes x des Rechtecks</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="50"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="83"/>
         <source>Smallest y of the box</source>
         <translation>Kleinstes y des Rechtecks</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="51"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="84"/>
         <source>Largest x of the box</source>
         <translation>Größtes x des Rechtecks</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="52"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="85"/>
         <source>Largest y of the box</source>
         <translation>Größtes y des Rechtecks</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="55"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="88"/>
         <source>(default)</source>
         <translation>(Standard)</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="58"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="91"/>
         <source>Joint material %1</source>
         <translation>Kluftmaterial %1</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="62"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="95"/>
         <source>Share of each trace that is joint; below 100 % the traces are cut into segments separated by rock bridges</source>
         <translation>Anteil jeder Spur, der Kluft ist; unter 100 % wird jede Spur in Abschnitte zerlegt, getrennt durch Felsbrücken</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="65"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="98"/>
         <source>Length of each joint segment along a trace</source>
         <translation>Länge jedes Kluftabschnitts entlang einer Spur</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="68"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="101"/>
         <source>Shift of the segment pattern from one trace to the next, in % of the period (segment plus bridge), so that the bridges do not line up</source>
         <translation>Verschiebung des Abschnittsmusters von einer Spur zur nächsten, in % der Periode (Abschnitt plus Brücke), damit die Brücken nicht in einer Linie liegen</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="79"/>
-        <source>Angle</source>
-        <translation>Winkel</translation>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="112"/>
+        <source>Name</source>
+        <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="80"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="113"/>
+        <source>Angle from horizontal</source>
+        <translation>Winkel zur Horizontalen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="203"/>
+        <source>%n trace(s) cut rock</source>
+        <translation>
+            <numerusform>%n Spur schneidet Fels</numerusform>
+            <numerusform>%n Spuren schneiden Fels</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="115"/>
         <source>Spacing</source>
         <translation>Abstand</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="81"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="116"/>
         <source>Origin x</source>
         <translation>Ursprung x</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="82"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="117"/>
         <source>Origin y</source>
         <translation>Ursprung y</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="84"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="119"/>
         <source>x min, y min, x max, y max</source>
         <translation>x min, y min, x max, y max</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="85"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="120"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="86"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="121"/>
         <source>Persistence</source>
         <translation>Durchtrennungsgrad</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="87"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="122"/>
         <source>Trace length</source>
         <translation>Spurlänge</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="88"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="123"/>
         <source>Stagger</source>
         <translation>Versatz</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="138"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="189"/>
         <source>The spacing must be positive.</source>
         <translation>Der Abstand muss positiv sein.</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="141"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="192"/>
         <source>The box needs x min &lt; x max and y min &lt; y max.</source>
         <translation>Das Rechteck braucht x min &lt; x max und y min &lt; y max.</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="142"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="193"/>
         <source>The persistence must be above 0 %.</source>
         <translation>Der Durchtrennungsgrad muss über 0 % liegen.</translation>
     </message>
     <message>
-        <location filename="../gui/dialogs/JointSetDialog.cpp" line="144"/>
+        <location filename="../gui/dialogs/JointSetDialog.cpp" line="195"/>
         <source>A persistence below 100 % needs a positive trace length.</source>
         <translation>Ein Durchtrennungsgrad unter 100 % braucht eine positive Spurlänge.</translation>
     </message>
@@ -706,265 +744,305 @@
 <context>
     <name>mcdda::gui::LoadForm</name>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="72"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="73"/>
         <source>Load tables</source>
         <translation>Lasttabellen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="81"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="76"/>
+        <source>The load table shown below: a factor against time (or step) that loads may follow</source>
+        <translation>Die unten gezeigte Lasttabelle: ein Faktor über der Zeit (oder dem Schritt), dem Lasten folgen können</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="83"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="84"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="86"/>
         <source>Delete</source>
         <translation>Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="91"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="93"/>
         <source>Table</source>
         <translation>Tabelle</translation>
     </message>
     <message>
         <location filename="../gui/panels/LoadForm.cpp" line="96"/>
+        <source>Name of the load table, as loads refer to it</source>
+        <translation>Name der Lasttabelle, unter dem Lasten auf sie verweisen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="99"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="99"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="101"/>
+        <source>Whether the table&apos;s abscissa is the time (s) or the step number</source>
+        <translation>Ob die Abszisse der Tabelle die Zeit (s) oder die Schrittnummer ist</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="103"/>
         <source>Step number</source>
         <translation>Schrittnummer</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="100"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="104"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="102"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="106"/>
         <source>Variable</source>
         <translation>Veränderliche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="103"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="107"/>
         <source>Extrapolate (else hold the last factor)</source>
         <translation>Extrapolieren (sonst letzten Faktor halten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="105"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="109"/>
         <source>Beyond the last point, continue the last segment&apos;s slope</source>
         <translation>Nach dem letzten Punkt die Steigung des letzten Abschnitts fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="115"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="119"/>
         <source>Add Row</source>
         <translation>Zeile hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="118"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="122"/>
         <source>Remove Row</source>
         <translation>Zeile entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="127"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="163"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="185"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="131"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="170"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="194"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="140"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="144"/>
         <source>Point loads and edge pressures</source>
         <translation>Punktlasten und Kantendrücke</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="149"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="147"/>
+        <source>The point load or edge pressure shown below</source>
+        <translation>Die unten gezeigte Einzellast oder Randdruck</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="154"/>
         <source>Load</source>
         <translation>Last</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="150"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="152"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="155"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="158"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="151"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="156"/>
+        <source>x component of the point load, per metre out of plane</source>
+        <translation>x-Komponente der Einzellast, je Meter senkrecht zur Ebene</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="157"/>
         <source>Force fx</source>
         <translation>Kraft fx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="153"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="159"/>
+        <source>y component of the point load, per metre out of plane (negative = downwards)</source>
+        <translation>y-Komponente der Einzellast, je Meter senkrecht zur Ebene (negativ = nach unten)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="160"/>
         <source>Force fy</source>
         <translation>Kraft fy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="154"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="161"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="155"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="162"/>
         <source>Normal pressure; positive pushes into the material</source>
         <translation>Normaldruck; positiv drückt in das Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="156"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="163"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="161"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="168"/>
         <source>The table whose factor multiplies the load; constant = factor 1</source>
         <translation>Die Tabelle, deren Faktor die Last multipliziert; konstant = Faktor 1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="162"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="169"/>
         <source>Load table</source>
         <translation>Lasttabelle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="176"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="183"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="178"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="180"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="185"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="188"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="179"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="186"/>
+        <source>x component of the acceleration of gravity</source>
+        <translation>x-Komponente der Erdbeschleunigung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="187"/>
         <source>gx</source>
         <translation>gx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="181"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="189"/>
+        <source>y component of the acceleration of gravity (−9.81 m/s²: standard)</source>
+        <translation>y-Komponente der Erdbeschleunigung (−9,81 m/s²: Standard)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LoadForm.cpp" line="190"/>
         <source>gy</source>
         <translation>gy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="182"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="191"/>
         <source>Standard (0, −9.81)</source>
         <translation>Standard (0, −9,81)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="204"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="213"/>
         <source>Time [s]</source>
         <translation>Zeit [s]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="204"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="213"/>
         <source>Step [–]</source>
         <translation>Schritt [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="204"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="213"/>
         <source>Factor [–]</source>
         <translation>Faktor [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="216"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="225"/>
         <source>constant</source>
         <translation>konstant</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="218"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="227"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="225"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="234"/>
         <source>Point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="226"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="235"/>
         <source>Edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="359"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="368"/>
         <source>Not applied: row %1: %2 &quot;%3&quot; is not a number</source>
         <translation>Nicht übernommen: Zeile %1: %2 „%3“ ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="361"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="370"/>
         <source>abscissa</source>
         <translation>Abszisse</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="361"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="370"/>
         <source>factor</source>
         <translation>Faktor</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="373"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="482"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="498"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="382"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="491"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="507"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="379"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="388"/>
         <source>Change load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="380"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="485"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="503"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="389"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="494"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="512"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="400"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="409"/>
         <source>Not added: %1</source>
         <translation>Nicht hinzugefügt: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="405"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="414"/>
         <source>Add load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="407"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="416"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="420"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="429"/>
         <source>Not deleted: load table &quot;%1&quot; is used by point load &quot;%2&quot;</source>
         <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Punktlast „%2“ verwendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="427"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="436"/>
         <source>Not deleted: load table &quot;%1&quot; is used by edge pressure &quot;%2&quot;</source>
         <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Kantendruck „%2“ verwendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="438"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="447"/>
         <source>Delete load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ löschen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="439"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="448"/>
         <source>Deleted &quot;%1&quot;.</source>
         <translation>„%1“ gelöscht.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="466"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="475"/>
         <source>Change point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="479"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="488"/>
         <source>Change edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="502"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="511"/>
         <source>Change gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
@@ -972,178 +1050,177 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="88"/>
+        <location filename="../gui/MainWindow.cpp" line="91"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="145"/>
+        <location filename="../gui/MainWindow.cpp" line="125"/>
+        <source>Query</source>
+        <translation>Abfrage</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="157"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="146"/>
+        <location filename="../gui/MainWindow.cpp" line="158"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="149"/>
+        <location filename="../gui/MainWindow.cpp" line="161"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="150"/>
+        <location filename="../gui/MainWindow.cpp" line="162"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="153"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="154"/>
+        <location filename="../gui/MainWindow.cpp" line="166"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="157"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="177"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="169"/>
+        <location filename="../gui/MainWindow.cpp" line="181"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="170"/>
+        <location filename="../gui/MainWindow.cpp" line="182"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="173"/>
+        <location filename="../gui/MainWindow.cpp" line="185"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="181"/>
+        <location filename="../gui/MainWindow.cpp" line="193"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <location filename="../gui/MainWindow.cpp" line="196"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="116"/>
+        <location filename="../gui/MainWindow.cpp" line="118"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="255"/>
+        <location filename="../gui/MainWindow.cpp" line="257"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="231"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../gui/MainWindow.cpp" line="70"/>
-        <location filename="../gui/MainWindow.cpp" line="233"/>
+        <location filename="../gui/MainWindow.cpp" line="73"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="234"/>
+        <location filename="../gui/MainWindow.cpp" line="238"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="241"/>
+        <location filename="../gui/MainWindow.cpp" line="245"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="242"/>
+        <location filename="../gui/MainWindow.cpp" line="246"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="255"/>
+        <location filename="../gui/MainWindow.cpp" line="257"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="258"/>
+        <location filename="../gui/MainWindow.cpp" line="259"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="269"/>
+        <location filename="../gui/MainWindow.cpp" line="279"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="269"/>
+        <location filename="../gui/MainWindow.cpp" line="279"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="289"/>
+        <location filename="../gui/MainWindow.cpp" line="295"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="74"/>
+        <location filename="../gui/MainWindow.cpp" line="77"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="108"/>
+        <location filename="../gui/MainWindow.cpp" line="111"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="119"/>
+        <location filename="../gui/MainWindow.cpp" line="121"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="123"/>
+        <location filename="../gui/MainWindow.cpp" line="133"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="322"/>
+        <location filename="../gui/MainWindow.cpp" line="328"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="350"/>
+        <location filename="../gui/MainWindow.cpp" line="356"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="351"/>
+        <location filename="../gui/MainWindow.cpp" line="357"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="409"/>
+        <location filename="../gui/MainWindow.cpp" line="406"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="410"/>
+        <location filename="../gui/MainWindow.cpp" line="407"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
@@ -1153,7 +1230,7 @@
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="501"/>
+        <location filename="../gui/MainWindow.cpp" line="502"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1161,12 +1238,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <location filename="../gui/MainWindow.cpp" line="526"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="525"/>
+        <location filename="../gui/MainWindow.cpp" line="526"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
@@ -1176,47 +1253,47 @@
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="551"/>
+        <location filename="../gui/MainWindow.cpp" line="552"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="559"/>
+        <location filename="../gui/MainWindow.cpp" line="560"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="559"/>
+        <location filename="../gui/MainWindow.cpp" line="560"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="560"/>
+        <location filename="../gui/MainWindow.cpp" line="561"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="129"/>
+        <location filename="../gui/MainWindow.cpp" line="137"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="209"/>
+        <location filename="../gui/MainWindow.cpp" line="221"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="369"/>
+        <location filename="../gui/MainWindow.cpp" line="373"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="433"/>
+        <location filename="../gui/MainWindow.cpp" line="432"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="434"/>
+        <location filename="../gui/MainWindow.cpp" line="433"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -1224,127 +1301,127 @@
 <context>
     <name>mcdda::gui::MeshForm</name>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="53"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="55"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="54"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="57"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="55"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="58"/>
         <source>Target longest edge of a triangle; 0 = automatic (1/20 of the model&apos;s diagonal)</source>
         <translation>Angestrebte längste Dreieckskante; 0 = automatisch (1/20 der Modelldiagonale)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="56"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="59"/>
         <source>Element size</source>
         <translation>Elementgröße</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="57"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="60"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="58"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="61"/>
         <source>Smallest angle a triangle may have, (0°, 34°]</source>
         <translation>Kleinster zulässiger Dreieckswinkel, (0°, 34°]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="59"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="62"/>
         <source>Minimum angle</source>
         <translation>Mindestwinkel</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="62"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="65"/>
         <source>Growth of the size away from a local refinement: size = local size + grading × (distance − radius)</source>
         <translation>Zunahme der Größe außerhalb einer lokalen Verfeinerung: Größe = lokale Größe + Gradierung × (Abstand − Radius)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="64"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="67"/>
         <source>Grading [–]</source>
         <translation>Gradierung [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="65"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="68"/>
         <source>elements</source>
         <translation>Elemente</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="68"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="71"/>
         <source>The mesher refuses a model whose size field asks for more triangles</source>
         <translation>Der Vernetzer lehnt ein Modell ab, dessen Größenfeld mehr Dreiecke verlangt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="69"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="72"/>
         <source>Element limit</source>
         <translation>Elementgrenze</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="73"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="76"/>
         <source>At [m]</source>
         <translation>Bei [m]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="73"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="76"/>
         <source>Size [m]</source>
         <translation>Größe [m]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="73"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="76"/>
         <source>Radius [m]</source>
         <translation>Radius [m]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="79"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="82"/>
         <source>Local refinements</source>
         <translation>Lokale Verfeinerungen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="82"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="85"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="109"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="112"/>
         <source>(%1, %2)</source>
         <translation>(%1, %2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="110"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="113"/>
         <source>(%1, %2) – (%3, %4)</source>
         <translation>(%1, %2) – (%3, %4)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="139"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="142"/>
         <source>Not applied: local refinement %1: %2 &quot;%3&quot; is not a number</source>
         <translation>Nicht übernommen: lokale Verfeinerung %1: %2 „%3“ ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="141"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="144"/>
         <source>size</source>
         <translation>Größe</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="141"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="144"/>
         <source>radius</source>
         <translation>Radius</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="152"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="155"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="156"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="159"/>
         <source>Change mesh controls</source>
         <translation>Vernetzungsvorgaben ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/MeshForm.cpp" line="157"/>
+        <location filename="../gui/panels/MeshForm.cpp" line="160"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -1360,146 +1437,156 @@
 <context>
     <name>mcdda::gui::ModelDocument</name>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="50"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="52"/>
         <source>The model has no file yet; choose one with Save As.</source>
         <translation>Das Modell hat noch keine Datei; wählen Sie eine mit „Speichern unter“.</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="60"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="62"/>
         <source>Cannot save %1: %2</source>
         <translation>%1 kann nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="107"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="109"/>
         <source>Add fixed point &quot;%1&quot;</source>
         <translation>Festpunkt „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="114"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="116"/>
         <source>Add point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="121"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="123"/>
         <source>Add edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="128"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="130"/>
         <source>Add measurement point &quot;%1&quot;</source>
         <translation>Messpunkt „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="149"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="151"/>
         <source>Add joint set &quot;%1&quot;</source>
         <translation>Kluftschar „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="156"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="158"/>
         <source>Add material &quot;%1&quot;</source>
         <translation>Material „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="164"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="166"/>
         <source>Add joint material &quot;%1&quot;</source>
         <translation>Kluftmaterial „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="173"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="175"/>
         <source>Assign a material to %1</source>
         <translation>%1 ein Material zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="181"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="183"/>
         <source>Assign a joint material to %1</source>
         <translation>%1 ein Kluftmaterial zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="192"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="194"/>
         <source>Move %1</source>
         <translation>%1 verschieben</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="200"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="202"/>
         <source>Delete %1</source>
         <translation>%1 löschen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="213"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="215"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="214"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="216"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="215"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="217"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="216"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="218"/>
         <source>roller %1</source>
         <translation>Rollenlager %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="217"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="219"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="218"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="220"/>
         <source>pressure %1</source>
         <translation>Kantendruck %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="219"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="221"/>
         <source>point %1</source>
         <translation>Punkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="222"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="224"/>
         <source>hole %1 of %2</source>
         <translation>Loch %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="223"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="225"/>
         <source>vertex %1 of %2</source>
         <translation>Eckpunkt %1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="238"/>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="240"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
     <name>mcdda::gui::ModelTree</name>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="46"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="47"/>
         <source>Item</source>
         <translation>Eintrag</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="46"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="47"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="73"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="74"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="78"/>
-        <location filename="../gui/widgets/ModelTree.cpp" line="95"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="79"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="96"/>
         <source>no material</source>
         <translation>kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="79"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="81"/>
         <source>%1, %n vertices</source>
         <translation>
             <numerusform>%1, %n Eckpunkt</numerusform>
@@ -1507,12 +1594,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="83"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="84"/>
         <source>hole %1</source>
         <translation>Loch %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="83"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="84"/>
         <source>%n vertices</source>
         <translation>
             <numerusform>%n Eckpunkt</numerusform>
@@ -1520,17 +1607,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="90"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="91"/>
         <source>Blocks</source>
         <translation>Blöcke</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="98"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="99"/>
         <source>block %1</source>
         <translation>Block %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="99"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="100"/>
         <source>%1, %2 m², %n elements</source>
         <translation>
             <numerusform>%1, %2 m², %n Element</numerusform>
@@ -1538,107 +1625,107 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="103"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="104"/>
         <source>Joints</source>
         <translation>Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="104"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="105"/>
         <source>Explicit</source>
         <translation>Einzelklüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="108"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="109"/>
         <source>spacing %1 m</source>
         <translation>Abstand %1 m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="110"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="111"/>
         <source>, persistence %1 %, joints %2 m long</source>
         <translation>, Durchtrennungsgrad %1 %, Klüfte %2 m lang</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="111"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="112"/>
         <source>Set %1</source>
         <translation>Kluftschar %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="120"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="121"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="121"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="122"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="126"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
         <source>rock/soil</source>
         <translation>Fels/Boden</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="129"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="129"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="130"/>
         <source>Supports</source>
         <translation>Auflager</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="131"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="135"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="136"/>
         <source>roller %1 to %2</source>
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="137"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="138"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="139"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="140"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="142"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="143"/>
         <source>pressure %1 Pa</source>
         <translation>Kantendruck %1 Pa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="144"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="145"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="149"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="150"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="151"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="152"/>
         <source>%1 to %2, EA %3 MN/m</source>
         <translation>%1 bis %2, EA %3 MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="155"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="156"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="169"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -1646,27 +1733,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="171"/>
         <source>excavates %1</source>
         <translation>bricht %1 aus</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="171"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="172"/>
         <source>builds %1</source>
         <translation>baut %1 ein</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="172"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="173"/>
         <source>installs %1</source>
         <translation>setzt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="173"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
         <source>removes %1</source>
         <translation>entfernt %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="175"/>
         <source>%n material change(s)</source>
         <translation>
             <numerusform>%n Materialänderung</numerusform>
@@ -1674,7 +1761,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="175"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
@@ -1682,366 +1769,566 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="82"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="123"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="83"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="175"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="87"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="91"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="91"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="94"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="107"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="110"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="124"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="176"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
+        <source>The material shown below; Assign to Selection gives it to the selected region</source>
+        <translation>Das unten gezeigte Material; „Auswahl zuweisen“ gibt es dem gewählten Bereich</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
         <source>Add a material (a copy of the one shown)</source>
         <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="462"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="132"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="496"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="498"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="134"/>
         <source>The region selected in the view or the Model tree is made of this material</source>
         <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="135"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="139"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
+        <source>Name of the material, as the tree and the legend show it</source>
+        <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="137"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
         <source>Young&apos;s modulus E</source>
         <translation>Elastizitätsmodul E</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
+        <source>Young&apos;s modulus E of the intact rock, &gt; 0</source>
+        <translation>Elastizitätsmodul E des intakten Gesteins, &gt; 0</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
         <source>Poisson&apos;s ratio ν [–]</source>
         <translation>Querdehnzahl ν [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
+        <source>Poisson&apos;s ratio ν, in (−1, 0.5)</source>
+        <translation>Querdehnzahl ν, in (−1; 0,5)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
         <source>Unit weight γ</source>
         <translation>Wichte γ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
+        <source>Unit weight γ = ρ g (the density is γ / 9.81 m/s²); loads the model through gravity</source>
+        <translation>Wichte γ = ρ g (die Dichte ist γ / 9,81 m/s²); belastet das Modell über die Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="160"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="206"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="298"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="301"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="304"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="312"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
         <source>Cohesion c</source>
         <translation>Kohäsion c</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="145"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="153"/>
+        <source>Mohr–Coulomb cohesion c, ≥ 0</source>
+        <translation>Mohr-Coulomb-Kohäsion c, ≥ 0</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="157"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
         <source>Friction angle φ</source>
         <translation>Reibungswinkel φ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="156"/>
+        <source>Mohr–Coulomb friction angle φ, in [0°, 90°)</source>
+        <translation>Mohr-Coulomb-Reibungswinkel φ, in [0°, 90°)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="158"/>
         <source>Dilation angle ψ</source>
         <translation>Dilatanzwinkel ψ</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="159"/>
+        <source>Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)</source>
+        <translation>Dilatanzwinkel ψ des plastischen Fließens, 0 ≤ ψ ≤ φ (ψ = φ: assoziiertes Fließen)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="161"/>
         <source>Tensile strength</source>
         <translation>Zugfestigkeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="162"/>
+        <source>Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension</source>
+        <translation>Zugfestigkeitsgrenze der Mohr-Coulomb-Fläche, ≥ 0; 0 = kein Zug</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="163"/>
         <source>Plastic (Mohr–Coulomb)</source>
         <translation>Plastisch (Mohr-Coulomb)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
+        <source>Whether the material yields (Mohr–Coulomb); off = elastic whatever the stress</source>
+        <translation>Ob das Material plastifiziert (Mohr-Coulomb); aus = elastisch bei jeder Spannung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="167"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="322"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="178"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
+        <source>The joint material shown below; Assign to Selection gives it to the selected joint</source>
+        <translation>Das unten gezeigte Kluftmaterial; „Auswahl zuweisen“ gibt es der gewählten Kluft</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="182"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <source>Name of the joint material</source>
+        <translation>Name des Kluftmaterials</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
         <source>Friction angle φj</source>
         <translation>Reibungswinkel φj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="191"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="205"/>
+        <source>Coulomb friction angle of the joint surfaces, in [0°, 90°)</source>
+        <translation>Coulomb-Reibungswinkel der Kluftflächen, in [0°, 90°)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="207"/>
         <source>Cohesion cj</source>
         <translation>Kohäsion cj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="208"/>
+        <source>Cohesion of the joint, ≥ 0; lost once the joint has slipped or opened</source>
+        <translation>Kohäsion der Kluft, ≥ 0; geht verloren, sobald die Kluft gleitet oder sich öffnet</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="210"/>
         <source>Tensile strength tj</source>
         <translation>Zugfestigkeit tj</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="197"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
+        <source>Tensile strength of the joint, ≥ 0; 0 = the joint opens under any tension</source>
+        <translation>Zugfestigkeit der Kluft, ≥ 0; 0 = die Kluft öffnet sich bei jedem Zug</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="216"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="214"/>
         <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
         <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="215"/>
         <source>Normal stiffness kn</source>
         <translation>Normalsteifigkeit kn</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="198"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
         <source>Shear stiffness; 0 = automatic</source>
         <translation>Schubsteifigkeit; 0 = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
         <source>Shear stiffness ks</source>
         <translation>Schubsteifigkeit ks</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="239"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="240"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="293"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="225"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
+        <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding</source>
+        <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
+        <source>Number of time steps; the loads follow their tables over the time they cover</source>
+        <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="248"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="249"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="250"/>
+        <source>Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps</source>
+        <translation>Anfänglicher und größter Zeitschritt; er wird automatisch verkleinert, wenn sich ein Schritt zu weit bewegt oder nicht konvergiert. In einer statischen Berechnung ordnet die Zeit nur die Laststufen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="231"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
         <source>Max displacement ratio [–]</source>
         <translation>Max. Verschiebungsverhältnis [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
         <source>Penalty</source>
         <translation>Penalty</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="239"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="240"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <source>Every how many steps the results are written (the last step always is)</source>
+        <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
+        <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="290"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="291"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="294"/>
+        <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
+        <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="295"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="299"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="300"/>
+        <source>Horizontal in-situ stress, compression positive</source>
+        <translation>Horizontale Primärspannung, Druck positiv</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="302"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="303"/>
+        <source>Vertical in-situ stress, compression positive</source>
+        <translation>Vertikale Primärspannung, Druck positiv</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="305"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="306"/>
+        <source>In-situ shear stress</source>
+        <translation>Primäre Schubspannung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="307"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="311"/>
+        <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
+        <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="313"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="314"/>
+        <source>Out-of-plane in-situ stress, compression positive</source>
+        <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="315"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="316"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="317"/>
+        <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
+        <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="320"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="319"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="324"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="321"/>
+        <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
+        <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="353"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="358"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="462"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="496"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="498"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="484"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="501"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="518"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="535"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="512"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="522"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="546"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="547"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="573"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="598"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="624"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="581"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="607"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="632"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="658"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="551"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="577"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="602"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="628"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="585"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="611"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="636"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="662"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::QueryLine</name>
+    <message>
+        <location filename="../gui/results/QueryLine.cpp" line="32"/>
+        <location filename="../gui/results/QueryLine.cpp" line="43"/>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::QueryPlot</name>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="22"/>
+        <source>Draw a line with Edit ▸ Query Line to plot the field shown along it.</source>
+        <translation>Mit Bearbeiten ▸ Abfragelinie eine Linie zeichnen, um das gezeigte Feld entlang der Linie darzustellen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="24"/>
+        <source>Export CSV...</source>
+        <translation>CSV exportieren...</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="26"/>
+        <source>Save distance, x, y and value of the points on the mesh as CSV</source>
+        <translation>Abstand, x, y und Wert der Punkte auf dem Netz als CSV speichern</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="29"/>
+        <source>Export query line</source>
+        <translation>Abfragelinie exportieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="29"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="31"/>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="37"/>
+        <source>distance along the line (m)</source>
+        <translation>Abstand entlang der Linie (m)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="97"/>
+        <source>The picture shows no result: run the model or choose a saved step.</source>
+        <translation>Das Bild zeigt kein Ergebnis: das Modell berechnen oder einen gespeicherten Schritt wählen.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/results/QueryPlot.cpp" line="98"/>
+        <source>%1 from (%2, %3) to (%4, %5) m: %n point(s) on the mesh</source>
+        <translation>
+            <numerusform>%1 von (%2, %3) bis (%4, %5) m: %n Punkt auf dem Netz</numerusform>
+            <numerusform>%1 von (%2, %3) bis (%4, %5) m: %n Punkte auf dem Netz</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2060,74 +2347,173 @@
 <context>
     <name>mcdda::gui::ResultToolBar</name>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="9"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="36"/>
         <source>Results</source>
         <translation>Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="13"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="40"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="15"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="42"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="16"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="43"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="17"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="44"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="18"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="45"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="19"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="46"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="20"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="47"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="21"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="48"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="22"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="49"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="23"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="50"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="24"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="28"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="57"/>
+        <source>compression +</source>
+        <translation>Druck +</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="58"/>
+        <source>tension +</source>
+        <translation>Zug +</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="59"/>
+        <source>Sign of the stresses shown. Compression positive (as RS2, PLAXIS and UDEC): σ1 is the major compressive stress, σ1 ≥ σ3. Tension positive: the result files&apos; convention.</source>
+        <translation>Vorzeichen der gezeigten Spannungen. Druck positiv (wie RS2, PLAXIS und UDEC): σ1 ist die größte Druckspannung, σ1 ≥ σ3. Zug positiv: die Konvention der Ergebnisdateien.</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="64"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="33"/>
-        <source>Scale factor of the drawn displacements (0 = undeformed)</source>
-        <translation>Überhöhungsfaktor der gezeichneten Verschiebungen (0 = unverformt)</translation>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="67"/>
+        <source>Scale factor of the drawn displacements: 0 = undeformed; one step below 0 = auto, the largest displacement drawn as 5 % of the model&apos;s size</source>
+        <translation>Überhöhung der gezeichneten Verschiebungen: 0 = unverformt; eine Stufe unter 0 = auto, die größte Verschiebung als 5 % der Modellgröße gezeichnet</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="70"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="110"/>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="81"/>
+        <source>Contacts</source>
+        <translation>Kontakte</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="85"/>
+        <source>Draw the contact forces (lines along the force, the largest 6 % of the model long), joint slip and opening, and the bolts of the saved step shown</source>
+        <translation>Kontaktkräfte (Linien in Kraftrichtung, die größte 6 % der Modellgröße lang), Kluftgleiten und -öffnung und die Anker des gezeigten gespeicherten Schritts zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="92"/>
+        <source>Rainbow</source>
+        <translation>Regenbogen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="93"/>
+        <source>Viridis</source>
+        <translation>Viridis</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="94"/>
+        <source>Grey</source>
+        <translation>Grau</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="95"/>
+        <source>Blue–white–red</source>
+        <translation>Blau–Weiß–Rot</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="96"/>
+        <source>Colour map of the scale</source>
+        <translation>Farbskala</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="102"/>
+        <source>smooth</source>
+        <translation>stufenlos</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="103"/>
+        <source> bands</source>
+        <translation> Stufen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="104"/>
+        <source>Number of colour bands (contours); smooth = a continuous scale</source>
+        <translation>Anzahl der Farbstufen (Isoflächen); stufenlos = kontinuierliche Skala</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="107"/>
+        <source>Range</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="118"/>
+        <source>Lower end of the colour scale in the legend&apos;s units; empty = automatic</source>
+        <translation>Unteres Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="119"/>
+        <source>Upper end of the colour scale in the legend&apos;s units; empty = automatic</source>
+        <translation>Oberes Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="174"/>
+        <source>×%1 (auto)</source>
+        <translation>×%1 (auto)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="177"/>
+        <source>⚠ %n element(s) drawn inside out: lower the scale</source>
+        <translation>
+            <numerusform>⚠ %n Element umgestülpt gezeichnet: Überhöhung verringern</numerusform>
+            <numerusform>⚠ %n Elemente umgestülpt gezeichnet: Überhöhung verringern</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2280,22 +2666,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="123"/>
+        <location filename="../gui/session/RunMessages.cpp" line="126"/>
         <source>Run ended but the model is not in equilibrium: %1</source>
         <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="124"/>
+        <location filename="../gui/session/RunMessages.cpp" line="128"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="125"/>
+        <location filename="../gui/session/RunMessages.cpp" line="129"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="126"/>
+        <location filename="../gui/session/RunMessages.cpp" line="130"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
@@ -2358,6 +2744,30 @@
         <location filename="../gui/results/StepSlider.cpp" line="78"/>
         <source>step %1 (%2)</source>
         <translation>Zeitschritt %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::UnbalancedPlot</name>
+    <message>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="29"/>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="43"/>
+        <source>unbalanced-force ratio</source>
+        <translation>Ungleichgewichtsverhältnis</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="32"/>
+        <source>equilibrium limit</source>
+        <translation>Gleichgewichtsgrenze</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="40"/>
+        <source>step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="55"/>
+        <source>Largest out-of-balance nodal force over the largest applied force, per step; a run ending above the dashed limit is not in equilibrium</source>
+        <translation>Größte Ungleichgewichtskraft an einem Knoten durch die größte aufgebrachte Kraft, je Schritt; eine Berechnung, die über der gestrichelten Grenze endet, ist nicht im Gleichgewicht</translation>
     </message>
 </context>
 <context>
@@ -2451,110 +2861,148 @@
 <context>
     <name>mcdda::gui::WindowStatusBar</name>
     <message>
-        <location filename="../gui/widgets/WindowStatusBar.cpp" line="31"/>
+        <location filename="../gui/widgets/WindowStatusBar.cpp" line="32"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::form</name>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="48"/>
+        <source>automatic</source>
+        <translation>automatisch</translation>
     </message>
 </context>
 <context>
     <name>mcdda::view</name>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="37"/>
-        <location filename="../gui/view/ResultScene.cpp" line="49"/>
+        <location filename="../gui/view/ResultScene.cpp" line="53"/>
         <source>elastic</source>
         <translation>elastisch</translation>
     </message>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="38"/>
-        <location filename="../gui/view/ResultScene.cpp" line="49"/>
+        <location filename="../gui/view/ResultScene.cpp" line="53"/>
         <source>yielded before</source>
         <translation>früher plastifiziert</translation>
     </message>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="39"/>
-        <location filename="../gui/view/ResultScene.cpp" line="49"/>
+        <location filename="../gui/view/ResultScene.cpp" line="53"/>
         <source>yielding now</source>
         <translation>plastifiziert jetzt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="74"/>
+        <location filename="../gui/view/ResultScene.cpp" line="78"/>
         <source>plastic state</source>
         <translation>plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="75"/>
+        <location filename="../gui/view/ResultScene.cpp" line="79"/>
         <source>plastic strain</source>
         <translation>plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="76"/>
+        <location filename="../gui/view/ResultScene.cpp" line="80"/>
         <source>displacement</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="77"/>
+        <location filename="../gui/view/ResultScene.cpp" line="81"/>
         <source>x displacement</source>
         <translation>Verschiebung x</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="78"/>
+        <location filename="../gui/view/ResultScene.cpp" line="82"/>
         <source>y displacement</source>
         <translation>Verschiebung y</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="79"/>
+        <location filename="../gui/view/ResultScene.cpp" line="83"/>
         <source>stress xx</source>
         <translation>Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="80"/>
+        <location filename="../gui/view/ResultScene.cpp" line="84"/>
         <source>stress yy</source>
         <translation>Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="81"/>
+        <location filename="../gui/view/ResultScene.cpp" line="85"/>
         <source>shear stress xy</source>
         <translation>Schubspannung xy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="82"/>
+        <location filename="../gui/view/ResultScene.cpp" line="86"/>
         <source>principal stress 1</source>
         <translation>Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="83"/>
+        <location filename="../gui/view/ResultScene.cpp" line="87"/>
         <source>principal stress 3</source>
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="556"/>
+        <location filename="../gui/view/ResultScene.cpp" line="533"/>
+        <source>compression +</source>
+        <translation>Druck +</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="534"/>
+        <source>tension +</source>
+        <translation>Zug +</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="692"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="558"/>
+        <location filename="../gui/view/ResultScene.cpp" line="694"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="563"/>
+        <location filename="../gui/view/ResultScene.cpp" line="699"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="565"/>
+        <location filename="../gui/view/ResultScene.cpp" line="701"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="569"/>
+        <location filename="../gui/view/ResultScene.cpp" line="705"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="574"/>
+        <location filename="../gui/view/ResultScene.cpp" line="710"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="725"/>
+        <source>uniform:</source>
+        <translation>gleichförmig:</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="762"/>
+        <source>step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="766"/>
+        <source>stage</source>
+        <translation>Bauphase</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="773"/>
+        <source>deformed</source>
+        <translation>verformt</translation>
     </message>
     <message>
         <location filename="../gui/view/SceneLegend.cpp" line="144"/>

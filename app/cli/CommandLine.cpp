@@ -13,8 +13,9 @@ Usage:
   mcdda check  MODEL [--set POINTER=VALUE]...
   mcdda mesh   MODEL --out DIR [--profile] [--set POINTER=VALUE]...
   mcdda render MODEL --out FILE.png [--size WxH] [--no-mesh] [--set POINTER=VALUE]...
-  mcdda render MODEL --out FILE.png --results STEP.vtu [--field NAME] [--deform FACTOR]
-               [--contacts STEP.vtp]
+  mcdda render MODEL --out FILE.png --results STEP.vtu [--field NAME] [--deform FACTOR|auto]
+               [--contacts STEP.vtp] [--compression-positive] [--colour-map NAME] [--bands N]
+               [--range MIN:MAX] [--title TEXT] [--no-axes]
                [--size WxH] [--set POINTER=VALUE]...
   mcdda run    MODEL --out DIR [--profile] [--quiet] [--threads N] [--set POINTER=VALUE]...
   mcdda --help | --version
@@ -39,12 +40,23 @@ Options:
   --profile            print a timing breakdown of the stages
   --size WxH           picture size in pixels for render (default 1600x1000)
   --no-mesh            do not draw element edges in render
+  --no-axes            do not draw the rulers (x, y in m) and the scale bar in render
   --results STEP.vtu   render a result step: mesh cells coloured by --field, block
                        boundaries, joints and a colour legend
   --field NAME         plastic_state (default), plastic_strain, displacement
                        (magnitude), ux, uy, stress_xx, stress_yy, stress_xy, stress_1
-                       or stress_3 (in-plane principal; kPa or MPa, tension +)
-  --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0)
+                       or stress_3 (in-plane principal; kPa or MPa, tension + unless
+                       --compression-positive)
+  --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0); auto:
+                       the largest displacement drawn as 5 % of the model's size (a warning
+                       says when elements are drawn inside out)
+  --compression-positive  stresses compression positive, stress_1 the major compressive
+                       stress (sigma1 >= sigma3), as RS2, PLAXIS and UDEC show them
+  --colour-map NAME    rainbow (default), viridis, grey or diverging (blue-white-red)
+  --bands N            N colour bands (contours) instead of a smooth scale
+  --range MIN:MAX      ends of the colour scale in the legend's units (default: the field's
+                       range widened to round numbers)
+  --title TEXT         the line over a result picture (default: field, step, stage, time)
   --contacts STEP.vtp  with --results: draw the step's contact forces (lines along the force
                        on each contact, the largest 6 % of the model long), joint slip (along
                        the joint) and opening (across it), and bolts, from the run's
@@ -63,7 +75,7 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
     Request r;
     static const std::set<std::string> commands{"check", "mesh", "render", "run"};
     std::vector<std::string> positional;
-    bool field_given = false, deform_given = false;
+    bool field_given = false, deform_given = false, result_option = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&](const char* option) -> std::optional<std::string> {
@@ -81,6 +93,56 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
         else if (a == "--profile") r.profile = true;
         else if (a == "--quiet" || a == "-q") r.quiet = true;
         else if (a == "--no-mesh") r.show_mesh = false;
+        else if (a == "--no-axes") r.show_axes = false;
+        else if (a == "--compression-positive") r.compression_positive = result_option = true;
+        else if (is("--colour-map") || is("--color-map")) {
+            const auto v = value("--colour-map");
+            if (!v) return std::nullopt;
+            if (*v != "rainbow" && *v != "viridis" && *v != "grey" && *v != "gray" && *v != "diverging") {
+                error = "--colour-map expects rainbow, viridis, grey or diverging, got \"" + *v + "\"";
+                return std::nullopt;
+            }
+            r.colour_map = *v;
+            result_option = true;
+        } else if (is("--bands")) {
+            const auto v = value("--bands");
+            if (!v) return std::nullopt;
+            try {
+                std::size_t used = 0;
+                r.bands = std::stoi(*v, &used);
+                if (used != v->size()) throw std::invalid_argument("trailing");
+            } catch (const std::exception&) {
+                r.bands = -1;
+            }
+            if (r.bands < 1 || r.bands > 64) {
+                error = "--bands expects a number of colour bands from 1 to 64, got \"" + *v + "\"";
+                return std::nullopt;
+            }
+            result_option = true;
+        } else if (is("--range")) {
+            const auto v = value("--range");
+            if (!v) return std::nullopt;
+            const auto colon = v->find(':');
+            try {
+                if (colon == std::string::npos) throw std::invalid_argument("no colon");
+                std::size_t a_used = 0, b_used = 0;
+                const std::string lo = v->substr(0, colon), hi = v->substr(colon + 1);
+                r.range_min = std::stod(lo, &a_used);
+                r.range_max = std::stod(hi, &b_used);
+                if (a_used != lo.size() || b_used != hi.size() || !(r.range_min < r.range_max) ||
+                    !std::isfinite(r.range_min) || !std::isfinite(r.range_max))
+                    throw std::invalid_argument("order");
+            } catch (const std::exception&) {
+                error = "--range expects MIN:MAX with MIN < MAX, e.g. -5:20, got \"" + *v + "\"";
+                return std::nullopt;
+            }
+            result_option = true;
+        } else if (is("--title")) {
+            const auto v = value("--title");
+            if (!v) return std::nullopt;
+            r.title = *v;
+            result_option = true;
+        }
         else if (is("--set")) {
             const auto v = value("--set");
             if (!v) return std::nullopt;
@@ -137,10 +199,14 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
             if (!v) return std::nullopt;
             try {
                 std::size_t used = 0;
-                r.deform = std::stod(*v, &used);
-                if (used != v->size() || !std::isfinite(r.deform)) throw std::invalid_argument("trailing");
+                if (*v == "auto") {
+                    r.deform_auto = true;
+                } else {
+                    r.deform = std::stod(*v, &used);
+                    if (used != v->size() || !std::isfinite(r.deform)) throw std::invalid_argument("trailing");
+                }
             } catch (const std::exception&) {
-                error = "--deform expects a number, got \"" + *v + "\"";
+                error = "--deform expects a number or auto, got \"" + *v + "\"";
                 return std::nullopt;
             }
             deform_given = true;
@@ -174,8 +240,9 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
         error = r.command + ": --out is required";
         return std::nullopt;
     }
-    if ((field_given || deform_given || !r.contacts.empty()) && r.results.empty()) {
-        error = std::string(field_given ? "--field" : deform_given ? "--deform" : "--contacts") +
+    if ((field_given || deform_given || !r.contacts.empty() || result_option) && r.results.empty()) {
+        error = std::string(field_given ? "--field" : deform_given ? "--deform" : !r.contacts.empty() ? "--contacts"
+                                                                                               : "this option") +
                 " needs --results STEP.vtu";
         return std::nullopt;
     }

@@ -23,6 +23,13 @@ struct Request {
     std::string contacts;                ///< --contacts STEP.vtp: with it, the contact forces and bolts
     std::string field = "plastic_state"; ///< --field NAME: what the result picture colours
     double deform = 0.0;                 ///< --deform FACTOR: displacement scale of the result picture
+    bool deform_auto = false;            ///< --deform auto: the largest displacement drawn as 5 % of the model
+    bool compression_positive = false;   ///< --compression-positive: stresses as geotechnics reads them
+    std::string colour_map;              ///< --colour-map NAME (rainbow, viridis, grey, diverging)
+    int bands = 0;                       ///< --bands N: colour bands; 0 = smooth
+    double range_min = 0.0, range_max = 0.0;  ///< --range MIN:MAX (both 0: automatic)
+    bool show_axes = true;               ///< --no-axes hides the rulers and the scale bar
+    std::string title;                   ///< --title TEXT over a result picture
     int threads = 0;                     ///< --threads N for run (0: $MCDDA_THREADS, else one per core)
 };
 

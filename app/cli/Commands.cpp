@@ -103,13 +103,29 @@ int run_render(const Request& r) {
         if (r.results.empty()) {
             view::SceneOptions options;
             options.show_mesh = r.show_mesh;
+            options.show_axes = r.show_axes;
             view::render_png(p, options, r.width, r.height, r.out);
         } else {
             view::ResultOptions options;
             options.field = r.field;
             options.deform = r.deform;
+            options.deform_auto = r.deform_auto;
             options.contacts = r.contacts;
-            view::render_result_png(p, r.results, options, r.width, r.height, r.out);
+            if (r.compression_positive) options.stress_sign = view::StressSign::CompressionPositive;
+            if (!r.colour_map.empty()) view::parse_colour_map(r.colour_map, &options.colour_map);
+            options.bands = r.bands;
+            if (r.range_min < r.range_max) options.range_min = r.range_min, options.range_max = r.range_max;
+            options.show_axes = r.show_axes;
+            options.title = r.title;
+            view::ResultInfo info;
+            view::render_result_png(p, r.results, options, r.width, r.height, r.out, &info);
+            if (info.inverted_elements > 0)
+                std::cerr << "warning: " << info.inverted_elements
+                          << " element(s) drawn inside out at the deformation scale " << info.deform_factor
+                          << ": the picture exaggerates too much; use a smaller --deform\n";
+            if (options.deform_auto && !r.quiet)
+                std::cout << "deformation drawn x" << info.deform_factor << " (largest displacement "
+                          << info.max_displacement << " m)\n";
         }
     } catch (const view::ResultFieldError& e) {
         std::cerr << "error: " << e.what() << "\n";

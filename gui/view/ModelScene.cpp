@@ -2,6 +2,7 @@
 
 #include "view/FlatActor.hpp"
 #include "view/Palette.hpp"
+#include "view/ScaleBar.hpp"
 #include "view/SceneGeometry.hpp"
 #include "view/SceneLegend.hpp"
 #include "view/Symbols.hpp"
@@ -323,6 +324,7 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
         add_measurement_labels(renderer, p.model, st);
     }
     add_legend(renderer, legend_title(p), legend_entries(p, options), dpi_of(renderer));
+    if (options.show_axes && box.valid()) add_axes_and_scale_bar(renderer, box, dpi_of(renderer));  // not on nothing
     fit_camera(renderer, p, options);
 }
 
@@ -333,10 +335,13 @@ void fit_camera(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions
     const auto entries = legend_entries(p, options);
     const double reserved =
         entries.empty() ? 0.0 : legend_width(legend_title(p), entries, dpi) + 2.0 * legend_margin(dpi);
-    fit_camera(renderer, p, reserved);
+    if (options.show_axes)
+        fit_camera(renderer, p, reserved, axes_left_pixels(dpi), axes_bottom_pixels(dpi));
+    else
+        fit_camera(renderer, p, reserved);
 }
 
-void fit_camera(vtkRenderer* renderer, const Preprocessed& p, double reserved)
+void fit_camera(vtkRenderer* renderer, const Preprocessed& p, double reserved, double left, double bottom, double top)
 {
     if (renderer == nullptr) return;
     double b[6];
@@ -357,19 +362,23 @@ void fit_camera(vtkRenderer* renderer, const Preprocessed& p, double reserved)
     const int* size = renderer->GetSize();
     const double width = std::max(1, size[0]), height = std::max(1, size[1]);
     if (!(reserved > 0.0) || reserved > 0.45 * width) reserved = 0.0;  // narrow window: let the legend overlap instead
-    const double usable = width - reserved;
+    if (left + reserved > 0.6 * width) left = 0.0;  // a tiny picture: axes over the model rather than no model
+    if (bottom + top > 0.5 * height) bottom = top = 0.0;
+    const double usable = width - reserved - left, usable_height = height - bottom - top;
 
     const double margin = 1.08;  // 4 % free on each side
-    double half_height = margin * std::max(0.5 * wy, 0.5 * wx * height / usable);
+    const double metres_per_pixel = margin * std::max(wy / usable_height, wx / usable);
+    double half_height = 0.5 * metres_per_pixel * height;
     if (!(half_height > 0.0)) half_height = 1.0;
-    const double metres_per_pixel = 2.0 * half_height / height;
-    const double fx = cx + 0.5 * reserved * metres_per_pixel;  // model centred in the free part
+    // The model centred in the free part.
+    const double fx = cx + 0.5 * (reserved - left) * metres_per_pixel;
+    const double fy = cy + 0.5 * (top - bottom) * metres_per_pixel;
 
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->ParallelProjectionOn();
     const double distance = std::max({wx, wy, 1.0}) * 10.0;
-    camera->SetFocalPoint(fx, cy, 0.0);
-    camera->SetPosition(fx, cy, distance);
+    camera->SetFocalPoint(fx, fy, 0.0);
+    camera->SetPosition(fx, fy, distance);
     camera->SetViewUp(0.0, 1.0, 0.0);
     camera->SetParallelScale(half_height);
     renderer->ResetCameraClippingRange();

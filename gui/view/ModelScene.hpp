@@ -17,6 +17,7 @@ struct SceneOptions {
     bool show_loads = true;     ///< point loads and edge pressures
     bool show_legend = true;    ///< box in the top right corner naming colours and symbols
     bool show_points = true;    ///< measurement points with their names
+    bool show_axes = true;      ///< coordinate axes on the left and bottom edges and a scale bar
 };
 
 /// Adds the actors of the model to `renderer`: blocks filled in their material's colour with
@@ -32,7 +33,9 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
 void fit_camera(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions& options);
 
 /// fit_camera with an explicit column of `reserved_pixels` on the right kept free (for a legend
-/// other than the model's); ignored when it would take more than 45 % of the width.
-void fit_camera(vtkRenderer* renderer, const Preprocessed& p, double reserved_pixels);
+/// other than the model's; ignored when it would take more than 45 % of the width), and bands on
+/// the left, bottom and top for axes and a title.
+void fit_camera(vtkRenderer* renderer, const Preprocessed& p, double reserved_pixels, double left_pixels = 0.0,
+                double bottom_pixels = 0.0, double top_pixels = 0.0);
 
 }  // namespace mcdda::view

@@ -6,6 +6,7 @@
 #include "view/PictureText.hpp"
 #include "view/Palette.hpp"
 #include "view/SceneGeometry.hpp"
+#include "view/ScaleBar.hpp"
 #include "view/SceneLegend.hpp"
 
 #include <vtkActor.h>
@@ -25,6 +26,9 @@
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkSmartPointer.h>
+#include <vtkFieldData.h>
+#include <vtkMath.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
@@ -117,7 +121,18 @@ struct Result {
     vtkSmartPointer<vtkUnstructuredGrid> grid;
     const FieldInfo* field = nullptr;
     vtkSmartPointer<vtkPolyData> contacts;  ///< ResultOptions::contacts, read
+    int step = -1;    ///< when known
+    int stage = 0;    ///< 1-based; 0 = unknown
+    double time = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// A number of the file's field data (RunOutput writes step, stage, time); NaN when missing.
+double field_number(vtkUnstructuredGrid* grid, const char* name)
+{
+    vtkFieldData* data = grid->GetFieldData();
+    vtkDataArray* a = data != nullptr ? data->GetArray(name) : nullptr;
+    return a != nullptr && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : std::numeric_limits<double>::quiet_NaN();
+}
 
 /// Reads a contacts file (ResultOptions::contacts) with its force arrays checked.
 vtkSmartPointer<vtkPolyData> load_contacts(const std::string& path)
@@ -210,6 +225,9 @@ Result load_result(const Preprocessed& model, const std::string& path, const Res
     reader->SetFileName(path.c_str());
     reader->Update();
     Result r = check_result(reader->GetOutput(), model, path, field, options);
+    if (const double step = field_number(reader->GetOutput(), "step"); std::isfinite(step)) r.step = static_cast<int>(step);
+    if (const double stage = field_number(reader->GetOutput(), "stage"); std::isfinite(stage)) r.stage = static_cast<int>(stage);
+    r.time = field_number(reader->GetOutput(), "time");
     if (!options.contacts.empty()) r.contacts = load_contacts(options.contacts);
     return r;
 }
@@ -273,7 +291,10 @@ Result snapshot_result(const Preprocessed& model, const ResultSnapshot& s, const
         for (unsigned char v : s.present) a->InsertNextValue(v);
         grid->GetCellData()->AddArray(a);
     }
-    return check_result(grid, model, "of step " + std::to_string(s.step), field, options);
+    Result r = check_result(grid, model, "of step " + std::to_string(s.step), field, options);
+    r.step = s.step;
+    r.time = s.time;
+    return r;
 }
 
 double dpi_of(vtkRenderer* renderer)
@@ -284,13 +305,19 @@ double dpi_of(vtkRenderer* renderer)
 }
 
 
-/// Value of the field at entry i (cell or point).
-double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i)
+bool is_stress(const FieldInfo& f) { return std::string(f.units) == "Pa"; }
+
+/// Value of the field at entry i (cell or point); stresses in the sign convention asked for.
+double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i, StressSign sign)
 {
-    if (f.component >= 0) return a->GetComponent(i, f.component);
+    const bool compression = sign == StressSign::CompressionPositive && is_stress(f);
+    if (f.component >= 0) return (compression ? -1.0 : 1.0) * a->GetComponent(i, f.component);
     if (f.component == principal_1 || f.component == principal_3) {
         const double xx = a->GetComponent(i, 0), yy = a->GetComponent(i, 1), xy = a->GetComponent(i, 3);
         const double centre = 0.5 * (xx + yy), radius = std::hypot(0.5 * (xx - yy), xy);
+        // Compression positive: σ1 is the major compressive stress, minus the smaller
+        // tension-positive principal stress.
+        if (compression) return f.component == principal_1 ? radius - centre : -(centre + radius);
         return f.component == principal_1 ? centre + radius : centre - radius;
     }
     double s = 0.0;
@@ -298,9 +325,61 @@ double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i)
     return std::sqrt(s);
 }
 
-void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options,
-                ResultProbe* probe = nullptr)
+
+/// The colour of `map` at t in [0, 1] (low to high).
+Rgb map_colour(ColourMap map, double t)
 {
+    t = std::clamp(t, 0.0, 1.0);
+    auto ramp = [t](std::initializer_list<Rgb> stops) {
+        const std::vector<Rgb> c(stops);
+        const double x = t * (c.size() - 1);
+        const std::size_t k = std::min(static_cast<std::size_t>(x), c.size() - 2);
+        const double u = x - k;
+        return Rgb{c[k][0] + u * (c[k + 1][0] - c[k][0]), c[k][1] + u * (c[k + 1][1] - c[k][1]),
+                   c[k][2] + u * (c[k + 1][2] - c[k][2])};
+    };
+    switch (map) {
+        case ColourMap::Viridis:
+            return ramp({{0.267, 0.005, 0.329}, {0.229, 0.322, 0.546}, {0.128, 0.567, 0.551}, {0.369, 0.789, 0.383},
+                         {0.993, 0.906, 0.144}});
+        case ColourMap::Grey: return ramp({{0.15, 0.15, 0.15}, {0.92, 0.92, 0.92}});
+        case ColourMap::Diverging:  // blue – white – red (Moreland's cool–warm)
+            return ramp({{0.230, 0.299, 0.754}, {0.865, 0.865, 0.865}, {0.706, 0.016, 0.150}});
+        case ColourMap::Rainbow:
+        default: {
+            Rgb rgb{};
+            vtkMath::HSVToRGB(0.667 * (1.0 - t), 1.0, 1.0, &rgb[0], &rgb[1], &rgb[2]);
+            return rgb;
+        }
+    }
+}
+
+/// Whether (x, y) lies on one of the grid's cells (their corner triangles).
+bool on_grid(vtkUnstructuredGrid* grid, double x, double y)
+{
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        grid->GetCellPoints(c, ids);
+        if (ids->GetNumberOfIds() < 3) continue;
+        double a[3], b[3], d[3];
+        grid->GetPoint(ids->GetId(0), a);
+        grid->GetPoint(ids->GetId(1), b);
+        grid->GetPoint(ids->GetId(2), d);
+        const double det = (b[0] - a[0]) * (d[1] - a[1]) - (d[0] - a[0]) * (b[1] - a[1]);
+        if (det == 0.0) continue;
+        const double l1 = ((x - a[0]) * (d[1] - a[1]) - (d[0] - a[0]) * (y - a[1])) / det;
+        const double l2 = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / det;
+        if (l1 >= -1e-9 && l2 >= -1e-9 && l1 + l2 <= 1.0 + 1e-9) return true;
+    }
+    return false;
+}
+
+void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options,
+                ResultProbe* probe = nullptr, ResultInfo* info = nullptr)
+{
+    ResultInfo unused_info;
+    ResultInfo& drew = info ? *info : unused_info;
+    drew = ResultInfo{};
     ResultProbe unused;
     ResultProbe& shown = probe ? *probe : unused;  // what the picture shows, for value queries
     shown = ResultProbe{};
@@ -315,14 +394,24 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
 
     // Points, displaced when asked.
     vtkDataArray* displacement = grid->GetPointData()->GetArray("displacement");
-    vtkNew<vtkPoints> points;
     const vtkIdType point_count = grid->GetNumberOfPoints();
+    if (displacement != nullptr)
+        for (vtkIdType i = 0; i < point_count; ++i)
+            drew.max_displacement = std::max(drew.max_displacement,
+                                             std::hypot(displacement->GetComponent(i, 0), displacement->GetComponent(i, 1)));
+    // Auto: the largest displacement drawn as 5 % of the model's larger side.
+    const double deform = displacement == nullptr ? 0.0
+                          : options.deform_auto
+                              ? (drew.max_displacement > 0.0 ? 0.05 * box.size() / drew.max_displacement : 0.0)
+                              : options.deform;
+    drew.deform_factor = deform;
+    vtkNew<vtkPoints> points;
     for (vtkIdType i = 0; i < point_count; ++i) {
         double q[3];
         grid->GetPoint(i, q);
-        if (options.deform != 0.0 && displacement != nullptr) {
-            q[0] += options.deform * displacement->GetComponent(i, 0);
-            q[1] += options.deform * displacement->GetComponent(i, 1);
+        if (deform != 0.0) {
+            q[0] += deform * displacement->GetComponent(i, 0);
+            q[1] += deform * displacement->GetComponent(i, 1);
         }
         points->InsertNextPoint(q[0], q[1], 0.0);
         if (probe) shown.points.push_back({q[0], q[1]});
@@ -339,6 +428,22 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             shown.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(stride)),
                                         static_cast<int>(ids->GetId(2 * stride))});
     }
+    if (deform != 0.0) {  // elements turned inside out: the scale is too large to read the picture
+        auto area = [&](vtkPoints* pts, vtkIdType a, vtkIdType b, vtkIdType c) {
+            double p0[3], p1[3], p2[3];
+            pts->GetPoint(a, p0);
+            pts->GetPoint(b, p1);
+            pts->GetPoint(c, p2);
+            return (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p2[0] - p0[0]) * (p1[1] - p0[1]);
+        };
+        for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+            grid->GetCellPoints(c, ids);
+            if (ids->GetNumberOfIds() < 3) continue;
+            const double before = area(grid->GetPoints(), ids->GetId(0), ids->GetId(1), ids->GetId(2));
+            const double after = area(points, ids->GetId(0), ids->GetId(1), ids->GetId(2));
+            if (before != 0.0 && after * (before > 0.0 ? 1.0 : -1.0) <= 0.0) ++drew.inverted_elements;
+        }
+    }
     vtkNew<vtkPolyData> fill;
     fill->SetPoints(points);
     fill->SetPolys(polys);
@@ -349,6 +454,8 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     const bool categorical = std::string(field.name) == "plastic_state";
     double range[2] = {0.0, 1.0};
     std::string units = field.units;
+    bool uniform = false;
+    double uniform_value = 0.0, tick_step = 0.0;
     vtkNew<vtkLookupTable> table;
     if (categorical) {
         vtkNew<vtkUnsignedCharArray> colors;
@@ -369,7 +476,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         range[0] = std::numeric_limits<double>::infinity();
         range[1] = -range[0];
         for (vtkIdType i = 0; i < n; ++i) {
-            const double v = value_of(source, field, i);
+            const double v = value_of(source, field, i, options.stress_sign);
             values->InsertNextValue(v);
             if (std::isfinite(v)) range[0] = std::min(range[0], v), range[1] = std::max(range[1], v);
         }
@@ -380,9 +487,22 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             for (vtkIdType i = 0; i < n; ++i) values->SetValue(i, values->GetValue(i) * scale);
             range[0] *= scale, range[1] *= scale;
         }
-        if (range[1] - range[0] <= 1e-12 * std::max(1.0, std::abs(range[0]))) {
-            const double pad = range[0] != 0.0 ? 0.01 * std::abs(range[0]) : 1.0;
+        // Labels at round numbers (1, 2 or 5 × 10ⁿ apart), the scale widened to them; a uniform
+        // field shows its one value, not −1…1.
+        uniform = range[1] - range[0] <= 1e-9 * std::max(std::abs(range[0]), std::abs(range[1])) ||
+                  range[1] - range[0] < 1e-300;
+        if (std::isfinite(options.range_min) && std::isfinite(options.range_max) && options.range_min < options.range_max) {
+            range[0] = options.range_min, range[1] = options.range_max;
+            uniform = false;
+            tick_step = nice_step((range[1] - range[0]) / 5.0);
+        } else if (uniform) {
+            uniform_value = range[0];
+            const double pad = std::max(1e-3 * std::abs(range[0]), 1e-12);
             range[0] -= pad, range[1] += pad;
+        } else {
+            tick_step = nice_step((range[1] - range[0]) / 5.0);
+            range[0] = std::floor(range[0] / tick_step + 1e-9) * tick_step;
+            range[1] = std::ceil(range[1] / tick_step - 1e-9) * tick_step;
         }
         if (probe)
             for (vtkIdType i = 0; i < n; ++i) shown.values.push_back(values->GetValue(i));
@@ -393,18 +513,30 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             fill->GetCellData()->SetScalars(values);
             mapper->SetScalarModeToUseCellData();
         }
-        table->SetHueRange(0.667, 0.0);
-        table->SetNumberOfTableValues(256);
+        const int colours = options.bands > 0 ? std::min(options.bands, 256) : 256;
+        table->SetNumberOfTableValues(colours);
         table->SetTableRange(range);
         table->Build();
+        for (int k = 0; k < colours; ++k) {
+            const Rgb c = map_colour(options.colour_map, colours > 1 ? k / (colours - 1.0) : 0.5);
+            table->SetTableValue(k, c[0], c[1], c[2], 1.0);
+        }
+        table->UseBelowRangeColorOff();
+        table->UseAboveRangeColorOff();
         mapper->SetLookupTable(table);
         mapper->SetScalarRange(range);
         mapper->InterpolateScalarsBeforeMappingOn();
     }
+    // Which sign the stresses have is said wherever they are named.
+    const std::string sign_note = !is_stress(field) ? std::string()
+                                  : options.stress_sign == StressSign::CompressionPositive
+                                      ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "compression +"))
+                                      : picture_text(QT_TRANSLATE_NOOP("mcdda::view", "tension +"));
     shown.point_values = field.point_data;
     shown.categorical = categorical;
-    shown.title = picture_text(field.title);
+    shown.title = picture_text(field.title) + (sign_note.empty() ? std::string() : " (" + sign_note + ")");
     shown.units = units;
+    drew.range_min = range[0], drew.range_max = range[1];
     vtkNew<vtkActor> fill_actor;
     fill_actor->SetMapper(mapper);
     fill_actor->GetProperty()->LightingOff();
@@ -441,7 +573,8 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     renderer->AddActor(flat_actor(outline, palette::block_outline, 1.5 * pixel));
 
     // Joints of the model where they are in rock; only undeformed (they are not part of the .vtu).
-    const bool joints = options.show_joints && options.deform == 0.0 && !model.model.joints.empty();
+    const bool joints = options.show_joints && deform == 0.0 && !model.model.joints.empty();
+    const bool staged = grid->GetNumberOfCells() < static_cast<vtkIdType>(model.mesh.triangles.size());
     if (joints) {
         vtkNew<vtkPoints> joint_points;
         vtkNew<vtkCellArray> joint_lines;
@@ -449,6 +582,9 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             for (std::size_t i = 0; i + 1 < j.points.size(); ++i)
                 for (const SegmentPiece& piece : split_by_material(model.model, j.points[i], j.points[i + 1])) {
                     if (!piece.in_material) continue;
+                    // A staged run's excavated regions are not drawn: nor are joints through them.
+                    if (staged && !on_grid(grid, 0.5 * (piece.from.x + piece.to.x), 0.5 * (piece.from.y + piece.to.y)))
+                        continue;
                     const vtkIdType l[2] = {joint_points->InsertNextPoint(piece.from.x, piece.from.y, 3.0 * z_step),
                                             joint_points->InsertNextPoint(piece.to.x, piece.to.y, 3.0 * z_step)};
                     joint_lines->InsertNextCell(2, l);
@@ -580,10 +716,23 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     } else {
         vtkNew<vtkScalarBarActor> bar;
         bar->SetLookupTable(table);
-        const std::string title = picture_text(field.title) + " (" + units + ")";
+        // Two lines: the field, then its unit and sign (the bar's column is narrow).
+        std::string title = picture_text(field.title) + "\n(" + units + (sign_note.empty() ? "" : ", " + sign_note) + ")";
+        vtkNew<vtkDoubleArray> labels;
+        if (uniform) {
+            char value[48];
+            std::snprintf(value, sizeof value, "%.4g", uniform_value);
+            title += "\n" + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "uniform:")) + " " + value;
+            labels->InsertNextValue(uniform_value);
+        } else {
+            for (double t = range[0]; t <= range[1] + 1e-9 * tick_step; t += tick_step)
+                labels->InsertNextValue(std::abs(t) < 1e-9 * tick_step ? 0.0 : t);  // no "-0"
+        }
         bar->SetTitle(title.c_str());
-        bar->SetNumberOfLabels(6);
-        bar->SetLabelFormat("%-#8.3g");
+        bar->SetUseCustomLabels(true);
+        bar->SetCustomLabels(labels);
+        bar->SetLabelFormat("%-.4g");
+        bar->SetMaximumNumberOfColors(options.bands > 0 ? options.bands : 256);
         bar->UnconstrainedFontSizeOn();
         bar->SetTextPad(static_cast<int>(std::lround(4 * pixel)));
         for (vtkTextProperty* t : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
@@ -603,7 +752,47 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         renderer->AddActor2D(bar);
         reserved = (bar_width + 0.02) * width;
     }
-    fit_camera(renderer, model, reserved);
+
+    // The title: field, step, stage and time (exported pictures say what they show).
+    std::string title = options.title;
+    if (title.empty()) {
+        title = shown.title;
+        char part[96];
+        if (r.step >= 0) {
+            std::snprintf(part, sizeof part, " — %s %d", picture_text(QT_TRANSLATE_NOOP("mcdda::view", "step")).c_str(), r.step);
+            title += part;
+        }
+        if (r.stage >= 1 && r.stage <= static_cast<int>(model.model.stages.size()))
+            title += ", " + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "stage")) + " \"" +
+                     model.model.stages[static_cast<std::size_t>(r.stage - 1)].name + "\"";
+        if (std::isfinite(r.time)) {
+            std::snprintf(part, sizeof part, ", t = %g s", r.time);
+            title += part;
+        }
+        if (deform != 0.0) {
+            std::snprintf(part, sizeof part, ", %s ×%.3g", picture_text(QT_TRANSLATE_NOOP("mcdda::view", "deformed")).c_str(), deform);
+            title += part;
+        }
+    }
+    drew.title = title;
+    vtkNew<vtkTextActor> heading;
+    heading->SetInput(title.c_str());
+    vtkTextProperty* t = heading->GetTextProperty();
+    t->SetColor(0.0, 0.0, 0.0);
+    t->SetFontFamilyToArial();
+    t->SetFontSize(static_cast<int>(std::lround(13 * pixel)));
+    t->BoldOn();
+    t->SetVerticalJustificationToTop();
+    heading->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    heading->GetPositionCoordinate()->SetValue(0.01, 0.99);
+    renderer->AddActor2D(heading);
+    const double top = 24.0 * pixel;
+    if (options.show_axes) {
+        add_axes_and_scale_bar(renderer, box, dpi);
+        fit_camera(renderer, model, reserved, axes_left_pixels(dpi), axes_bottom_pixels(dpi), top);
+    } else {
+        fit_camera(renderer, model, reserved, 0.0, 0.0, top);
+    }
 }
 
 }  // namespace
@@ -618,26 +807,39 @@ const std::vector<std::string>& result_field_names()
     return names;
 }
 
+bool parse_colour_map(const std::string& name, ColourMap* map)
+{
+    static const std::pair<const char*, ColourMap> names[] = {
+        {"rainbow", ColourMap::Rainbow}, {"viridis", ColourMap::Viridis}, {"grey", ColourMap::Grey},
+        {"gray", ColourMap::Grey}, {"diverging", ColourMap::Diverging}};
+    for (const auto& [n, m] : names)
+        if (name == n) {
+            *map = m;
+            return true;
+        }
+    return false;
+}
+
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const std::string& vtu_path,
-                        const ResultOptions& options, ResultProbe* probe)
+                        const ResultOptions& options, ResultProbe* probe, ResultInfo* info)
 {
     if (renderer == nullptr) return;
-    add_result(renderer, model, load_result(model, vtu_path, options), options, probe);
+    add_result(renderer, model, load_result(model, vtu_path, options), options, probe, info);
 }
 
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const ResultSnapshot& snapshot,
-                        const ResultOptions& options, ResultProbe* probe)
+                        const ResultOptions& options, ResultProbe* probe, ResultInfo* info)
 {
     if (renderer == nullptr) return;
-    add_result(renderer, model, snapshot_result(model, snapshot, options), options, probe);
+    add_result(renderer, model, snapshot_result(model, snapshot, options), options, probe, info);
 }
 
 void render_result_png(const Preprocessed& model, const std::string& vtu_path, const ResultOptions& options,
-                       int width, int height, const std::string& png_path)
+                       int width, int height, const std::string& png_path, ResultInfo* info)
 {
     const Result result = load_result(model, vtu_path, options);  // file problems (and contacts) before X
-    render_scene_png([&](vtkRenderer* renderer) { add_result(renderer, model, result, options); }, width, height,
-                     png_path, "render_result_png");
+    render_scene_png([&](vtkRenderer* renderer) { add_result(renderer, model, result, options, nullptr, info); },
+                     width, height, png_path, "render_result_png");
 }
 
 }  // namespace mcdda::view

@@ -8,6 +8,7 @@
 #include "view/ResultSnapshot.hpp"
 #include "view/ResultProbe.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,14 +17,38 @@ class vtkRenderer;
 
 namespace mcdda::view {
 
+/// The sign of the stresses shown. The files keep the mechanics convention (tension positive);
+/// rock and soil engineers read compression positive, with σ1 the major compressive stress.
+enum class StressSign { TensionPositive, CompressionPositive };
+
+/// Colour maps of the scalar bar.
+enum class ColourMap { Rainbow, Viridis, Grey, Diverging };
+
 /// What the result picture shows.
 struct ResultOptions {
     /// One of result_field_names(): plastic_state (three categories), plastic_strain,
     /// displacement (magnitude of the point data), ux, uy (m), stress_xx, stress_yy, stress_xy,
-    /// stress_1, stress_3 (in-plane principal stresses, tension positive; stresses are shown
-    /// in kPa, or in MPa when they reach 1 MPa, with the unit in the scalar bar's title).
+    /// stress_1, stress_3 (in-plane principal stresses; stresses are shown in kPa, or in MPa when
+    /// they reach 1 MPa, with the unit and the sign convention in the scalar bar's title).
     std::string field = "plastic_state";
+    /// TensionPositive: stress_1 ≥ stress_3, the larger tension-positive principal stress.
+    /// CompressionPositive: every stress negated and stress_1 the major compressive principal
+    /// stress (σ1 ≥ σ3 in compression), as RS2, PLAXIS and UDEC show them.
+    StressSign stress_sign = StressSign::TensionPositive;
     double deform = 0.0;      ///< points drawn at x + deform · displacement; 0 = undeformed
+    /// Draw deformed with the factor that makes the largest displacement 5 % of the model's
+    /// larger side (`deform` is then ignored; ResultInfo says the factor used).
+    bool deform_auto = false;
+    /// The colour scale's ends; NaN = the field's range, widened to round numbers.
+    double range_min = std::numeric_limits<double>::quiet_NaN();
+    double range_max = std::numeric_limits<double>::quiet_NaN();
+    /// Number of colour bands (discrete contours); 0 = a smooth scale.
+    int bands = 0;
+    ColourMap colour_map = ColourMap::Rainbow;
+    /// Coordinate axes on the left and bottom edges and a scale bar.
+    bool show_axes = true;
+    /// The line over the picture; empty = the field with the step, stage and time when known.
+    std::string title;
     bool show_joints = true;  ///< joint traces of the model (only drawn undeformed)
     /// A step's contacts file of `mcdda run` (<model>_contacts_NNNNNN.vtp): its contact forces
     /// are drawn as lines from each closed contact's vertex along the force on it, the largest
@@ -32,6 +57,20 @@ struct ResultOptions {
     /// `plot jdisp`); its bolts as lines between their anchors. Empty: none.
     std::string contacts;
 };
+
+/// What a result picture drew, for the window to show and warn with.
+struct ResultInfo {
+    double deform_factor = 0.0;    ///< the deformation scale used (auto or as given)
+    double max_displacement = 0.0; ///< largest displacement magnitude (m)
+    /// Elements drawn with zero or reversed area: the deformation scale is too large for the
+    /// picture to be read (a tunnel drawn closed).
+    int inverted_elements = 0;
+    double range_min = 0.0, range_max = 0.0;  ///< the colour scale's ends, in the legend's units
+    std::string title;                        ///< the line drawn over the picture
+};
+
+/// Parses a colour map name (rainbow, viridis, grey, diverging); false when unknown.
+bool parse_colour_map(const std::string& name, ColourMap* map);
 
 /// The field was not understood or is missing from the file; the message lists the available ones.
 class ResultFieldError : public std::runtime_error {
@@ -49,17 +88,17 @@ const std::vector<std::string>& result_field_names();
 /// that differs from the model's mesh.
 /// `probe`, when given, receives what the picture shows at each point (for value queries).
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const std::string& vtu_path,
-                        const ResultOptions& options, ResultProbe* probe = nullptr);
+                        const ResultOptions& options, ResultProbe* probe = nullptr, ResultInfo* info = nullptr);
 
 /// The same scene from a snapshot of a run in memory (the mesh is the model's): what the desktop
 /// program shows while it runs. Throws like the above (ResultFieldError for an unknown field,
 /// std::runtime_error when the snapshot does not belong to the model's mesh).
 void build_result_scene(vtkRenderer* renderer, const Preprocessed& model, const ResultSnapshot& snapshot,
-                        const ResultOptions& options, ResultProbe* probe = nullptr);
+                        const ResultOptions& options, ResultProbe* probe = nullptr, ResultInfo* info = nullptr);
 
 /// Renders the result scene off-screen to a PNG at `png_path` like render_png (X display,
 /// atomic write). The .vtu is read and checked before any X connection is opened.
 void render_result_png(const Preprocessed& model, const std::string& vtu_path, const ResultOptions& options,
-                       int width, int height, const std::string& png_path);
+                       int width, int height, const std::string& png_path, ResultInfo* info = nullptr);
 
 }  // namespace mcdda::view

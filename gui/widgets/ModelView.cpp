@@ -54,6 +54,7 @@ struct ModelView::Impl {
     QString result_file;  ///< a saved step shown instead of the model when set (and no snapshot)
     view::ResultOptions result_options;
     view::ResultProbe probe;  ///< what the result picture shows where (empty for the model)
+    view::ResultInfo info;    ///< what the result picture drew (scale, inverted elements)
     bool window_ready = false;    ///< VTK was given our native window
     bool camera_touched = false;  ///< the user navigated since the last fit: resizing keeps the view
     bool panning = false;
@@ -240,15 +241,16 @@ void ModelView::rebuild(bool keep_camera)
     syncSize();
     impl_->renderer->RemoveAllViewProps();
     impl_->probe = view::ResultProbe{};
+    impl_->info = view::ResultInfo{};
     bool drawn = false;
     if (impl_->scene && (impl_->result || !impl_->result_file.isEmpty())) {
         try {
             if (impl_->result)
                 view::build_result_scene(impl_->renderer, *impl_->scene, *impl_->result, impl_->result_options,
-                                         &impl_->probe);
+                                         &impl_->probe, &impl_->info);
             else
                 view::build_result_scene(impl_->renderer, *impl_->scene, impl_->result_file.toStdString(),
-                                         impl_->result_options, &impl_->probe);
+                                         impl_->result_options, &impl_->probe, &impl_->info);
             drawn = true;
         } catch (const std::exception& e) {
             qWarning("ModelView: cannot show the result: %s", e.what());
@@ -311,6 +313,8 @@ std::shared_ptr<const ResultSnapshot> ModelView::result() const { return impl_->
 QString ModelView::resultFile() const { return impl_->result_file; }
 
 const view::ResultProbe& ModelView::resultProbe() const { return impl_->probe; }
+
+const view::ResultInfo& ModelView::resultInfo() const { return impl_->info; }
 
 QString ModelView::resultValueAt(const QPointF& model_pos) const
 {

@@ -56,6 +56,9 @@ public:
     QString resultValueAt(const QPointF& model_pos) const;
     /// What the result picture shows where (empty over the model picture): for query lines.
     const view::ResultProbe& resultProbe() const;
+    /// What the result picture drew: the deformation scale used, elements drawn inside out, the
+    /// colour scale's ends and the title.
+    const view::ResultInfo& resultInfo() const;
 
     /// What is drawn; changing it rebuilds the picture and keeps the camera.
     void setSceneOptions(const view::SceneOptions& options);

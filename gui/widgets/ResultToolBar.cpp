@@ -2,10 +2,36 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QDoubleValidator>
 #include <QIcon>
 #include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QSpinBox>
+
+#include <cmath>
+#include <limits>
 
 namespace mcdda::gui {
+
+namespace {
+
+/// A number typed in `edit` (in the user's locale), NaN when empty or not a number.
+double typed_number(const QLineEdit* edit)
+{
+    bool ok = false;
+    const double v = QLocale().toDouble(edit->text().trimmed(), &ok);
+    return ok && std::isfinite(v) ? v : std::numeric_limits<double>::quiet_NaN();
+}
+
+QLabel* label(const QString& text, QWidget* parent)
+{
+    auto* l = new QLabel(text, parent);
+    l->setContentsMargins(6, 0, 2, 0);
+    return l;
+}
+
+}  // namespace
 
 ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
 {
@@ -26,18 +52,31 @@ ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
     connect(field_box_, &QComboBox::currentIndexChanged, this, &ResultToolBar::optionsChanged);
     addWidget(field_box_);
 
-    auto* deform_label = new QLabel(tr("Deformation ×"), this);
-    deform_label->setContentsMargins(6, 0, 2, 0);
-    addWidget(deform_label);
+    sign_box_ = new QComboBox(this);
+    sign_box_->setObjectName(QStringLiteral("stressSignBox"));
+    sign_box_->addItem(tr("compression +"), int(view::StressSign::CompressionPositive));
+    sign_box_->addItem(tr("tension +"), int(view::StressSign::TensionPositive));
+    sign_box_->setToolTip(tr("Sign of the stresses shown. Compression positive (as RS2, PLAXIS and UDEC): σ1 is the "
+                             "major compressive stress, σ1 ≥ σ3. Tension positive: the result files' convention."));
+    connect(sign_box_, &QComboBox::currentIndexChanged, this, &ResultToolBar::optionsChanged);
+    addWidget(sign_box_);
+
+    addWidget(label(tr("Deformation ×"), this));
     deform_box_ = new QDoubleSpinBox(this);
     deform_box_->setObjectName(QStringLiteral("deformBox"));
-    deform_box_->setToolTip(tr("Scale factor of the drawn displacements (0 = undeformed)"));
-    deform_box_->setRange(0.0, 1e6);
+    deform_box_->setToolTip(tr("Scale factor of the drawn displacements: 0 = undeformed; one step below 0 = auto, the "
+                               "largest displacement drawn as 5 % of the model's size"));
+    deform_box_->setRange(-1.0, 1e6);
+    deform_box_->setSpecialValueText(tr("auto"));  // shown at the minimum, −1
     deform_box_->setDecimals(1);
     deform_box_->setSingleStep(10.0);
     deform_box_->setValue(0.0);
     connect(deform_box_, &QDoubleSpinBox::valueChanged, this, &ResultToolBar::optionsChanged);
     addWidget(deform_box_);
+    info_ = new QLabel(this);
+    info_->setObjectName(QStringLiteral("deformInfo"));
+    info_->setContentsMargins(4, 0, 4, 0);
+    addWidget(info_);
 
     contacts_ = addAction(QIcon(QStringLiteral(":/icons/contacts.svg")), tr("Contacts"));
     contacts_->setObjectName(QStringLiteral("contactsAction"));
@@ -46,11 +85,39 @@ ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
     contacts_->setToolTip(tr("Draw the contact forces (lines along the force, the largest 6 % of the model long), "
                              "joint slip and opening, and the bolts of the saved step shown"));
     connect(contacts_, &QAction::toggled, this, &ResultToolBar::optionsChanged);
+
+    addSeparator();
+    map_box_ = new QComboBox(this);
+    map_box_->setObjectName(QStringLiteral("colourMapBox"));
+    map_box_->addItem(tr("Rainbow"), int(view::ColourMap::Rainbow));
+    map_box_->addItem(tr("Viridis"), int(view::ColourMap::Viridis));
+    map_box_->addItem(tr("Grey"), int(view::ColourMap::Grey));
+    map_box_->addItem(tr("Blue–white–red"), int(view::ColourMap::Diverging));
+    map_box_->setToolTip(tr("Colour map of the scale"));
+    connect(map_box_, &QComboBox::currentIndexChanged, this, &ResultToolBar::optionsChanged);
+    addWidget(map_box_);
+    bands_box_ = new QSpinBox(this);
+    bands_box_->setObjectName(QStringLiteral("bandsBox"));
+    bands_box_->setRange(0, 64);
+    bands_box_->setSpecialValueText(tr("smooth"));
+    bands_box_->setSuffix(tr(" bands"));
+    bands_box_->setToolTip(tr("Number of colour bands (contours); smooth = a continuous scale"));
+    connect(bands_box_, &QSpinBox::valueChanged, this, &ResultToolBar::optionsChanged);
+    addWidget(bands_box_);
+    addWidget(label(tr("Range"), this));
+    for (QLineEdit** edit : {&min_edit_, &max_edit_}) {
+        *edit = new QLineEdit(this);
+        (*edit)->setPlaceholderText(tr("auto"));
+        (*edit)->setMaximumWidth(70);
+        (*edit)->setValidator(new QDoubleValidator(*edit));
+        connect(*edit, &QLineEdit::editingFinished, this, &ResultToolBar::optionsChanged);
+        addWidget(*edit);
+    }
+    min_edit_->setObjectName(QStringLiteral("rangeMinEdit"));
+    max_edit_->setObjectName(QStringLiteral("rangeMaxEdit"));
+    min_edit_->setToolTip(tr("Lower end of the colour scale in the legend's units; empty = automatic"));
+    max_edit_->setToolTip(tr("Upper end of the colour scale in the legend's units; empty = automatic"));
 }
-
-bool ResultToolBar::showContacts() const { return contacts_->isChecked(); }
-
-void ResultToolBar::setShowContacts(bool show) { contacts_->setChecked(show); }
 
 QString ResultToolBar::field() const { return field_box_->currentData().toString(); }
 
@@ -60,16 +127,58 @@ void ResultToolBar::setField(const QString& field)
     if (index >= 0) field_box_->setCurrentIndex(index);
 }
 
-double ResultToolBar::deformFactor() const { return deform_box_->value(); }
+double ResultToolBar::deformFactor() const { return std::max(0.0, deform_box_->value()); }
 
-void ResultToolBar::setDeformFactor(double factor) { deform_box_->setValue(factor); }
+void ResultToolBar::setDeformFactor(double factor) { deform_box_->setValue(std::max(0.0, factor)); }
+
+bool ResultToolBar::deformAuto() const { return deform_box_->value() < 0.0; }
+
+void ResultToolBar::setDeformAuto(bool on) { deform_box_->setValue(on ? -1.0 : 0.0); }
+
+view::StressSign ResultToolBar::stressSign() const { return static_cast<view::StressSign>(sign_box_->currentData().toInt()); }
+
+void ResultToolBar::setStressSign(view::StressSign sign) { sign_box_->setCurrentIndex(sign_box_->findData(int(sign))); }
+
+void ResultToolBar::setColourScale(view::ColourMap map, int bands, double min, double max)
+{
+    const QSignalBlocker a(map_box_), b(bands_box_);
+    map_box_->setCurrentIndex(map_box_->findData(int(map)));
+    bands_box_->setValue(bands);
+    min_edit_->setText(std::isfinite(min) ? QLocale().toString(min) : QString());
+    max_edit_->setText(std::isfinite(max) ? QLocale().toString(max) : QString());
+    emit optionsChanged();
+}
+
+bool ResultToolBar::showContacts() const { return contacts_->isChecked(); }
+
+void ResultToolBar::setShowContacts(bool show) { contacts_->setChecked(show); }
 
 view::ResultOptions ResultToolBar::options() const
 {
     view::ResultOptions options;
     options.field = field().toStdString();
+    options.stress_sign = stressSign();
     options.deform = deformFactor();
+    options.deform_auto = deformAuto();
+    options.colour_map = static_cast<view::ColourMap>(map_box_->currentData().toInt());
+    options.bands = bands_box_->value();
+    options.range_min = typed_number(min_edit_);
+    options.range_max = typed_number(max_edit_);
     return options;
 }
+
+void ResultToolBar::showInfo(const view::ResultInfo& info)
+{
+    QString text;
+    if (info.deform_factor != 0.0)
+        text = deformAuto() ? tr("×%1 (auto)").arg(info.deform_factor, 0, 'g', 3) : QString();
+    if (info.inverted_elements > 0)
+        text += (text.isEmpty() ? QString() : QStringLiteral("  ")) +
+                tr("⚠ %n element(s) drawn inside out: lower the scale", "", info.inverted_elements);
+    info_->setText(text);
+    info_->setStyleSheet(info.inverted_elements > 0 ? QStringLiteral("color: #b00020") : QString());
+}
+
+QString ResultToolBar::infoText() const { return info_->text(); }
 
 }  // namespace mcdda::gui

@@ -1,7 +1,10 @@
 #pragma once
 /// \file ResultToolBar.hpp
-/// The Results toolbar: which field colours the picture and how the displacements are drawn.
-/// Its choices make the view::ResultOptions of the picture shown while and after a run.
+/// The Results toolbar: which field colours the picture, in which stress sign convention (the
+/// geotechnical one, compression positive, unless chosen otherwise), how the displacements are
+/// drawn (off, an automatic scale or a factor), the colour scale (map, bands, range), and
+/// whether saved steps show their contacts. Its choices make the view::ResultOptions of the
+/// picture shown while and after a run; showInfo() reports what was drawn.
 
 #include "view/ResultScene.hpp"
 
@@ -9,6 +12,9 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
 
 namespace mcdda::gui {
 
@@ -21,15 +27,28 @@ public:
     /// The field shown: one of view::result_field_names().
     QString field() const;
     void setField(const QString& field);
-    /// Scale factor of the drawn displacements (0 = undeformed).
+    /// Scale factor of the drawn displacements (0 = undeformed; the automatic scale reads 0).
     double deformFactor() const;
+    /// A factor > 0 draws deformed by it, 0 undeformed.
     void setDeformFactor(double factor);
+    /// The automatic scale: the largest displacement drawn as 5 % of the model's size.
+    bool deformAuto() const;
+    void setDeformAuto(bool on);
+    view::StressSign stressSign() const;
+    void setStressSign(view::StressSign sign);
+    /// The colour scale: map, number of bands (0 = smooth) and ends (NaN = automatic).
+    void setColourScale(view::ColourMap map, int bands, double min, double max);
     /// Whether saved steps are drawn with their contacts file (contact forces, joint slip and
     /// opening, bolts); the live picture of a run has none.
     bool showContacts() const;
     void setShowContacts(bool show);
     /// The options of the picture the toolbar describes.
     view::ResultOptions options() const;
+    /// Says what the picture drew: the scale used, and a warning when elements are drawn inside
+    /// out (the scale is too large to read the picture).
+    void showInfo(const view::ResultInfo& info);
+    /// The text beside the deformation scale (e.g. "×1.2e+03 (auto)").
+    QString infoText() const;
 
 signals:
     /// A choice changed: the picture is to be drawn again.
@@ -37,7 +56,13 @@ signals:
 
 private:
     QComboBox* field_box_ = nullptr;
+    QComboBox* sign_box_ = nullptr;
     QDoubleSpinBox* deform_box_ = nullptr;
+    QLabel* info_ = nullptr;
+    QComboBox* map_box_ = nullptr;
+    QSpinBox* bands_box_ = nullptr;
+    QLineEdit* min_edit_ = nullptr;
+    QLineEdit* max_edit_ = nullptr;
     QAction* contacts_ = nullptr;
 };
 

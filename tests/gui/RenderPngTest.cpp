@@ -6,6 +6,8 @@
 #include "view/OffscreenRender.hpp"
 #include "view/Palette.hpp"
 #include "view/ResultScene.hpp"
+#include "view/ScaleBar.hpp"
+#include "view/SceneGeometry.hpp"
 #include "io/ModelReader.hpp"
 #include "io/VtuWriter.hpp"
 #include "run/RunLoop.hpp"
@@ -24,6 +26,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <set>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -352,6 +355,34 @@ std::string write_fake_result(const Preprocessed& p, const std::string& name)
     return path;
 }
 
+/// A fake result whose mesh shrinks towards x = 0 (ux = −0.01 x) and whose stresses vary with
+/// x: σxx = −100 kPa · x, σyy = −2 MPa, τxy = 0.3 MPa (tension positive, as the files hold them).
+std::string write_fake_stress_result(const Preprocessed& p, const std::string& name)
+{
+    VtuFields fields;
+    VtuField stress{"stress", 6, {}};
+    VtuField displacement{"displacement", 3, {}};
+    for (const auto& t : p.mesh.triangles) {
+        const double cx = (p.mesh.nodes[t[0]].x + p.mesh.nodes[t[1]].x + p.mesh.nodes[t[2]].x) / 3.0;
+        stress.values.insert(stress.values.end(), {-1e5 * cx, -2e6, 0.0, 0.3e6, 0.0, 0.0});
+    }
+    for (const Point2& q : p.mesh.nodes) displacement.values.insert(displacement.values.end(), {-0.01 * q.x, 0.0, 0.0});
+    fields.cell_data.push_back(stress);
+    fields.point_data.push_back(displacement);
+    const std::string path = output_path(name);
+    write_vtu(path, p.mesh, fields);
+    return path;
+}
+
+/// Builds the result scene in an off-screen renderer of the test's size and says what it drew.
+view::ResultInfo drawn(const Preprocessed& p, const std::string& vtu, const view::ResultOptions& options,
+                       view::ResultProbe* probe = nullptr)
+{
+    view::ResultInfo info;
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, options, probe, &info); });
+    return info;
+}
+
 bool is_state_red(const Rgb8& c) { return c[0] > 190 && c[1] < 50 && c[2] < 50; }
 bool is_state_grey(const Rgb8& c) { return near(c, {209, 209, 209}, 10); }
 bool is_state_yellow(const Rgb8& c) { return c[0] > 230 && c[1] > 190 && c[2] < 40; }
@@ -549,3 +580,150 @@ TEST_F(RenderPng, ResultJointSlip)
     const auto base = projection.pixel({30.0, -3.0});
     EXPECT_EQ(picture.count_around(base[0], base[1], 6, is_slip), 0);
 }
+
+// Issue 13, item 8: rulers and a scale bar in the bottom-left corner (and none when switched
+// off), a title naming the field and what is known of the step over the picture.
+TEST_F(RenderPng, ResultRulersScaleBarAndTitle)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    const std::string vtu = write_fake_result(p, "result_fake_axes.vtu");
+    view::ResultOptions options;
+    options.field = "displacement";
+    const std::string with_path = output_path("result_axes.png"), without_path = output_path("result_no_axes.png");
+    view::ResultInfo info;
+    view::render_result_png(p, vtu, options, width, height, with_path, &info);
+    EXPECT_NE(info.title.find("displacement"), std::string::npos) << info.title;
+    options.show_axes = false;
+    view::render_result_png(p, vtu, options, width, height, without_path);
+    Picture with(with_path), without(without_path);
+    // Below and left of the model (outside its box, joints included): the rulers' lines, ticks
+    // and numbers and the scale bar; nothing there without them.
+    auto below_left = [&](const Picture& picture, bool axes) {
+        view::ResultOptions o = options;
+        o.show_axes = axes;
+        Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, o); });
+        const view::Box box = view::model_box(p);
+        const auto lo = projection.pixel({box.xmin, box.ymin});
+        return picture.count_in(0, 0, lo[0] - 4, height, is_dark) + picture.count_in(lo[0] - 4, 0, width / 2, lo[1] - 4, is_dark);
+    };
+    EXPECT_GT(below_left(with, true), 200) << "rulers and scale bar";
+    EXPECT_LT(below_left(without, false), 5);
+    // The title: dark text in the top-left corner of both.
+    EXPECT_GT(with.count_in(0, height - 22, width / 2, height, is_dark), 40);
+    EXPECT_GT(without.count_in(0, height - 22, width / 2, height, is_dark), 40);
+}
+
+// Issue 13, item 9: round legend values, a uniform field shown as one value (not −1…1), a range
+// chosen by hand, colour bands and other colour maps.
+TEST_F(RenderPng, ResultLegendRoundsAndUniformFields)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    const std::string vtu = write_fake_result(p, "result_fake_legend.vtu");  // ux = 0.01 x, uy = 0
+    view::ResultOptions options;
+    options.field = "ux";
+    const view::ResultInfo ux = drawn(p, vtu, options);
+    // The field spans about 0…0.1 m (minus the mesh's round-off): the ends are round numbers.
+    const double step = view::nice_step((ux.range_max - ux.range_min) / 5.0);
+    EXPECT_NEAR(ux.range_min / step, std::round(ux.range_min / step), 1e-9);
+    EXPECT_NEAR(ux.range_max / step, std::round(ux.range_max / step), 1e-9);
+    EXPECT_LE(ux.range_min, 0.0);
+    EXPECT_GE(ux.range_max, 0.1 - 1e-12);
+    EXPECT_LT(ux.range_max, 0.11);
+    options.field = "uy";  // zero everywhere
+    const view::ResultInfo uy = drawn(p, vtu, options);
+    EXPECT_LT(std::abs(uy.range_min), 1e-6);
+    EXPECT_LT(std::abs(uy.range_max), 1e-6);
+    options.field = "ux";
+    options.range_min = -0.05, options.range_max = 0.2;
+    const view::ResultInfo chosen = drawn(p, vtu, options);
+    EXPECT_EQ(chosen.range_min, -0.05);
+    EXPECT_EQ(chosen.range_max, 0.2);
+
+    // Bands: few distinct colours in the model; grey: no saturated colour in it.
+    auto model_colours = [&](const view::ResultOptions& o, const std::string& name, int* saturated) {
+        const std::string path = output_path(name);
+        view::render_result_png(p, vtu, o, width, height, path);
+        Picture picture(path);
+        Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, o); });
+        std::set<Rgb8> colours;
+        *saturated = 0;
+        for (double x = 0.2; x < 9.8; x += 0.05) {
+            const auto px = projection.pixel({x, 0.5});
+            const Rgb8 c = picture.at(px[0], px[1]);
+            colours.insert(c);
+            if (std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}) > 60) ++*saturated;
+        }
+        return colours.size();
+    };
+    view::ResultOptions smooth;
+    smooth.field = "ux";
+    smooth.show_joints = false;
+    int saturated = 0;
+    EXPECT_GT(model_colours(smooth, "result_smooth.png", &saturated), 40u);
+    EXPECT_GT(saturated, 100);
+    view::ResultOptions banded = smooth;
+    banded.bands = 5;
+    EXPECT_LE(model_colours(banded, "result_bands.png", &saturated), 8u);
+    view::ResultOptions grey = smooth;
+    grey.colour_map = view::ColourMap::Grey;
+    model_colours(grey, "result_grey.png", &saturated);
+    EXPECT_EQ(saturated, 0);
+}
+
+// Issue 13, item 10: the automatic deformation scale draws the largest displacement as 5 % of
+// the model's size, and a scale that turns elements inside out is reported.
+TEST_F(RenderPng, ResultAutoDeformationAndInvertedElements)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    const std::string vtu = write_fake_stress_result(p, "result_fake_shrink.vtu");  // ux = −0.01 x
+    view::ResultOptions options;
+    options.field = "displacement";
+    options.deform_auto = true;
+    const view::ResultInfo automatic = drawn(p, vtu, options);
+    EXPECT_NEAR(automatic.max_displacement, 0.1, 1e-9);  // at x = 10 m
+    EXPECT_NEAR(automatic.deform_factor * automatic.max_displacement, 0.05 * view::model_box(p).size(), 1e-9);
+    EXPECT_EQ(automatic.inverted_elements, 0);
+    options.deform_auto = false;
+    options.deform = 50.0;  // x (1 − 0.5): still the right way round
+    EXPECT_EQ(drawn(p, vtu, options).inverted_elements, 0);
+    options.deform = 200.0;  // x (1 − 2): every element mirrored
+    const view::ResultInfo mirrored = drawn(p, vtu, options);
+    EXPECT_EQ(mirrored.inverted_elements, static_cast<int>(p.mesh.triangles.size()));
+}
+
+// Issue 13, item 5: the geotechnical sign convention: stresses negated, σ1 the major compressive
+// stress (σ1 ≥ σ3), the convention named in the legend and the probe.
+TEST_F(RenderPng, ResultStressSignConvention)
+{
+    const Preprocessed p = preprocess_model(tunnel_model());
+    const std::string vtu = write_fake_stress_result(p, "result_fake_stress.vtu");
+    auto probe_at = [&](const std::string& field, view::StressSign sign, Point2 q, std::string* title = nullptr) {
+        view::ResultOptions options;
+        options.field = field;
+        options.stress_sign = sign;
+        view::ResultProbe probe;
+        const view::ResultInfo info = drawn(p, vtu, options, &probe);
+        if (title) *title = info.title;
+        double v = std::numeric_limits<double>::quiet_NaN();
+        EXPECT_TRUE(probe.valueAt(q.x, q.y, &v));
+        return v * (probe.units == "MPa" ? 1e6 : 1e3);  // in the legend's units: to Pa
+    };
+    const Point2 q{8.5, 8.5};
+    std::string tension_title, compression_title;
+    const double sxx_t = probe_at("stress_xx", view::StressSign::TensionPositive, q, &tension_title);
+    const double sxx_c = probe_at("stress_xx", view::StressSign::CompressionPositive, q, &compression_title);
+    EXPECT_LT(sxx_t, 0.0);
+    EXPECT_DOUBLE_EQ(sxx_c, -sxx_t);
+    EXPECT_NE(tension_title.find("tension +"), std::string::npos) << tension_title;
+    EXPECT_NE(compression_title.find("compression +"), std::string::npos) << compression_title;
+    const double s1_t = probe_at("stress_1", view::StressSign::TensionPositive, q);
+    const double s3_t = probe_at("stress_3", view::StressSign::TensionPositive, q);
+    const double s1_c = probe_at("stress_1", view::StressSign::CompressionPositive, q);
+    const double s3_c = probe_at("stress_3", view::StressSign::CompressionPositive, q);
+    EXPECT_GE(s1_t, s3_t);
+    EXPECT_GE(s1_c, s3_c);  // σ1 ≥ σ3 in compression too
+    EXPECT_DOUBLE_EQ(s1_c, -s3_t);
+    EXPECT_DOUBLE_EQ(s3_c, -s1_t);
+    EXPECT_GT(s1_c, 0.0);  // both principal stresses are compressive here
+}
+

@@ -6,7 +6,9 @@
 #include "results/HistoryPlot.hpp"
 #include "results/StepSlider.hpp"
 #include "results/UnbalancedPlot.hpp"
+#include "widgets/ResultToolBar.hpp"
 #include "session/RunController.hpp"
+#include "view/SceneGeometry.hpp"
 #include "widgets/ModelView.hpp"
 
 #include <QChart>
@@ -88,6 +90,7 @@ private slots:
     void stepSliderReplaysSavedSteps();
     void plotShowsTheHistory();
     void unbalancedRatioBesideTheHistory();
+    void deformationScaleIsShownAndWarned();
     void exportPngWritesTheFrame();
     void exportsCopyTheFiles();
     void cleanupTestCase();
@@ -253,6 +256,33 @@ void ResultsTest::unbalancedRatioBesideTheHistory()
     };
     QVERIFY2(count(gui::UnbalancedPlot::seriesColor()) > 30, qPrintable(QString::number(count(gui::UnbalancedPlot::seriesColor()))));
     QVERIFY2(count(gui::UnbalancedPlot::limitColor()) > 10, qPrintable(QString::number(count(gui::UnbalancedPlot::limitColor()))));
+}
+
+// Issue 13, item 10: the automatic deformation scale is used and shown beside the field; a
+// scale that turns elements inside out is warned about.
+void ResultsTest::deformationScaleIsShownAndWarned()
+{
+    auto* bar = window_->findChild<gui::ResultToolBar*>();
+    QVERIFY(bar);
+    window_->stepSlider()->setCurrentIndex(window_->stepSlider()->count() - 1);  // the block has slid
+    window_->setResultField(QStringLiteral("displacement"));
+    bar->setDeformAuto(true);
+    const view::ResultInfo& info = window_->modelView()->resultInfo();
+    QVERIFY(info.max_displacement > 0.0);
+    const double size = view::model_box(*window_->modelView()->scene()).size();
+    QVERIFY2(std::abs(info.deform_factor * info.max_displacement - 0.05 * size) < 1e-9 * size,
+             qPrintable(QString::number(info.deform_factor)));
+    QVERIFY2(bar->infoText().contains(QStringLiteral("(auto)")), qPrintable(bar->infoText()));
+    QVERIFY(!bar->infoText().contains(QStringLiteral("inside out")));
+    view::ResultInfo bad = info;
+    bad.inverted_elements = 12;
+    bar->showInfo(bad);
+    QVERIFY2(bar->infoText().contains(QStringLiteral("12 element")) && bar->infoText().contains(QStringLiteral("inside out")),
+             qPrintable(bar->infoText()));
+    bar->setDeformFactor(0.0);
+    QVERIFY(!bar->deformAuto());
+    QCOMPARE(window_->modelView()->resultInfo().deform_factor, 0.0);
+    QVERIFY(bar->infoText().isEmpty());
 }
 
 void ResultsTest::exportPngWritesTheFrame()

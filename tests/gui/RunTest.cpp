@@ -13,6 +13,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QChartView>
 #include <QDockWidget>
@@ -312,12 +313,29 @@ void RunTest::salenconOpenMeshRunShowsPlasticZone()
     window.setResultField(QStringLiteral("stress_3"));
     window.modelView()->showBox(0, 0, 20, 20);
     QTest::mouseMove(view, view->toWidget(QPointF(15.0, 15.0)).toPoint());
-    QTRY_VERIFY2(window.cursorText().contains(QStringLiteral("principal stress 3 = -")) &&
+    // The window's default is the geotechnical convention: compression positive, said so.
+    QTRY_VERIFY2(window.cursorText().contains(QStringLiteral("principal stress 3 (compression +) = ")) &&
                      window.cursorText().contains(QStringLiteral("MPa")),
                  qPrintable(window.cursorText()));
-    const QString text = window.cursorText();
+    QString text = window.cursorText();
     const double sigma3 = text.section(QStringLiteral("= "), -1).section(QLatin1Char(' '), 0, 0).toDouble();
-    QVERIFY2(sigma3 < -9.0 && sigma3 > -12.0, qPrintable(text));
+    QVERIFY2(sigma3 > 9.0 && sigma3 < 12.0, qPrintable(text));
+    // The files' convention on request: the same stress, tension positive; and σ1 (compression)
+    // is minus the tension-positive σ3 (issue 13, item 5).
+    window.findChild<QComboBox*>(QStringLiteral("stressSignBox"))->setCurrentIndex(1);
+    QTest::mouseMove(view, view->toWidget(QPointF(15.2, 15.0)).toPoint());
+    QTest::mouseMove(view, view->toWidget(QPointF(15.0, 15.0)).toPoint());
+    QTRY_VERIFY2(window.cursorText().contains(QStringLiteral("principal stress 3 (tension +) = -")), qPrintable(window.cursorText()));
+    text = window.cursorText();
+    const double tension3 = text.section(QStringLiteral("= "), -1).section(QLatin1Char(' '), 0, 0).toDouble();
+    window.setResultField(QStringLiteral("stress_1"));
+    window.findChild<QComboBox*>(QStringLiteral("stressSignBox"))->setCurrentIndex(0);
+    QTest::mouseMove(view, view->toWidget(QPointF(15.2, 15.0)).toPoint());
+    QTest::mouseMove(view, view->toWidget(QPointF(15.0, 15.0)).toPoint());
+    QTRY_VERIFY2(window.cursorText().contains(QStringLiteral("principal stress 1 (compression +) = ")), qPrintable(window.cursorText()));
+    text = window.cursorText();
+    const double compression1 = text.section(QStringLiteral("= "), -1).section(QLatin1Char(' '), 0, 0).toDouble();
+    QVERIFY2(std::abs(compression1 + tension3) < 0.01, qPrintable(QStringLiteral("%1 %2").arg(compression1).arg(tension3)));
 }
 
 // Issue 13, item 2: inside a long step (Salençon's excavation, dozens of equilibrium
