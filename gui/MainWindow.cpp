@@ -4,6 +4,7 @@
 #include "document/ModelDocument.hpp"
 #include "model/Defaults.hpp"
 #include "panels/PropertyEditor.hpp"
+#include "panels/StagesPanel.hpp"
 #include "results/ExportMenu.hpp"
 #include "results/HistoryPlot.hpp"
 #include "results/PvdFile.hpp"
@@ -133,6 +134,8 @@ void MainWindow::createDocks()
     plot_dock_ = addDock(tr("Plots"), QStringLiteral("plots"), plot_, Qt::RightDockWidgetArea, model_dock_);
     resizeDocks({plot_dock_}, {320}, Qt::Horizontal);  // the view keeps its width
 
+    stages_dock_ = addDock(tr("Stages"), QStringLiteral("stages"), new StagesPanel(document_, view_, this),
+                           Qt::RightDockWidgetArea, model_dock_);
     property_editor_ = new PropertyEditor(document_, this);
     property_dock_ = addDock(tr("Properties"), QStringLiteral("properties"), property_editor_, Qt::RightDockWidgetArea,
                              model_dock_);
@@ -198,7 +201,7 @@ void MainWindow::createActions()
     tree_->addAction(editing_->deleteAction());
 
     view_menu_ = new ViewMenu(view_, this);
-    view_menu_->addDocks({model_dock_, messages_dock_, steps_dock_, query_dock_, plot_dock_, property_dock_});
+    view_menu_->addDocks({model_dock_, stages_dock_, messages_dock_, steps_dock_, query_dock_, plot_dock_, property_dock_});
     connect(view_menu_, &ViewMenu::snappingChanged, this, &MainWindow::applySnap);
     menuBar()->addMenu(view_menu_);
 

@@ -221,6 +221,7 @@ private:
     QDockWidget* steps_dock_ = nullptr;
     QDockWidget* plot_dock_ = nullptr;
     QDockWidget* query_dock_ = nullptr;
+    QDockWidget* stages_dock_ = nullptr;
     QueryPlot* query_ = nullptr;
     QDockWidget* property_dock_ = nullptr;
     WindowStatusBar* status_bar_ = nullptr;

@@ -1050,187 +1050,192 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="91"/>
+        <location filename="../gui/MainWindow.cpp" line="92"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="125"/>
+        <location filename="../gui/MainWindow.cpp" line="126"/>
         <source>Query</source>
         <translation>Abfrage</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="157"/>
+        <location filename="../gui/MainWindow.cpp" line="137"/>
+        <source>Stages</source>
+        <translation>Bauphasen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="160"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="158"/>
+        <location filename="../gui/MainWindow.cpp" line="161"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="161"/>
+        <location filename="../gui/MainWindow.cpp" line="164"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="162"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="168"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="166"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="169"/>
+        <location filename="../gui/MainWindow.cpp" line="172"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="177"/>
+        <location filename="../gui/MainWindow.cpp" line="180"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="181"/>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
+        <location filename="../gui/MainWindow.cpp" line="185"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="185"/>
+        <location filename="../gui/MainWindow.cpp" line="188"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="193"/>
+        <location filename="../gui/MainWindow.cpp" line="196"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="196"/>
+        <location filename="../gui/MainWindow.cpp" line="199"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="118"/>
+        <location filename="../gui/MainWindow.cpp" line="119"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="257"/>
+        <location filename="../gui/MainWindow.cpp" line="260"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="73"/>
+        <location filename="../gui/MainWindow.cpp" line="74"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="238"/>
+        <location filename="../gui/MainWindow.cpp" line="241"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="245"/>
+        <location filename="../gui/MainWindow.cpp" line="248"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="246"/>
+        <location filename="../gui/MainWindow.cpp" line="249"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="257"/>
+        <location filename="../gui/MainWindow.cpp" line="260"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="259"/>
+        <location filename="../gui/MainWindow.cpp" line="262"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="279"/>
+        <location filename="../gui/MainWindow.cpp" line="282"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="279"/>
+        <location filename="../gui/MainWindow.cpp" line="282"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="295"/>
+        <location filename="../gui/MainWindow.cpp" line="298"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="77"/>
+        <location filename="../gui/MainWindow.cpp" line="78"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="111"/>
+        <location filename="../gui/MainWindow.cpp" line="112"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="121"/>
+        <location filename="../gui/MainWindow.cpp" line="122"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="133"/>
+        <location filename="../gui/MainWindow.cpp" line="134"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="328"/>
+        <location filename="../gui/MainWindow.cpp" line="331"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="356"/>
+        <location filename="../gui/MainWindow.cpp" line="359"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="357"/>
+        <location filename="../gui/MainWindow.cpp" line="360"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="406"/>
+        <location filename="../gui/MainWindow.cpp" line="409"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="407"/>
+        <location filename="../gui/MainWindow.cpp" line="410"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="448"/>
+        <location filename="../gui/MainWindow.cpp" line="451"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="502"/>
+        <location filename="../gui/MainWindow.cpp" line="505"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1238,62 +1243,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="526"/>
+        <location filename="../gui/MainWindow.cpp" line="529"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="526"/>
+        <location filename="../gui/MainWindow.cpp" line="529"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="491"/>
+        <location filename="../gui/MainWindow.cpp" line="494"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="552"/>
+        <location filename="../gui/MainWindow.cpp" line="555"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="560"/>
+        <location filename="../gui/MainWindow.cpp" line="563"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="560"/>
+        <location filename="../gui/MainWindow.cpp" line="563"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="561"/>
+        <location filename="../gui/MainWindow.cpp" line="564"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="137"/>
+        <location filename="../gui/MainWindow.cpp" line="140"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="221"/>
+        <location filename="../gui/MainWindow.cpp" line="224"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="373"/>
+        <location filename="../gui/MainWindow.cpp" line="376"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="432"/>
+        <location filename="../gui/MainWindow.cpp" line="435"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="433"/>
+        <location filename="../gui/MainWindow.cpp" line="436"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -1560,33 +1565,43 @@
 <context>
     <name>mcdda::gui::ModelTree</name>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="47"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="27"/>
+        <source>pressure %1 MPa</source>
+        <translation>Druck %1 MPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="28"/>
+        <source>pressure %1 kPa</source>
+        <translation>Druck %1 kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="57"/>
         <source>Item</source>
         <translation>Eintrag</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="47"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="57"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="74"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="84"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="79"/>
-        <location filename="../gui/widgets/ModelTree.cpp" line="96"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="89"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="106"/>
         <source>no material</source>
         <translation>kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="80"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="90"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="81"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="91"/>
         <source>%1, %n vertices</source>
         <translation>
             <numerusform>%1, %n Eckpunkt</numerusform>
@@ -1594,12 +1609,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="84"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="94"/>
         <source>hole %1</source>
         <translation>Loch %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="84"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="94"/>
         <source>%n vertices</source>
         <translation>
             <numerusform>%n Eckpunkt</numerusform>
@@ -1607,17 +1622,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="91"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="101"/>
         <source>Blocks</source>
         <translation>Blöcke</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="99"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="109"/>
         <source>block %1</source>
         <translation>Block %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="100"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="110"/>
         <source>%1, %2 m², %n elements</source>
         <translation>
             <numerusform>%1, %2 m², %n Element</numerusform>
@@ -1625,107 +1640,102 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="104"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="114"/>
         <source>Joints</source>
         <translation>Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="105"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="115"/>
         <source>Explicit</source>
         <translation>Einzelklüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="109"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="119"/>
         <source>spacing %1 m</source>
         <translation>Abstand %1 m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="111"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="121"/>
         <source>, persistence %1 %, joints %2 m long</source>
         <translation>, Durchtrennungsgrad %1 %, Klüfte %2 m lang</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="112"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="122"/>
         <source>Set %1</source>
         <translation>Kluftschar %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="121"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="131"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="122"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="137"/>
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="138"/>
         <source>rock/soil</source>
         <translation>Fels/Boden</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="129"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="139"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="130"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="140"/>
         <source>Supports</source>
         <translation>Auflager</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="142"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="136"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="146"/>
         <source>roller %1 to %2</source>
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="138"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="148"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="140"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="150"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="143"/>
-        <source>pressure %1 Pa</source>
-        <translation>Kantendruck %1 Pa</translation>
-    </message>
-    <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="145"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="155"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="150"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="160"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="152"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="162"/>
         <source>%1 to %2, EA %3 MN/m</source>
         <translation>%1 bis %2, EA %3 MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="156"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="166"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="180"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -1733,27 +1743,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="171"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="181"/>
         <source>excavates %1</source>
         <translation>bricht %1 aus</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="172"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="182"/>
         <source>builds %1</source>
         <translation>baut %1 ein</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="173"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="183"/>
         <source>installs %1</source>
         <translation>setzt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="184"/>
         <source>removes %1</source>
         <translation>entfernt %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="175"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="185"/>
         <source>%n material change(s)</source>
         <translation>
             <numerusform>%n Materialänderung</numerusform>
@@ -1761,7 +1771,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="186"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
@@ -2347,168 +2357,213 @@
 <context>
     <name>mcdda::gui::ResultToolBar</name>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="36"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="40"/>
         <source>Results</source>
         <translation>Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="40"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="44"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="42"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="46"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="43"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="47"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="44"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="48"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="45"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="49"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="46"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="50"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="47"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="48"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="52"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="49"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="53"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="50"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="54"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="55"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="57"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="61"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="58"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="62"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="59"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="63"/>
         <source>Sign of the stresses shown. Compression positive (as RS2, PLAXIS and UDEC): σ1 is the major compressive stress, σ1 ≥ σ3. Tension positive: the result files&apos; convention.</source>
         <translation>Vorzeichen der gezeigten Spannungen. Druck positiv (wie RS2, PLAXIS und UDEC): σ1 ist die größte Druckspannung, σ1 ≥ σ3. Zug positiv: die Konvention der Ergebnisdateien.</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="64"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="68"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="67"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="71"/>
         <source>Scale factor of the drawn displacements: 0 = undeformed; one step below 0 = auto, the largest displacement drawn as 5 % of the model&apos;s size</source>
         <translation>Überhöhung der gezeichneten Verschiebungen: 0 = unverformt; eine Stufe unter 0 = auto, die größte Verschiebung als 5 % der Modellgröße gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="70"/>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="110"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="74"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="150"/>
         <source>auto</source>
         <translation>auto</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="81"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="85"/>
         <source>Contacts</source>
         <translation>Kontakte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="85"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="89"/>
         <source>Draw the contact forces (lines along the force, the largest 6 % of the model long), joint slip and opening, and the bolts of the saved step shown</source>
         <translation>Kontaktkräfte (Linien in Kraftrichtung, die größte 6 % der Modellgröße lang), Kluftgleiten und -öffnung und die Anker des gezeigten gespeicherten Schritts zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="92"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="96"/>
+        <source>Units</source>
+        <translation>Einheiten</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="97"/>
+        <source>Units of stresses and displacements in the legend, the cursor read-out and query lines</source>
+        <translation>Einheiten der Spannungen und Verschiebungen in Legende, Cursoranzeige und Abfragelinien</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="108"/>
+        <source>Stresses</source>
+        <translation>Spannungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="109"/>
+        <source>kPa, or MPa from 1 MPa on</source>
+        <translation>kPa, ab 1 MPa in MPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="110"/>
+        <source>kPa</source>
+        <translation>kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="111"/>
+        <source>MPa</source>
+        <translation>MPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="113"/>
+        <source>Displacements</source>
+        <translation>Verschiebungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="114"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="132"/>
         <source>Rainbow</source>
         <translation>Regenbogen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="93"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="133"/>
         <source>Viridis</source>
         <translation>Viridis</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="94"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="134"/>
         <source>Grey</source>
         <translation>Grau</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="95"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
         <source>Blue–white–red</source>
         <translation>Blau–Weiß–Rot</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="96"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="136"/>
         <source>Colour map of the scale</source>
         <translation>Farbskala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="102"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="142"/>
         <source>smooth</source>
         <translation>stufenlos</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="103"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="143"/>
         <source> bands</source>
         <translation> Stufen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="104"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="144"/>
         <source>Number of colour bands (contours); smooth = a continuous scale</source>
         <translation>Anzahl der Farbstufen (Isoflächen); stufenlos = kontinuierliche Skala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="107"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="147"/>
         <source>Range</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="118"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="158"/>
         <source>Lower end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Unteres Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="119"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="159"/>
         <source>Upper end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Oberes Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="174"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="235"/>
         <source>×%1 (auto)</source>
         <translation>×%1 (auto)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="177"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="238"/>
         <source>⚠ %n element(s) drawn inside out: lower the scale</source>
         <translation>
             <numerusform>⚠ %n Element umgestülpt gezeichnet: Überhöhung verringern</numerusform>
@@ -2716,6 +2771,119 @@
         <location filename="../gui/document/Commands.cpp" line="78"/>
         <source>Change material &quot;%1&quot;</source>
         <translation>Material „%1“ ändern</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::StagesPanel</name>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="46"/>
+        <source>Choose a stage to see the model as it stands in it; the first row shows every region</source>
+        <translation>Eine Bauphase wählen, um das Modell so zu sehen, wie es in ihr steht; die erste Zeile zeigt alle Bereiche</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="47"/>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="49"/>
+        <source>Add a stage at the end (10 steps, the model&apos;s analysis settings)</source>
+        <translation>Eine Bauphase am Ende hinzufügen (10 Schritte, die Berechnungseinstellungen des Modells)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="50"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="52"/>
+        <source>Up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="54"/>
+        <source>Down</source>
+        <translation>Nach unten</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
+        <source>Name of the stage (results, tree, messages)</source>
+        <translation>Name der Bauphase (Ergebnisse, Baum, Meldungen)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
+        <source>Regions removed at the start of the stage (an excavation)</source>
+        <translation>Bereiche, die zu Beginn der Bauphase entfernt werden (ein Ausbruch)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="62"/>
+        <source>Regions added at the start of the stage (backfill, a liner); absent before</source>
+        <translation>Bereiche, die zu Beginn der Bauphase hinzukommen (Verfüllung, Ausbau); vorher nicht vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="63"/>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="71"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="72"/>
+        <source>Excavates</source>
+        <translation>Bricht aus</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="73"/>
+        <source>Builds</source>
+        <translation>Baut ein</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
+        <source>Model as drawn (every region)</source>
+        <translation>Modell wie gezeichnet (alle Bereiche)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
+        <source>No stages: the model is analysed in one go. Add one to excavate or build regions step by step.</source>
+        <translation>Keine Bauphasen: das Modell wird in einem Zug berechnet. Eine hinzufügen, um Bereiche schrittweise auszubrechen oder einzubauen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
+        <source>region %1</source>
+        <translation>Bereich %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="153"/>
+        <source>Edit stage &quot;%1&quot;</source>
+        <translation>Bauphase „%1“ ändern</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="160"/>
+        <source>stage %1</source>
+        <translation>Bauphase %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
+        <source>Add stage &quot;%1&quot;</source>
+        <translation>Bauphase „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="175"/>
+        <source>Remove stage &quot;%1&quot;</source>
+        <translation>Bauphase „%1“ entfernen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="184"/>
+        <source>Move stage &quot;%1&quot;</source>
+        <translation>Bauphase „%1“ verschieben</translation>
     </message>
 </context>
 <context>
@@ -2945,62 +3113,62 @@
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="533"/>
+        <location filename="../gui/view/ResultScene.cpp" line="542"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="534"/>
+        <location filename="../gui/view/ResultScene.cpp" line="543"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="692"/>
+        <location filename="../gui/view/ResultScene.cpp" line="701"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="694"/>
+        <location filename="../gui/view/ResultScene.cpp" line="703"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="699"/>
+        <location filename="../gui/view/ResultScene.cpp" line="708"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="701"/>
+        <location filename="../gui/view/ResultScene.cpp" line="710"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="705"/>
+        <location filename="../gui/view/ResultScene.cpp" line="714"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="710"/>
+        <location filename="../gui/view/ResultScene.cpp" line="719"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="725"/>
+        <location filename="../gui/view/ResultScene.cpp" line="734"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="762"/>
+        <location filename="../gui/view/ResultScene.cpp" line="771"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="766"/>
+        <location filename="../gui/view/ResultScene.cpp" line="775"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="773"/>
+        <location filename="../gui/view/ResultScene.cpp" line="782"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>
@@ -3020,47 +3188,47 @@
         <translation>Legende</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="178"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="183"/>
         <source>Region boundary</source>
         <translation>Bereichsrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="179"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="184"/>
         <source>Block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="181"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="186"/>
         <source>Joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="183"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="188"/>
         <source>Fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="190"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="195"/>
         <source>Fixed line (x and y)</source>
         <translation>Feste Linie (x und y)</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="192"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="197"/>
         <source>Roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="194"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="199"/>
         <source>Point load</source>
         <translation>Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="196"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
         <source>Edge pressure</source>
         <translation>Kantendruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="198"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
         <source>Measurement point</source>
         <translation>Messpunkt</translation>
     </message>

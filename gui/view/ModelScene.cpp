@@ -43,6 +43,19 @@ struct Style {
     double pixel = 1.0;     ///< pixels per point (window DPI / 72): scales line widths and text
     double z_step = 1e-3;   ///< m between layers
     double symbol = 1.0;    ///< symbol size (m)
+    std::vector<int> hidden_regions;  ///< SceneOptions::hidden_regions
+
+    bool hidden(int region) const
+    {
+        return std::find(hidden_regions.begin(), hidden_regions.end(), region) != hidden_regions.end();
+    }
+    /// Whether mesh triangle t lies in a hidden region.
+    bool hides_triangle(const Preprocessed& p, std::size_t t) const
+    {
+        if (hidden_regions.empty() || t >= p.mesh.triangle_block.size()) return false;
+        const int b = p.mesh.triangle_block[t];
+        return b >= 0 && b < static_cast<int>(p.blocks.size()) && hidden(p.blocks[static_cast<std::size_t>(b)].region);
+    }
 };
 
 double dpi_of(vtkRenderer* renderer)
@@ -197,29 +210,37 @@ void add_fill(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             const auto& tri = mesh.triangles[t];
             if (std::any_of(tri.begin(), tri.end(), [&](int n) { return n < 0 || n >= node_count; })) continue;
+            if (st.hides_triangle(p, t)) continue;
             fill.add_triangle(tri, color_of_material(p.model, material_of_triangle(p, t)));
         }
     } else if (!p.blocks.empty()) {
-        for (const Block& b : p.blocks) fill.add_polygon(b.outer, b.holes, color_of_material(p.model, b.material));
+        for (const Block& b : p.blocks)
+            if (!st.hidden(b.region)) fill.add_polygon(b.outer, b.holes, color_of_material(p.model, b.material));
     } else {
-        for (const Region& r : p.model.regions)
-            fill.add_polygon(r.boundary, r.holes, color_of_material(p.model, r.material));
+        for (std::size_t i = 0; i < p.model.regions.size(); ++i) {
+            const Region& r = p.model.regions[i];
+            if (!st.hidden(static_cast<int>(i))) fill.add_polygon(r.boundary, r.holes, color_of_material(p.model, r.material));
+        }
     }
     if (!fill.empty()) renderer->AddActor(fill.actor());
 }
 
-void add_mesh_edges(vtkRenderer* renderer, const Mesh& mesh, const Style& st)
+void add_mesh_edges(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
 {
+    const Mesh& mesh = p.mesh;
     if (mesh.triangles.empty()) return;
     const auto node_count = static_cast<int>(mesh.nodes.size());
     std::vector<std::pair<int, int>> edges;
     edges.reserve(mesh.triangles.size() * 3);
-    for (const auto& t : mesh.triangles)
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        if (st.hides_triangle(p, i)) continue;
+        const auto& t = mesh.triangles[i];
         for (int k = 0; k < 3; ++k) {
             const int a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
             if (a < 0 || b < 0 || a >= node_count || b >= node_count) continue;
             edges.emplace_back(std::min(a, b), std::max(a, b));
         }
+    }
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
@@ -242,6 +263,7 @@ void add_outlines(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
     std::vector<const Ring*> rings;
     if (!p.blocks.empty()) {
         for (const Block& b : p.blocks) {
+            if (st.hidden(b.region)) continue;
             rings.push_back(&b.outer);
             for (const Ring& h : b.holes) rings.push_back(&h);
         }
@@ -254,8 +276,33 @@ void add_outlines(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
     add_shapes(renderer, ring_lines(rings), palette::block_outline, 2.0 * st.pixel, outline_layer * st.z_step);
 }
 
+/// Whether `p` lies inside the ring (even–odd rule).
+bool inside_ring(const Ring& ring, const Point2& p)
+{
+    bool inside = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+        if ((ring[i].y > p.y) != (ring[j].y > p.y) &&
+            p.x < (ring[j].x - ring[i].x) * (p.y - ring[i].y) / (ring[j].y - ring[i].y) + ring[i].x)
+            inside = !inside;
+    return inside;
+}
+
+bool inside_region(const Region& r, const Point2& p)
+{
+    if (r.boundary.size() < 3 || !inside_ring(r.boundary, p)) return false;
+    return std::none_of(r.holes.begin(), r.holes.end(), [&](const Ring& h) { return h.size() >= 3 && inside_ring(h, p); });
+}
+
 void add_joints(vtkRenderer* renderer, const Model& model, const Style& st)
 {
+    // Not through regions hidden in the stage shown (an excavated opening).
+    auto in_hidden_region = [&](const Point2& a, const Point2& b) {
+        const Point2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+        for (int r : st.hidden_regions)
+            if (r >= 0 && r < static_cast<int>(model.regions.size()) && inside_region(model.regions[static_cast<std::size_t>(r)], mid))
+                return true;
+        return false;
+    };
     Shapes inside, outside;
     for (const Joint& j : model.joints)
         for (std::size_t i = 0; i + 1 < j.points.size(); ++i)
@@ -263,6 +310,7 @@ void add_joints(vtkRenderer* renderer, const Model& model, const Style& st)
                 // A joint set's traces beyond the rock (openings, empty space) cut nothing: not
                 // drawn. An explicit joint's are, lightly, to show where it was drawn wrong.
                 if (!piece.in_material && j.joint_set >= 0) continue;
+                if (piece.in_material && in_hidden_region(piece.from, piece.to)) continue;
                 (piece.in_material ? inside : outside).lines.push_back({piece.from, piece.to});
             }
     const double z = joint_layer * st.z_step;
@@ -301,12 +349,13 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
     st.pixel = dpi_of(renderer) / 72.0;
     st.symbol = symbol_size(box);
     st.z_step = (box.size() > 0.0 ? box.size() : 1.0) * 1e-3;
+    st.hidden_regions = options.hidden_regions;
 
     renderer->SetBackground(palette::background.data());
     renderer->GradientBackgroundOff();
 
     add_fill(renderer, p, st);
-    if (options.show_mesh) add_mesh_edges(renderer, p.mesh, st);
+    if (options.show_mesh) add_mesh_edges(renderer, p, st);
     add_outlines(renderer, p, st);
     if (options.show_joints) add_joints(renderer, p.model, st);
 

@@ -5,6 +5,8 @@
 
 #include "Preprocess.hpp"
 
+#include <vector>
+
 class vtkRenderer;
 
 namespace mcdda::view {
@@ -18,6 +20,9 @@ struct SceneOptions {
     bool show_legend = true;    ///< box in the top right corner naming colours and symbols
     bool show_points = true;    ///< measurement points with their names
     bool show_axes = true;      ///< coordinate axes on the left and bottom edges and a scale bar
+    /// Regions not drawn (nor their mesh, outlines and the joints through them): those absent in
+    /// the construction stage shown (regions_present()).
+    std::vector<int> hidden_regions;
 };
 
 /// Adds the actors of the model to `renderer`: blocks filled in their material's colour with

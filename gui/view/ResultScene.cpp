@@ -481,9 +481,18 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             if (std::isfinite(v)) range[0] = std::min(range[0], v), range[1] = std::max(range[1], v);
         }
         if (!(range[0] <= range[1])) range[0] = 0.0, range[1] = 1.0;
-        if (units == "Pa") {  // stresses in kPa, or MPa when they reach 1 MPa
-            const double scale = std::max(std::abs(range[0]), std::abs(range[1])) >= 1e6 ? 1e-6 : 1e-3;
-            units = scale == 1e-6 ? "MPa" : "kPa";
+        double scale = 1.0;
+        if (units == "Pa") {  // stresses in the unit chosen; automatic: kPa, or MPa from 1 MPa on
+            const bool mpa = options.stress_unit == StressUnit::MPa ||
+                             (options.stress_unit == StressUnit::Automatic &&
+                              std::max(std::abs(range[0]), std::abs(range[1])) >= 1e6);
+            scale = mpa ? 1e-6 : 1e-3;
+            units = mpa ? "MPa" : "kPa";
+        } else if (units == "m" && options.length_unit == LengthUnit::Millimetre) {
+            scale = 1e3;
+            units = "mm";
+        }
+        if (scale != 1.0) {
             for (vtkIdType i = 0; i < n; ++i) values->SetValue(i, values->GetValue(i) * scale);
             range[0] *= scale, range[1] *= scale;
         }

@@ -21,6 +21,10 @@ namespace mcdda::view {
 /// rock and soil engineers read compression positive, with σ1 the major compressive stress.
 enum class StressSign { TensionPositive, CompressionPositive };
 
+/// Units the picture shows stresses and displacements in (legend, probe, query lines).
+enum class StressUnit { Automatic, KPa, MPa };  ///< Automatic: MPa from 1 MPa on, else kPa
+enum class LengthUnit { Metre, Millimetre };
+
 /// Colour maps of the scalar bar.
 enum class ColourMap { Rainbow, Viridis, Grey, Diverging };
 
@@ -35,6 +39,8 @@ struct ResultOptions {
     /// CompressionPositive: every stress negated and stress_1 the major compressive principal
     /// stress (σ1 ≥ σ3 in compression), as RS2, PLAXIS and UDEC show them.
     StressSign stress_sign = StressSign::TensionPositive;
+    StressUnit stress_unit = StressUnit::Automatic;
+    LengthUnit length_unit = LengthUnit::Metre;  ///< of displacements
     double deform = 0.0;      ///< points drawn at x + deform · displacement; 0 = undeformed
     /// Draw deformed with the factor that makes the largest displacement 5 % of the model's
     /// larger side (`deform` is then ignored; ResultInfo says the factor used).

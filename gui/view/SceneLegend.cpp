@@ -151,7 +151,12 @@ std::string material_label(const Model& model, int index)
 std::string legend_title(const Preprocessed& p)
 {
     std::string title = p.model.name.empty() ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Legend")) : p.model.name;
-    if (title.size() > 48) title = title.substr(0, 45) + "...";
+    // Short enough that the legend leaves the model room in a window of the default size.
+    if (title.size() > 32) {
+        std::size_t cut = 29;
+        while (cut > 0 && (static_cast<unsigned char>(title[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+        title = title.substr(0, cut) + "...";
+    }
     return title;
 }
 

@@ -1,9 +1,12 @@
 #include "widgets/ModelTree.hpp"
 
+#include <QCoreApplication>
 #include <QHeaderView>
+#include <QLocale>
 #include <QStringList>
 #include <QTreeWidgetItemIterator>
 
+#include <cmath>
 #include <cstddef>
 
 namespace mcdda::gui {
@@ -17,6 +20,13 @@ constexpr int ring_role = Qt::UserRole + 2;
 QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 
 QString point_text(const Point2& p) { return QStringLiteral("(%1, %2)").arg(p.x, 0, 'g', 6).arg(p.y, 0, 'g', 6); }
+
+/// A pressure as the forms and the legend give it: kPa, or MPa from 1 MPa on (not "1e+07 Pa").
+QString pressure_text(double pa)
+{
+    return std::abs(pa) >= 1e6 ? QCoreApplication::translate("mcdda::gui::ModelTree", "pressure %1 MPa").arg(QLocale().toString(pa / 1e6, 'g', 6))
+                               : QCoreApplication::translate("mcdda::gui::ModelTree", "pressure %1 kPa").arg(QLocale().toString(pa / 1e3, 'g', 6));
+}
 
 QString name_or(const std::string& name, const QString& fallback) { return name.empty() ? fallback : to_qt(name); }
 
@@ -140,7 +150,7 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
         row(loads, to_qt(m.point_loads[i].name), tr("point load at %1").arg(point_text(m.point_loads[i].point)),
             {Kind::PointLoad, static_cast<int>(i)});
     for (std::size_t i = 0; i < m.edge_pressures.size(); ++i)
-        row(loads, to_qt(m.edge_pressures[i].name), tr("pressure %1 Pa").arg(m.edge_pressures[i].pressure),
+        row(loads, to_qt(m.edge_pressures[i].name), pressure_text(m.edge_pressures[i].pressure),
             {Kind::EdgePressure, static_cast<int>(i)});
     QTreeWidgetItem* points = group(tr("Measurement points"), m.measurement_points.size());
     for (std::size_t i = 0; i < m.measurement_points.size(); ++i)

@@ -1,6 +1,10 @@
 #include "widgets/ResultToolBar.hpp"
 
+#include <QActionGroup>
 #include <QComboBox>
+#include <QMenu>
+#include <QSettings>
+#include <QToolButton>
 #include <QDoubleSpinBox>
 #include <QDoubleValidator>
 #include <QIcon>
@@ -86,6 +90,42 @@ ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
                              "joint slip and opening, and the bolts of the saved step shown"));
     connect(contacts_, &QAction::toggled, this, &ResultToolBar::optionsChanged);
 
+    // Units: one choice for the legend, the read-out under the cursor and the query lines.
+    auto* units = new QToolButton(this);
+    units->setObjectName(QStringLiteral("unitsButton"));
+    units->setText(tr("Units"));
+    units->setToolTip(tr("Units of stresses and displacements in the legend, the cursor read-out and query lines"));
+    units->setPopupMode(QToolButton::InstantPopup);
+    auto* menu = new QMenu(units);
+    auto choice = [&](QActionGroup* group, const QString& text, const QString& name, int value) {
+        QAction* a = menu->addAction(text);
+        a->setObjectName(name);
+        a->setCheckable(true);
+        a->setData(value);
+        group->addAction(a);
+    };
+    stress_units_ = new QActionGroup(this);
+    menu->addSection(tr("Stresses"));
+    choice(stress_units_, tr("kPa, or MPa from 1 MPa on"), QStringLiteral("stressUnitAuto"), int(view::StressUnit::Automatic));
+    choice(stress_units_, tr("kPa"), QStringLiteral("stressUnitKPa"), int(view::StressUnit::KPa));
+    choice(stress_units_, tr("MPa"), QStringLiteral("stressUnitMPa"), int(view::StressUnit::MPa));
+    length_units_ = new QActionGroup(this);
+    menu->addSection(tr("Displacements"));
+    choice(length_units_, tr("m"), QStringLiteral("lengthUnitM"), int(view::LengthUnit::Metre));
+    choice(length_units_, tr("mm"), QStringLiteral("lengthUnitMm"), int(view::LengthUnit::Millimetre));
+    units->setMenu(menu);
+    addWidget(units);
+    const QSettings settings;
+    setUnits(static_cast<view::StressUnit>(settings.value(QStringLiteral("units/stress"), 0).toInt()),
+             static_cast<view::LengthUnit>(settings.value(QStringLiteral("units/length"), 0).toInt()));
+    for (QActionGroup* group : {stress_units_, length_units_})
+        connect(group, &QActionGroup::triggered, this, [this] {
+            QSettings settings;
+            settings.setValue(QStringLiteral("units/stress"), int(stressUnit()));
+            settings.setValue(QStringLiteral("units/length"), int(lengthUnit()));
+            emit optionsChanged();
+        });
+
     addSeparator();
     map_box_ = new QComboBox(this);
     map_box_->setObjectName(QStringLiteral("colourMapBox"));
@@ -135,6 +175,25 @@ bool ResultToolBar::deformAuto() const { return deform_box_->value() < 0.0; }
 
 void ResultToolBar::setDeformAuto(bool on) { deform_box_->setValue(on ? -1.0 : 0.0); }
 
+void ResultToolBar::setUnits(view::StressUnit stress, view::LengthUnit length)
+{
+    for (auto [group, value] : {std::pair{stress_units_, int(stress)}, std::pair{length_units_, int(length)}})
+        for (QAction* a : group->actions()) a->setChecked(a->data().toInt() == value);
+    emit optionsChanged();
+}
+
+view::StressUnit ResultToolBar::stressUnit() const
+{
+    QAction* a = stress_units_->checkedAction();
+    return a ? static_cast<view::StressUnit>(a->data().toInt()) : view::StressUnit::Automatic;
+}
+
+view::LengthUnit ResultToolBar::lengthUnit() const
+{
+    QAction* a = length_units_->checkedAction();
+    return a ? static_cast<view::LengthUnit>(a->data().toInt()) : view::LengthUnit::Metre;
+}
+
 view::StressSign ResultToolBar::stressSign() const { return static_cast<view::StressSign>(sign_box_->currentData().toInt()); }
 
 void ResultToolBar::setStressSign(view::StressSign sign) { sign_box_->setCurrentIndex(sign_box_->findData(int(sign))); }
@@ -158,6 +217,8 @@ view::ResultOptions ResultToolBar::options() const
     view::ResultOptions options;
     options.field = field().toStdString();
     options.stress_sign = stressSign();
+    options.stress_unit = stressUnit();
+    options.length_unit = lengthUnit();
     options.deform = deformFactor();
     options.deform_auto = deformAuto();
     options.colour_map = static_cast<view::ColourMap>(map_box_->currentData().toInt());

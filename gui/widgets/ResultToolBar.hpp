@@ -10,6 +10,7 @@
 
 #include <QToolBar>
 
+class QActionGroup;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -34,6 +35,11 @@ public:
     /// The automatic scale: the largest displacement drawn as 5 % of the model's size.
     bool deformAuto() const;
     void setDeformAuto(bool on);
+    /// The units of stresses and displacements in legend, read-out and query lines; kept in the
+    /// program's settings between sessions.
+    void setUnits(view::StressUnit stress, view::LengthUnit length);
+    view::StressUnit stressUnit() const;
+    view::LengthUnit lengthUnit() const;
     view::StressSign stressSign() const;
     void setStressSign(view::StressSign sign);
     /// The colour scale: map, number of bands (0 = smooth) and ends (NaN = automatic).
@@ -64,6 +70,8 @@ private:
     QLineEdit* min_edit_ = nullptr;
     QLineEdit* max_edit_ = nullptr;
     QAction* contacts_ = nullptr;
+    QActionGroup* stress_units_ = nullptr;
+    QActionGroup* length_units_ = nullptr;
 };
 
 }  // namespace mcdda::gui

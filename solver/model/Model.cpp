@@ -58,4 +58,22 @@ double Stage::released(double s, const std::vector<LoadTable>& tables) const {
     return over <= 0 ? 1.0 : std::clamp(s / over, 0.0, 1.0);
 }
 
+std::vector<int> regions_absent(const Model& model, int stage)
+{
+    std::vector<char> present(model.regions.size(), 1);
+    auto mark = [&](const std::vector<int>& regions, char value) {
+        for (int r : regions)
+            if (r >= 0 && r < static_cast<int>(present.size())) present[static_cast<std::size_t>(r)] = value;
+    };
+    for (const Stage& st : model.stages) mark(st.activate, 0);  // built later: absent at first
+    for (int k = 0; k <= stage && k < static_cast<int>(model.stages.size()); ++k) {
+        mark(model.stages[static_cast<std::size_t>(k)].excavate, 0);
+        mark(model.stages[static_cast<std::size_t>(k)].activate, 1);
+    }
+    std::vector<int> absent;
+    for (std::size_t r = 0; r < present.size(); ++r)
+        if (!present[r]) absent.push_back(static_cast<int>(r));
+    return absent;
+}
+
 }  // namespace mcdda

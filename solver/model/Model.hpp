@@ -274,4 +274,9 @@ struct Model {
     ElementType element() const;
 };
 
+/// The regions absent while stage `stage` runs, after its own excavations and activations: those
+/// excavated by it or an earlier stage and not activated again since, and those a later stage
+/// activates. `stage` < 0: the model before the first stage (only the later-activated ones).
+std::vector<int> regions_absent(const Model& model, int stage);
+
 }  // namespace mcdda

@@ -24,6 +24,9 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QUndoStack>
 #include <QApplication>
 #include <QTextBrowser>
 #include <QDialog>
@@ -54,6 +57,7 @@ private slots:
     void viewMenuMessagesAndStepLabel();
     void helpShowsTheUserGuide();
     void newModelTalksOfRegionsAndFitsTheFirst();
+    void stageListShowsAndEditsStages();
 };
 
 void EditingTest::initTestCase()
@@ -514,6 +518,80 @@ void EditingTest::newModelTalksOfRegionsAndFitsTheFirst()
     QVERIFY(guitest::count_around(*view, 230.0, 120.0, rock) > 40);
     // Now "nothing is fixed" is worth saying.
     QVERIFY2(window.messages().contains(QStringLiteral("nothing is fixed")), qPrintable(window.messages()));
+}
+
+// Issue 13, stages in the window: the Stages dock lists the staged jointed tunnel's stages; the
+// picture shows the model as it stands in the stage chosen (the top heading gone from the stage
+// that excavates it on); stages are added, renamed, edited and removed as undoable edits.
+void EditingTest::stageListShowsAndEditsStages()
+{
+    MainWindow window;
+    window.resize(1100, 750);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
+    QTRY_VERIFY(guitest::settled(window));
+    auto* list = window.findChild<QListWidget*>(QStringLiteral("stageList"));
+    QVERIFY(list);
+    const Model& model = window.document()->model();
+    QCOMPARE(list->count(), static_cast<int>(model.stages.size()) + 1);  // and "as drawn"
+    QVERIFY(list->item(2)->text().contains(QStringLiteral("top heading")));
+    // Item 7: the tree gives the overburden as the forms do, 2 MPa (not "2e+06 Pa").
+    QVERIFY(!window.modelTree()->findItems(QStringLiteral("pressure 2 MPa"), Qt::MatchRecursive, 1).isEmpty());
+    gui::ModelView* view = window.modelView();
+    view::SceneOptions plain = view->sceneOptions();
+    plain.show_mesh = false;  // the fine mesh around the tunnel would hide the fill
+    plain.show_joints = false;
+    view->setSceneOptions(plain);
+    const view::Rgb rock = view::material_color(model.regions[1].material);
+    const Point2 heading{0.0, 1.6};  // inside the top heading (radius 3, above the springline)
+    list->setCurrentRow(1);  // in situ: everything stands
+    QVERIFY2(guitest::count_around(*view, heading.x, heading.y, rock) > 40, "rock in the heading before it is dug");
+    list->setCurrentRow(2);  // top heading excavated
+    QCOMPARE(guitest::count_around(*view, heading.x, heading.y, rock), 0);
+    QVERIFY(guitest::count_around(*view, heading.x, heading.y, view::palette::background) > 40);
+    // The rock mass stays: the middle of its largest block (convex: cut by straight joints).
+    const Block* largest = nullptr;
+    for (const Block& b : view->scene()->blocks)
+        if (b.region == 0 && b.outer.front().y < -5.0 && (!largest || b.area > largest->area)) largest = &b;
+    QVERIFY(largest);
+    Point2 middle{0.0, 0.0};
+    for (const Point2& q : largest->outer) middle.x += q.x / largest->outer.size(), middle.y += q.y / largest->outer.size();
+    QVERIFY(guitest::count_around(*view, middle.x, middle.y, rock) > 40);
+    list->setCurrentRow(0);  // the model as drawn
+    QVERIFY(guitest::count_around(*view, heading.x, heading.y, rock) > 40);
+    // Item 9: at the default window size the legend leaves the model's top-right corner in sight.
+    const Block* corner = nullptr;
+    for (const Block& b : view->scene()->blocks)
+        if (b.region == 0 && std::all_of(b.outer.begin(), b.outer.end(), [](const Point2& q) { return q.x > 8.0 && q.y > 8.0; }) &&
+            (!corner || b.area > corner->area))
+            corner = &b;
+    QVERIFY(corner);
+    Point2 corner_middle{0.0, 0.0};
+    for (const Point2& q : corner->outer)
+        corner_middle.x += q.x / corner->outer.size(), corner_middle.y += q.y / corner->outer.size();
+    QVERIFY2(guitest::count_around(*view, corner_middle.x, corner_middle.y, rock) > 40, "the legend covers the model");
+
+    // Add a stage, name it, let it build the top heading again (a backfill), undo all of it.
+    QUndoStack* undo = window.document()->undoStack();
+    const int edits = undo->count();
+    window.findChild<QPushButton*>(QStringLiteral("addStage"))->click();
+    QCOMPARE(window.document()->model().stages.size(), model.stages.size());  // `model` follows the document
+    QCOMPARE(list->count(), static_cast<int>(window.document()->model().stages.size()) + 1);
+    const int added = list->currentRow() - 1;
+    QCOMPARE(added, static_cast<int>(window.document()->model().stages.size()) - 1);
+    window.findChild<QLineEdit*>(QStringLiteral("stageName"))->setText(QStringLiteral("backfill"));
+    auto* builds = window.findChild<QListWidget*>(QStringLiteral("stageActivate"));
+    builds->item(1)->setCheckState(Qt::Checked);
+    window.findChild<QPushButton*>(QStringLiteral("applyStage"))->click();
+    const Stage& edited = window.document()->model().stages.back();
+    QCOMPARE(edited.name, std::string("backfill"));
+    QCOMPARE(edited.activate, std::vector<int>{1});
+    QCOMPARE(undo->count(), edits + 2);
+    QVERIFY(guitest::count_around(*view, heading.x, heading.y, rock) > 40);  // built again in it
+    undo->undo();
+    undo->undo();
+    QCOMPARE(window.document()->model().stages.size(), std::size_t(4));
 }
 
 QTEST_MAIN(EditingTest)

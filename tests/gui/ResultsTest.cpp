@@ -19,7 +19,9 @@
 #include <QGuiApplication>
 #include <QImageReader>
 #include <QLineSeries>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -91,6 +93,7 @@ private slots:
     void plotShowsTheHistory();
     void unbalancedRatioBesideTheHistory();
     void deformationScaleIsShownAndWarned();
+    void unitsAreChosenOnce();
     void exportPngWritesTheFrame();
     void exportsCopyTheFiles();
     void cleanupTestCase();
@@ -102,6 +105,7 @@ private:
 
 void ResultsTest::initTestCase()
 {
+    QStandardPaths::setTestModeEnabled(true);  // the units chosen go to a test settings file
     gui::register_run_types();
     if (QGuiApplication::platformName() != QLatin1String("xcb"))
         QSKIP("the VTK view needs the xcb platform (run under xvfb-run)");
@@ -283,6 +287,34 @@ void ResultsTest::deformationScaleIsShownAndWarned()
     QVERIFY(!bar->deformAuto());
     QCOMPARE(window_->modelView()->resultInfo().deform_factor, 0.0);
     QVERIFY(bar->infoText().isEmpty());
+}
+
+// Issue 13, item 7: one choice of units for stresses and displacements, used by the legend, the
+// cursor read-out and query lines (the probe), and kept for the next session.
+void ResultsTest::unitsAreChosenOnce()
+{
+    auto* bar = window_->findChild<gui::ResultToolBar*>();
+    ModelView* view = window_->modelView();
+    window_->stepSlider()->setCurrentIndex(window_->stepSlider()->count() - 1);
+    window_->setResultField(QStringLiteral("displacement"));
+    bar->setUnits(view::StressUnit::Automatic, view::LengthUnit::Metre);
+    QCOMPARE(view->resultProbe().units, std::string("m"));
+    const Point2 block{4.82, 4.37};  // on the sliding block
+    double metres = 0.0, millimetres = 0.0;
+    QVERIFY(view->resultProbe().valueAt(block.x, block.y, &metres));
+    window_->findChild<QAction*>(QStringLiteral("lengthUnitMm"))->trigger();
+    QCOMPARE(bar->lengthUnit(), view::LengthUnit::Millimetre);
+    QCOMPARE(view->resultProbe().units, std::string("mm"));
+    QVERIFY(view->resultProbe().valueAt(block.x, block.y, &millimetres));
+    QVERIFY2(std::abs(millimetres - 1e3 * metres) <= 1e-9 * std::abs(millimetres), qPrintable(QString::number(millimetres)));
+    QCOMPARE(QSettings().value(QStringLiteral("units/length")).toInt(), int(view::LengthUnit::Millimetre));
+    window_->setResultField(QStringLiteral("stress_yy"));
+    window_->findChild<QAction*>(QStringLiteral("stressUnitMPa"))->trigger();
+    QCOMPARE(view->resultProbe().units, std::string("MPa"));
+    window_->findChild<QAction*>(QStringLiteral("stressUnitKPa"))->trigger();
+    QCOMPARE(view->resultProbe().units, std::string("kPa"));
+    bar->setUnits(view::StressUnit::Automatic, view::LengthUnit::Metre);
+    window_->setResultField(QStringLiteral("displacement"));
 }
 
 void ResultsTest::exportPngWritesTheFrame()

@@ -1,0 +1,52 @@
+#pragma once
+/// \file StagesPanel.hpp
+/// The Stages dock: the model's construction stages in order, the picture showing the model as it
+/// stands in the stage chosen (regions excavated by then, or built only later, left out), and
+/// editing: add, remove, rename and reorder stages and choose the regions each excavates or
+/// builds. Every change is one undoable edit of the document; the model checker reports stages
+/// that do not make sense (excavating what is already gone) in the Messages dock.
+
+#include <QWidget>
+
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+
+namespace mcdda::gui {
+
+class ModelDocument;
+class ModelView;
+
+class StagesPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    StagesPanel(ModelDocument* document, ModelView* view, QWidget* parent = nullptr);
+
+    /// The stage shown: -1 = the model as drawn (every region).
+    int currentStage() const;
+    void setCurrentStage(int stage);
+
+private:
+    void refresh();
+    void showStage();
+    void applyStage();
+    void addStage();
+    void removeStage();
+    void moveStage(int by);
+
+    ModelDocument* document_ = nullptr;
+    ModelView* view_ = nullptr;
+    QListWidget* list_ = nullptr;
+    QLineEdit* name_ = nullptr;
+    QListWidget* excavate_ = nullptr;
+    QListWidget* activate_ = nullptr;
+    QPushButton* apply_ = nullptr;
+    QPushButton* remove_ = nullptr;
+    QPushButton* up_ = nullptr;
+    QPushButton* down_ = nullptr;
+    QLabel* note_ = nullptr;
+};
+
+}  // namespace mcdda::gui
