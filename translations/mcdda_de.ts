@@ -128,238 +128,258 @@
 <context>
     <name>mcdda::gui::EditingTools</name>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="124"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="99"/>
+        <source>bolt %1</source>
+        <translation>Anker %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="106"/>
+        <source>Add bolt &quot;%1&quot;</source>
+        <translation>Anker „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="136"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="128"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="140"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="135"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="147"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="149"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="161"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="150"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="162"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="153"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="165"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="154"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="156"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="157"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="160"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="172"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="161"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="173"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="162"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="174"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="163"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="175"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="165"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="177"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="178"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="180"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="181"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="171"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="183"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="172"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="184"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="175"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="186"/>
+        <source>&amp;Bolt</source>
+        <translation>A&amp;nker</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="187"/>
+        <source>Click the two anchors of a rock bolt (EA 98 MN/m, breaking at 160 kN/m per metre of thickness; other values and the stage that installs it are set in the model file)</source>
+        <translation>Die beiden Verankerungspunkte eines Felsankers anklicken (EA 98 MN/m, Bruch bei 160 kN/m je Meter Dicke; andere Werte und die Bauphase, die ihn einbaut, stehen in der Modelldatei)</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
         <source>&amp;Query Line</source>
         <translation>Abfragel&amp;inie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="176"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="192"/>
         <source>Click the two ends of a line across the result picture: the Query dock plots the field shown along it</source>
         <translation>Die beiden Enden einer Linie über das Ergebnisbild anklicken: das Abfrage-Fenster zeigt das Feld entlang der Linie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="180"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="196"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="185"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="201"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="204"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="200"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="207"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="210"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="227"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="212"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="213"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="229"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="227"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="243"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="230"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="244"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="244"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="229"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="245"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="230"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="232"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="248"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="233"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="249"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="250"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="236"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="252"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="238"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="241"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="257"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="244"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="260"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="245"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="261"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="287"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="303"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="302"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="318"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="356"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="373"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -3219,16 +3239,21 @@
     </message>
     <message>
         <location filename="../gui/view/SceneLegend.cpp" line="199"/>
+        <source>Bolt</source>
+        <translation>Anker</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
         <source>Point load</source>
         <translation>Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
         <source>Edge pressure</source>
         <translation>Kantendruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
         <source>Measurement point</source>
         <translation>Messpunkt</translation>
     </message>

@@ -63,6 +63,8 @@ public slots:
     void usePointLoad();
     void useEdgePressure();
     void useMeasurementPoint();
+    /// Edit ▸ Bolt: two clicks add a rock bolt between them (undoable).
+    void useBolt();
     /// Edit ▸ Query Line: two clicks on the result picture give queryLineDrawn().
     void useQueryLine();
     /// Makes Select the tool and selects `ref` (highlighted in the view).
@@ -110,6 +112,7 @@ private:
     DrawTool* pressure_tool_ = nullptr;
     DrawTool* point_tool_ = nullptr;
     DrawTool* query_tool_ = nullptr;
+    DrawTool* bolt_tool_ = nullptr;
     QAction* select_action_ = nullptr;
     QAction* delete_action_ = nullptr;
     std::vector<std::pair<DrawTool*, QAction*>> tool_actions_;

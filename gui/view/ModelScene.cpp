@@ -363,6 +363,9 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
     if (options.show_supports) {
         add_shapes(renderer, roller_shapes(p.model, st.symbol), palette::support, 2.0 * st.pixel, z);
         add_shapes(renderer, fixed_point_shapes(p.model, st.symbol), palette::support, 1.5 * st.pixel, z);
+        Shapes bolts;  // rock bolts: a line between their anchors
+        for (const Bolt& b : p.model.bolts) bolts.lines.push_back({b.from, b.to});
+        add_shapes(renderer, bolts, palette::bolt, 3.0 * st.pixel, z);
     }
     if (options.show_loads) {
         add_shapes(renderer, edge_pressure_shapes(p.model, st.symbol), palette::pressure, 1.5 * st.pixel, z);

@@ -195,6 +195,8 @@ std::vector<LegendEntry> legend_entries(const Preprocessed& p, const SceneOption
         entries.push_back({LegendEntry::Icon::Pin, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Fixed line (x and y)"))});
     if (options.show_supports && rollers)
         entries.push_back({LegendEntry::Icon::Roller, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Roller"))});
+    if (options.show_supports && !m.bolts.empty())
+        entries.push_back({LegendEntry::Icon::Line, palette::bolt, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Bolt"))});
     if (options.show_loads && !m.point_loads.empty())
         entries.push_back({LegendEntry::Icon::Arrow, palette::point_load, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Point load"))});
     if (options.show_loads && !m.edge_pressures.empty())

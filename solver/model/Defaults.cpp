@@ -30,6 +30,10 @@ Model new_model(const std::string& rock_name, const std::string& joint_name)
     m.joint_materials.push_back(default_joint(joint_name));
     m.default_joint_material = 0;
     m.gravity = {0.0, -standard_gravity};
+    // Static load steps one pseudo-second apart, as the static examples count them ("t = 20 s"
+    // is step 20), not 100 steps of 0.01 s that read like a dynamic run.
+    m.analysis.steps = 20;
+    m.analysis.time_step = 1.0;
     return m;
 }
 

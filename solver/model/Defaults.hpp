@@ -20,7 +20,8 @@ constexpr double standard_gravity = 9.81;
 Material default_rock(const std::string& name);
 /// A new model's joints: φj 30°, no cohesion or tension, automatic stiffness.
 JointMaterial default_joint(const std::string& name);
-/// An empty model holding those two materials and standard gravity.
+/// An empty model holding those two materials, standard gravity and a static analysis of 20
+/// load steps of 1 s.
 Model new_model(const std::string& rock_name, const std::string& joint_name);
 
 }  // namespace mcdda

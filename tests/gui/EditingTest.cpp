@@ -11,6 +11,7 @@
 #include "panels/PropertyEditor.hpp"
 #include "session/RunController.hpp"
 #include "tools/DrawTool.hpp"
+#include "tools/EditingTools.hpp"
 #include "view/Palette.hpp"
 #include "widgets/ModelTree.hpp"
 #include "results/StepSlider.hpp"
@@ -58,6 +59,7 @@ private slots:
     void helpShowsTheUserGuide();
     void newModelTalksOfRegionsAndFitsTheFirst();
     void stageListShowsAndEditsStages();
+    void boltToolDrawsABolt();
 };
 
 void EditingTest::initTestCase()
@@ -592,6 +594,34 @@ void EditingTest::stageListShowsAndEditsStages()
     undo->undo();
     undo->undo();
     QCOMPARE(window.document()->model().stages.size(), std::size_t(4));
+}
+
+// Issue 13, bolts: Edit ▸ Bolt adds a rock bolt between two clicked anchors (undoable); the
+// picture draws it and the legend names it.
+void EditingTest::boltToolDrawsABolt()
+{
+    MainWindow window;
+    QVERIFY(guitest::show_square(window));
+    QTRY_VERIFY(guitest::settled(window));
+    gui::ModelDocument* doc = window.document();
+    window.editingTools()->useBolt();
+    QVERIFY(window.activeTool());
+    QVERIFY(window.enterCoordinates(QStringLiteral("2, 5")));
+    QVERIFY(window.enterCoordinates(QStringLiteral("8, 5")));
+    QCOMPARE(doc->model().bolts.size(), std::size_t(1));
+    const Bolt& bolt = doc->model().bolts.front();
+    QCOMPARE(bolt.name, std::string("bolt 1"));
+    QCOMPARE(bolt.from.x, 2.0);
+    QCOMPARE(bolt.to.x, 8.0);
+    QVERIFY(bolt.stiffness > 0.0 && bolt.strength > 0.0);
+    QTRY_VERIFY2(guitest::settled(window), qPrintable(window.messages()));
+    window.editingTools()->useSelect();
+    QVERIFY(guitest::count_around(*window.modelView(), 5.0, 5.0, view::palette::bolt, 3) > 5);
+    QVERIFY(!window.modelTree()->findItems(QStringLiteral("bolt 1"), Qt::MatchRecursive, 0).isEmpty());
+    doc->undoStack()->undo();
+    QVERIFY(doc->model().bolts.empty());
+    QTRY_VERIFY(guitest::settled(window));
+    QCOMPARE(guitest::count_around(*window.modelView(), 5.0, 5.0, view::palette::bolt, 3), 0);
 }
 
 QTEST_MAIN(EditingTest)

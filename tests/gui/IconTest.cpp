@@ -16,7 +16,7 @@ namespace {
 const char* const icon_names[] = {"open",        "save",        "run",          "pause",         "stop",
                                   "mesh",        "select",      "draw-region",  "draw-joint",    "fixed-point",
                                   "roller",      "point-load",  "edge-pressure", "measurement-point",
-                                  "fit-view",    "undo",        "redo",         "contacts",     "query-line"};
+                                  "fit-view",    "undo",        "redo",         "contacts",     "query-line",   "bolt"};
 
 QString resource(const char* name) { return QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)); }
 

@@ -266,6 +266,9 @@ void SessionTest::newModelDefaults()
     QCOMPARE(m.joint_materials[0].friction_angle, 30.0 * degree);
     QCOMPARE(m.default_joint_material, 0);
     QCOMPARE(m.gravity.y, -standard_gravity);
+    QCOMPARE(m.analysis.kind, AnalysisSettings::Kind::Static);
+    QCOMPARE(m.analysis.steps, 20);
+    QCOMPARE(m.analysis.time_step, 1.0);  // load steps counted in seconds, not 0.01 s
 }
 
 QTEST_GUILESS_MAIN(SessionTest)

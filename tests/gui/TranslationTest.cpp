@@ -126,7 +126,7 @@ private slots:
         // The Edit menu: undo/redo, the tools' entries.
         QStringList edit{tr_editing("&Undo"), tr_editing("&Redo")};
         for (const char* source : {"&Select", "Draw &Region", "Draw &Joint", "&Fixed Point", "R&oller", "Point &Load",
-                                   "Edge &Pressure", "&Measurement Point", "&Query Line", "&Delete", "Add Joint Se&t..."})
+                                   "Edge &Pressure", "&Measurement Point", "&Bolt", "&Query Line", "&Delete", "Add Joint Se&t..."})
             edit << tr_editing(source);
         QVERIFY(distinct_mnemonics(edit));
         QVERIFY(distinct_mnemonics(QStringList{tr_run("&Run"), tr_run("Res&ume"), tr_run("&Stop"), tr_run("Results &Folder...")}));
