@@ -15,6 +15,170 @@
     </message>
 </context>
 <context>
+    <name>ModelFields</name>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="23"/>
+        <source>Young&apos;s modulus E</source>
+        <translation>Elastizitätsmodul E</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="24"/>
+        <source>Young&apos;s modulus E of the intact rock, &gt; 0</source>
+        <translation>Elastizitätsmodul E des intakten Gesteins, &gt; 0</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="26"/>
+        <source>Poisson&apos;s ratio ν</source>
+        <translation>Querdehnzahl ν</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="27"/>
+        <source>Poisson&apos;s ratio ν, in (−1, 0.5)</source>
+        <translation>Querdehnzahl ν, in (−1; 0,5)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="29"/>
+        <source>Unit weight γ</source>
+        <translation>Wichte γ</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="30"/>
+        <source>Unit weight γ = ρ g (the density is γ / 9.81 m/s²); loads the model through gravity</source>
+        <translation>Wichte γ = ρ g (die Dichte ist γ / 9,81 m/s²); belastet das Modell über die Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="32"/>
+        <source>Cohesion c</source>
+        <translation>Kohäsion c</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="33"/>
+        <source>Mohr–Coulomb cohesion c, ≥ 0</source>
+        <translation>Mohr-Coulomb-Kohäsion c, ≥ 0</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="35"/>
+        <source>Friction angle φ</source>
+        <translation>Reibungswinkel φ</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="36"/>
+        <source>Mohr–Coulomb friction angle φ, in [0°, 90°)</source>
+        <translation>Mohr-Coulomb-Reibungswinkel φ, in [0°, 90°)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="38"/>
+        <source>Dilation angle ψ</source>
+        <translation>Dilatanzwinkel ψ</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="39"/>
+        <source>Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)</source>
+        <translation>Dilatanzwinkel ψ des plastischen Fließens, 0 ≤ ψ ≤ φ (ψ = φ: assoziiertes Fließen)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="41"/>
+        <source>Tensile strength</source>
+        <translation>Zugfestigkeit</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="42"/>
+        <source>Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension</source>
+        <translation>Zugfestigkeitsgrenze der Mohr-Coulomb-Fläche, ≥ 0; 0 = kein Zug</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="51"/>
+        <source>Friction angle φj</source>
+        <translation>Reibungswinkel φj</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="52"/>
+        <source>Coulomb friction angle of the joint surfaces, in [0°, 90°)</source>
+        <translation>Coulomb-Reibungswinkel der Kluftflächen, in [0°, 90°)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="54"/>
+        <source>Cohesion cj</source>
+        <translation>Kohäsion cj</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="55"/>
+        <source>Cohesion of the joint, ≥ 0; lost once the joint has slipped or opened</source>
+        <translation>Kohäsion der Kluft, ≥ 0; geht verloren, sobald die Kluft gleitet oder sich öffnet</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="57"/>
+        <source>Tensile strength tj</source>
+        <translation>Zugfestigkeit tj</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="58"/>
+        <source>Tensile strength of the joint, ≥ 0; 0 = the joint opens under any tension</source>
+        <translation>Zugfestigkeit der Kluft, ≥ 0; 0 = die Kluft öffnet sich bei jedem Zug</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="60"/>
+        <source>Normal stiffness kn</source>
+        <translation>Normalsteifigkeit kn</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="61"/>
+        <location filename="../solver/model/ModelFields.cpp" line="64"/>
+        <source>automatic</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="61"/>
+        <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
+        <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="63"/>
+        <source>Shear stiffness ks</source>
+        <translation>Schubsteifigkeit ks</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="64"/>
+        <source>Shear stiffness; 0 = automatic</source>
+        <translation>Schubsteifigkeit; 0 = automatisch</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="73"/>
+        <source>Axial stiffness EA</source>
+        <translation>Dehnsteifigkeit EA</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="75"/>
+        <source>Axial stiffness EA of the bolt per metre of model thickness (bolt EA over the spacing out of plane), &gt; 0</source>
+        <translation>Dehnsteifigkeit EA des Ankers je Meter Modelldicke (EA des Ankers durch seinen Abstand senkrecht zur Ebene), &gt; 0</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="77"/>
+        <source>Strength</source>
+        <translation>Tragkraft</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="78"/>
+        <source>unbreakable</source>
+        <translation>unzerstörbar</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="78"/>
+        <source>Axial force at which the bolt breaks, per metre of model thickness; 0 = unbreakable</source>
+        <translation>Axialkraft, bei der der Anker reißt, je Meter Modelldicke; 0 = unzerstörbar</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="80"/>
+        <source>Pretension</source>
+        <translation>Vorspannung</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="81"/>
+        <source>Axial force when installed, per metre of model thickness, pulling the ends together; ≥ 0</source>
+        <translation>Axialkraft beim Einbau, je Meter Modelldicke, zieht die Enden zusammen; ≥ 0</translation>
+    </message>
+</context>
+<context>
     <name>PvdFile</name>
     <message>
         <location filename="../gui/results/PvdFile.cpp" line="20"/>
@@ -123,6 +287,59 @@
         <location filename="../gui/document/Commands.cpp" line="59"/>
         <source>Add roller &quot;%1&quot;</source>
         <translation>Rollenlager „%1“ hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::BoltForm</name>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="27"/>
+        <source>Bolt</source>
+        <translation>Anker</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="28"/>
+        <source>The rock bolt shown below; Edit ▸ Bolt draws new ones</source>
+        <translation>Der unten gezeigte Felsanker; Bearbeiten ▸ Anker zeichnet neue</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="31"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="32"/>
+        <source>Name of the bolt, as stages install or remove it</source>
+        <translation>Name des Ankers, unter dem Bauphasen ihn einbauen oder ausbauen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="34"/>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="62"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="76"/>
+        <source>No bolts: Edit ▸ Bolt draws one between two anchors.</source>
+        <translation>Keine Anker: Bearbeiten ▸ Anker zeichnet einen zwischen zwei Verankerungspunkten.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="104"/>
+        <source>Not applied: %1</source>
+        <translation>Nicht übernommen: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="107"/>
+        <source>Edit bolt &quot;%1&quot;</source>
+        <translation>Anker „%1“ bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/BoltForm.cpp" line="108"/>
+        <source>Applied.</source>
+        <translation>Übernommen.</translation>
     </message>
 </context>
 <context>
@@ -1799,504 +2016,366 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="82"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="125"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="83"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="87"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="91"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="94"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="90"/>
+        <source>Bolts</source>
+        <translation>Anker</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="93"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="110"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="109"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
         <source>The material shown below; Assign to Selection gives it to the selected region</source>
         <translation>Das unten gezeigte Material; „Auswahl zuweisen“ gibt es dem gewählten Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="168"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
         <source>Add a material (a copy of the one shown)</source>
         <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="132"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="496"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="498"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="172"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="134"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
         <source>The region selected in the view or the Model tree is made of this material</source>
         <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="139"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="138"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="179"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="139"/>
         <source>Name of the material, as the tree and the legend show it</source>
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
-        <source>MPa</source>
-        <translation>MPa</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
-        <source>Young&apos;s modulus E</source>
-        <translation>Elastizitätsmodul E</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
-        <source>Young&apos;s modulus E of the intact rock, &gt; 0</source>
-        <translation>Elastizitätsmodul E des intakten Gesteins, &gt; 0</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
-        <source>Poisson&apos;s ratio ν [–]</source>
-        <translation>Querdehnzahl ν [–]</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
-        <source>Poisson&apos;s ratio ν, in (−1, 0.5)</source>
-        <translation>Querdehnzahl ν, in (−1; 0,5)</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
-        <source>kN/m³</source>
-        <translation>kN/m³</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="149"/>
-        <source>Unit weight γ</source>
-        <translation>Wichte γ</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
-        <source>Unit weight γ = ρ g (the density is γ / 9.81 m/s²); loads the model through gravity</source>
-        <translation>Wichte γ = ρ g (die Dichte ist γ / 9,81 m/s²); belastet das Modell über die Schwerkraft</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="160"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="206"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="298"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="301"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="304"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="312"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="261"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
-        <source>Cohesion c</source>
-        <translation>Kohäsion c</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="153"/>
-        <source>Mohr–Coulomb cohesion c, ≥ 0</source>
-        <translation>Mohr-Coulomb-Kohäsion c, ≥ 0</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="157"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
-        <source>°</source>
-        <translation>°</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
-        <source>Friction angle φ</source>
-        <translation>Reibungswinkel φ</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="156"/>
-        <source>Mohr–Coulomb friction angle φ, in [0°, 90°)</source>
-        <translation>Mohr-Coulomb-Reibungswinkel φ, in [0°, 90°)</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="158"/>
-        <source>Dilation angle ψ</source>
-        <translation>Dilatanzwinkel ψ</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="159"/>
-        <source>Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)</source>
-        <translation>Dilatanzwinkel ψ des plastischen Fließens, 0 ≤ ψ ≤ φ (ψ = φ: assoziiertes Fließen)</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="161"/>
-        <source>Tensile strength</source>
-        <translation>Zugfestigkeit</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="162"/>
-        <source>Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension</source>
-        <translation>Zugfestigkeitsgrenze der Mohr-Coulomb-Fläche, ≥ 0; 0 = kein Zug</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="163"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
         <source>Plastic (Mohr–Coulomb)</source>
         <translation>Plastisch (Mohr-Coulomb)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
         <source>Whether the material yields (Mohr–Coulomb); off = elastic whatever the stress</source>
         <translation>Ob das Material plastifiziert (Mohr-Coulomb); aus = elastisch bei jeder Spannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="167"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="322"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="145"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="183"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="167"/>
         <source>The joint material shown below; Assign to Selection gives it to the selected joint</source>
         <translation>Das unten gezeigte Kluftmaterial; „Auswahl zuweisen“ gibt es der gewählten Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="170"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
         <source>Name of the joint material</source>
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
-        <source>Friction angle φj</source>
-        <translation>Reibungswinkel φj</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="205"/>
-        <source>Coulomb friction angle of the joint surfaces, in [0°, 90°)</source>
-        <translation>Coulomb-Reibungswinkel der Kluftflächen, in [0°, 90°)</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="207"/>
-        <source>Cohesion cj</source>
-        <translation>Kohäsion cj</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="208"/>
-        <source>Cohesion of the joint, ≥ 0; lost once the joint has slipped or opened</source>
-        <translation>Kohäsion der Kluft, ≥ 0; geht verloren, sobald die Kluft gleitet oder sich öffnet</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="210"/>
-        <source>Tensile strength tj</source>
-        <translation>Zugfestigkeit tj</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
-        <source>Tensile strength of the joint, ≥ 0; 0 = the joint opens under any tension</source>
-        <translation>Zugfestigkeit der Kluft, ≥ 0; 0 = die Kluft öffnet sich bei jedem Zug</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="216"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="214"/>
-        <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
-        <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="215"/>
-        <source>Normal stiffness kn</source>
-        <translation>Normalsteifigkeit kn</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
-        <source>Shear stiffness; 0 = automatic</source>
-        <translation>Schubsteifigkeit; 0 = automatisch</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
-        <source>Shear stiffness ks</source>
-        <translation>Schubsteifigkeit ks</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="239"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="240"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="293"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
         <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding</source>
         <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="210"/>
         <source>Number of time steps; the loads follow their tables over the time they cover</source>
         <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="248"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="249"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="250"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="213"/>
         <source>Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps</source>
         <translation>Anfänglicher und größter Zeitschritt; er wird automatisch verkleinert, wenn sich ein Schritt zu weit bewegt oder nicht konvergiert. In einer statischen Berechnung ordnet die Zeit nur die Laststufen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="216"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="217"/>
         <source>Max displacement ratio [–]</source>
         <translation>Max. Verschiebungsverhältnis [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="221"/>
         <source>Penalty</source>
         <translation>Penalty</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="290"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="291"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="294"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="295"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="299"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="262"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="300"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="302"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="303"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="305"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="306"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="307"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="311"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="313"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="314"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="315"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="316"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="317"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="320"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="321"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="353"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="358"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="316"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="321"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="496"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="498"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="518"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="535"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="471"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="488"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="546"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="499"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="509"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="581"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="607"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="632"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="658"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="528"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="550"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="575"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="601"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="585"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="611"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="636"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="662"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="532"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="554"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="579"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="605"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -2796,112 +2875,192 @@
 <context>
     <name>mcdda::gui::StagesPanel</name>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="46"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="54"/>
+        <source>fixed point</source>
+        <translation>Festpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="55"/>
+        <source>roller</source>
+        <translation>Rollenlager</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="56"/>
+        <source>point load</source>
+        <translation>Einzellast</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="57"/>
+        <source>edge pressure</source>
+        <translation>Randdruck</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
+        <source>bolt</source>
+        <translation>Anker</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="80"/>
         <source>Choose a stage to see the model as it stands in it; the first row shows every region</source>
         <translation>Eine Bauphase wählen, um das Modell so zu sehen, wie es in ihr steht; die erste Zeile zeigt alle Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="47"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="81"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="49"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="83"/>
         <source>Add a stage at the end (10 steps, the model&apos;s analysis settings)</source>
         <translation>Eine Bauphase am Ende hinzufügen (10 Schritte, die Berechnungseinstellungen des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="50"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="84"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="52"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="86"/>
         <source>Up</source>
         <translation>Nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="54"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="88"/>
         <source>Down</source>
         <translation>Nach unten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="92"/>
         <source>Name of the stage (results, tree, messages)</source>
         <translation>Name der Bauphase (Ergebnisse, Baum, Meldungen)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="94"/>
         <source>Regions removed at the start of the stage (an excavation)</source>
         <translation>Bereiche, die zu Beginn der Bauphase entfernt werden (ein Ausbruch)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="62"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="96"/>
         <source>Regions added at the start of the stage (backfill, a liner); absent before</source>
         <translation>Bereiche, die zu Beginn der Bauphase hinzukommen (Verfüllung, Ausbau); vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="63"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
+        <source>Supports, loads and bolts added at the start of the stage; absent before</source>
+        <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase hinzukommen; vorher nicht vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
+        <source>Supports, loads and bolts taken away at the start of the stage</source>
+        <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase entfernt werden</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
+        <source>Number of load steps of the stage</source>
+        <translation>Anzahl der Laststufen der Bauphase</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="103"/>
+        <source>over all steps</source>
+        <translation>über alle Schritte</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
+        <source> steps</source>
+        <translation> Schritte</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="105"/>
+        <source>Over how many steps the forces the stage leaves out of balance (an excavation&apos;s) are released, linearly; fewer steps release them faster</source>
+        <translation>Über wie viele Schritte die Ungleichgewichtskräfte der Bauphase (etwa eines Ausbruchs) linear freigesetzt werden; weniger Schritte setzen sie schneller frei</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="71"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="118"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="72"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="119"/>
         <source>Excavates</source>
         <translation>Bricht aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="73"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="120"/>
         <source>Builds</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="121"/>
+        <source>Installs</source>
+        <translation>Baut ein</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="122"/>
+        <source>Removes</source>
+        <translation>Baut aus</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="123"/>
+        <source>Steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
+        <source>Release</source>
+        <translation>Freisetzung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="157"/>
         <source>Model as drawn (every region)</source>
         <translation>Modell wie gezeichnet (alle Bereiche)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="159"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="162"/>
         <source>No stages: the model is analysed in one go. Add one to excavate or build regions step by step.</source>
         <translation>Keine Bauphasen: das Modell wird in einem Zug berechnet. Eine hinzufügen, um Bereiche schrittweise auszubrechen oder einzubauen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="183"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="153"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="197"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="226"/>
         <source>Edit stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="160"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="233"/>
         <source>stage %1</source>
         <translation>Bauphase %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="237"/>
         <source>Add stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="175"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="248"/>
         <source>Remove stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="184"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="257"/>
         <source>Move stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ verschieben</translation>
     </message>
@@ -3057,9 +3216,39 @@
 <context>
     <name>mcdda::gui::form</name>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="48"/>
+        <location filename="../gui/panels/FormFields.cpp" line="51"/>
         <source>automatic</source>
         <translation>automatisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="109"/>
+        <source>MPa</source>
+        <translation>MPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="110"/>
+        <source>kPa</source>
+        <translation>kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="111"/>
+        <source>kN/m³</source>
+        <translation>kN/m³</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="112"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="113"/>
+        <source>MN/m</source>
+        <translation>MN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="114"/>
+        <source>kN/m</source>
+        <translation>kN/m</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 
 #include "document/ModelDocument.hpp"
 #include "model/ModelValidator.hpp"
+#include "panels/BoltForm.hpp"
 #include "panels/FormFields.hpp"
 #include "panels/LoadForm.hpp"
 #include "panels/MeshForm.hpp"
@@ -50,16 +51,12 @@ QWidget* buttons_row(QPushButton* a, QPushButton* b, QWidget* parent)
 
 bool same(const Material& a, const Material& b)
 {
-    return a.name == b.name && a.young_modulus == b.young_modulus && a.poisson_ratio == b.poisson_ratio &&
-           a.density == b.density && a.cohesion == b.cohesion && a.friction_angle == b.friction_angle &&
-           a.dilation_angle == b.dilation_angle && a.tensile_strength == b.tensile_strength && a.plastic == b.plastic;
+    return a.name == b.name && a.plastic == b.plastic && same_fields(a, b, material_fields());
 }
 
 bool same(const JointMaterial& a, const JointMaterial& b)
 {
-    return a.name == b.name && a.friction_angle == b.friction_angle && a.cohesion == b.cohesion &&
-           a.tensile_strength == b.tensile_strength && a.normal_stiffness == b.normal_stiffness &&
-           a.shear_stiffness == b.shear_stiffness;
+    return a.name == b.name && same_fields(a, b, joint_material_fields());
 }
 
 bool same(const AnalysisSettings& a, const AnalysisSettings& b)
@@ -89,6 +86,8 @@ PropertyEditor::PropertyEditor(ModelDocument* document, QWidget* parent) : QWidg
     load_form_ = new LoadForm(document_, this);
     load_form_->setObjectName(QStringLiteral("loadForm"));
     tabs_->addTab(load_form_, tr("Loads"));
+    bolt_form_ = new BoltForm(document_, this);
+    tabs_->addTab(bolt_form_, tr("Bolts"));
     mesh_form_ = new MeshForm(document_, this);
     mesh_form_->setObjectName(QStringLiteral("meshForm"));
     tabs_->addTab(mesh_form_, tr("Mesh"));
@@ -138,28 +137,7 @@ QWidget* PropertyEditor::createMaterialForm()
     mat_name_->setObjectName(QStringLiteral("materialName"));
     form->addRow(tr("Name"), mat_name_);
     explain(mat_name_, tr("Name of the material, as the tree and the legend show it"));
-    mat_e_ = number(QStringLiteral("materialE"), tr("MPa"), -1e9, 1e9, 3, page);
-    form->addRow(tr("Young's modulus E"), mat_e_);
-    explain(mat_e_, tr("Young's modulus E of the intact rock, > 0"));
-    mat_nu_ = number(QStringLiteral("materialNu"), QString(), -1.0, 1.0, 4, page);
-    mat_nu_->setSingleStep(0.01);
-    form->addRow(tr("Poisson's ratio ν [–]"), mat_nu_);
-    explain(mat_nu_, tr("Poisson's ratio ν, in (−1, 0.5)"));
-    mat_gamma_ = number(QStringLiteral("materialGamma"), tr("kN/m³"), -1e4, 1e4, 3, page);
-    form->addRow(tr("Unit weight γ"), mat_gamma_);
-    explain(mat_gamma_, tr("Unit weight γ = ρ g (the density is γ / 9.81 m/s²); loads the model through gravity"));
-    mat_c_ = number(QStringLiteral("materialCohesion"), tr("kPa"), -1e9, 1e9, 3, page);
-    form->addRow(tr("Cohesion c"), mat_c_);
-    explain(mat_c_, tr("Mohr–Coulomb cohesion c, ≥ 0"));
-    mat_phi_ = number(QStringLiteral("materialPhi"), tr("°"), -360.0, 360.0, 3, page);
-    form->addRow(tr("Friction angle φ"), mat_phi_);
-    explain(mat_phi_, tr("Mohr–Coulomb friction angle φ, in [0°, 90°)"));
-    mat_psi_ = number(QStringLiteral("materialPsi"), tr("°"), -360.0, 360.0, 3, page);
-    form->addRow(tr("Dilation angle ψ"), mat_psi_);
-    explain(mat_psi_, tr("Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)"));
-    mat_t_ = number(QStringLiteral("materialTensile"), tr("kPa"), -1e9, 1e9, 3, page);
-    form->addRow(tr("Tensile strength"), mat_t_);
-    explain(mat_t_, tr("Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension"));
+    mat_fields_ = std::make_unique<form::DeclaredFields<Material>>(material_fields(), QStringLiteral("material_"), form, page);
     mat_plastic_ = new QCheckBox(tr("Plastic (Mohr–Coulomb)"), page);
     mat_plastic_->setObjectName(QStringLiteral("materialPlastic"));
     form->addRow(QString(), mat_plastic_);
@@ -170,7 +148,7 @@ QWidget* PropertyEditor::createMaterialForm()
     form->addRow(QString(), apply);
     mat_status_ = status_label(QStringLiteral("materialStatus"), page);
     form->addRow(mat_status_);
-    for (QDoubleSpinBox* box : {mat_e_, mat_nu_, mat_gamma_, mat_c_, mat_phi_, mat_psi_, mat_t_})
+    for (QDoubleSpinBox* box : mat_fields_->boxes())
         connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
     connect(mat_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
     return page;
@@ -200,30 +178,15 @@ QWidget* PropertyEditor::createJointMaterialForm()
     jm_name_->setObjectName(QStringLiteral("jointMaterialName"));
     form->addRow(tr("Name"), jm_name_);
     explain(jm_name_, tr("Name of the joint material"));
-    jm_phi_ = number(QStringLiteral("jointPhi"), tr("°"), -360.0, 360.0, 3, page);
-    form->addRow(tr("Friction angle φj"), jm_phi_);
-    explain(jm_phi_, tr("Coulomb friction angle of the joint surfaces, in [0°, 90°)"));
-    jm_c_ = number(QStringLiteral("jointCohesion"), tr("kPa"), -1e9, 1e9, 3, page);
-    form->addRow(tr("Cohesion cj"), jm_c_);
-    explain(jm_c_, tr("Cohesion of the joint, ≥ 0; lost once the joint has slipped or opened"));
-    jm_t_ = number(QStringLiteral("jointTensile"), tr("kPa"), -1e9, 1e9, 3, page);
-    form->addRow(tr("Tensile strength tj"), jm_t_);
-    explain(jm_t_, tr("Tensile strength of the joint, ≥ 0; 0 = the joint opens under any tension"));
-    jm_kn_ = number(QStringLiteral("jointKn"), tr("MN/m"), -1e9, 1e9, 3, page);
-    zero_is_automatic(jm_kn_);
-    explain(jm_kn_, tr("Normal stiffness per metre of thickness; 0 = the analysis penalty"));
-    form->addRow(tr("Normal stiffness kn"), jm_kn_);
-    jm_ks_ = number(QStringLiteral("jointKs"), tr("MN/m"), -1e9, 1e9, 3, page);
-    zero_is_automatic(jm_ks_);
-    explain(jm_ks_, tr("Shear stiffness; 0 = automatic"));
-    form->addRow(tr("Shear stiffness ks"), jm_ks_);
+    jm_fields_ = std::make_unique<form::DeclaredFields<JointMaterial>>(joint_material_fields(), QStringLiteral("joint_"),
+                                                                       form, page);
     auto* apply = new QPushButton(tr("Apply"), page);
     apply->setObjectName(QStringLiteral("jointMaterialApply"));
     connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyJointMaterial);
     form->addRow(QString(), apply);
     jm_status_ = status_label(QStringLiteral("jointMaterialStatus"), page);
     form->addRow(jm_status_);
-    for (QDoubleSpinBox* box : {jm_phi_, jm_c_, jm_t_, jm_kn_, jm_ks_})
+    for (QDoubleSpinBox* box : jm_fields_->boxes())
         connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
     connect(jm_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
     return page;
@@ -378,13 +341,7 @@ void PropertyEditor::loadMaterial()
     loading_ = true;
     const Material& x = m.materials[static_cast<std::size_t>(i)];
     mat_name_->setText(to_qt(x.name));
-    display(mat_e_, x.young_modulus / 1e6);
-    display(mat_nu_, x.poisson_ratio);
-    display(mat_gamma_, x.density * standard_gravity / 1e3);
-    display(mat_c_, x.cohesion / 1e3);
-    display(mat_phi_, x.friction_angle / deg);
-    display(mat_psi_, x.dilation_angle / deg);
-    display(mat_t_, x.tensile_strength / 1e3);
+    mat_fields_->show(x);
     mat_plastic_->setChecked(x.plastic);
     loading_ = false;
 }
@@ -403,11 +360,7 @@ void PropertyEditor::loadJointMaterial()
     loading_ = true;
     const JointMaterial& x = m.joint_materials[static_cast<std::size_t>(i)];
     jm_name_->setText(to_qt(x.name));
-    display(jm_phi_, x.friction_angle / deg);
-    display(jm_c_, x.cohesion / 1e3);
-    display(jm_t_, x.tensile_strength / 1e3);
-    display(jm_kn_, x.normal_stiffness / 1e6);
-    display(jm_ks_, x.shear_stiffness / 1e6);
+    jm_fields_->show(x);
     loading_ = false;
 }
 
@@ -565,13 +518,7 @@ bool PropertyEditor::applyMaterial()
     const Material& old = m.materials[static_cast<std::size_t>(i)];
     Material x = old;
     x.name = mat_name_->text().toStdString();
-    x.young_modulus = si(mat_e_, old.young_modulus, 1e6);
-    x.poisson_ratio = si(mat_nu_, old.poisson_ratio, 1.0);
-    x.density = si(mat_gamma_, old.density, 1e3 / standard_gravity);
-    x.cohesion = si(mat_c_, old.cohesion, 1e3);
-    x.friction_angle = si(mat_phi_, old.friction_angle, deg);
-    x.dilation_angle = si(mat_psi_, old.dilation_angle, deg);
-    x.tensile_strength = si(mat_t_, old.tensile_strength, 1e3);
+    mat_fields_->read(old, x);
     x.plastic = mat_plastic_->isChecked();
     if (same(x, old)) return true;
     Model candidate = m;
@@ -594,11 +541,7 @@ bool PropertyEditor::applyJointMaterial()
     const JointMaterial& old = m.joint_materials[static_cast<std::size_t>(i)];
     JointMaterial x = old;
     x.name = jm_name_->text().toStdString();
-    x.friction_angle = si(jm_phi_, old.friction_angle, deg);
-    x.cohesion = si(jm_c_, old.cohesion, 1e3);
-    x.tensile_strength = si(jm_t_, old.tensile_strength, 1e3);
-    x.normal_stiffness = si(jm_kn_, old.normal_stiffness, 1e6);
-    x.shear_stiffness = si(jm_ks_, old.shear_stiffness, 1e6);
+    jm_fields_->read(old, x);
     if (same(x, old)) return true;
     Model candidate = m;
     candidate.joint_materials[static_cast<std::size_t>(i)] = x;

@@ -1,20 +1,23 @@
 #pragma once
 /// \file PropertyEditor.hpp
 /// The Properties dock: forms for the materials, the joint materials, the analysis settings
-/// and the in-situ stress of the document's model, plus the Loads (LoadForm.hpp) and Mesh
-/// (MeshForm.hpp) tabs, which follow the same rules. Values are shown in the units of the model
-/// file (MPa, kPa, kN/m³, degrees; in-situ stress compression positive) with the unit next to
-/// every field. Apply (or Enter in a field) converts them to SI, checks the changed model with
+/// and the in-situ stress of the document's model, plus the Loads (LoadForm.hpp), Bolts
+/// (BoltForm.hpp) and Mesh (MeshForm.hpp) tabs, which follow the same rules. The material, joint
+/// material and bolt fields are built from their declarations (model/ModelFields.hpp). Values are
+/// shown in engineering units (MPa, kPa, kN/m³, MN/m, kN/m, degrees; in-situ stress compression
+/// positive) with the unit next to every field. Apply (or Enter in a field) converts them to SI, checks the changed model with
 /// validate_model() and either refuses — the first error about the edited item is shown in the
 /// form's status line and the model stays as it was — or applies the change as one undoable
 /// command.
 
 #include "document/ModelItems.hpp"
 #include "model/Model.hpp"
+#include "panels/DeclaredFields.hpp"
 
 #include <QString>
 #include <QWidget>
 
+#include <memory>
 #include <string>
 
 class QCheckBox;
@@ -28,6 +31,7 @@ class QTabWidget;
 
 namespace mcdda::gui {
 
+class BoltForm;
 class LoadForm;
 class MeshForm;
 class ModelDocument;
@@ -59,8 +63,9 @@ public:
     /// material, a joint's joint material, a load), and Assign gives it the material shown.
     void setSelection(const ItemRef& ref);
 
-    /// The Loads and Mesh tabs.
+    /// The Loads, Bolts and Mesh tabs.
     LoadForm* loadForm() const { return load_form_; }
+    BoltForm* boltForm() const { return bolt_form_; }
     MeshForm* meshForm() const { return mesh_form_; }
 
 public slots:
@@ -96,17 +101,12 @@ private:
     bool loading_ = false;
     QTabWidget* tabs_ = nullptr;
     LoadForm* load_form_ = nullptr;
+    BoltForm* bolt_form_ = nullptr;
     MeshForm* mesh_form_ = nullptr;
 
     QComboBox* material_box_ = nullptr;
     QLineEdit* mat_name_ = nullptr;
-    QDoubleSpinBox* mat_e_ = nullptr;
-    QDoubleSpinBox* mat_nu_ = nullptr;
-    QDoubleSpinBox* mat_gamma_ = nullptr;
-    QDoubleSpinBox* mat_c_ = nullptr;
-    QDoubleSpinBox* mat_phi_ = nullptr;
-    QDoubleSpinBox* mat_psi_ = nullptr;
-    QDoubleSpinBox* mat_t_ = nullptr;
+    std::unique_ptr<form::DeclaredFields<Material>> mat_fields_;
     QCheckBox* mat_plastic_ = nullptr;
     QPushButton* mat_new_ = nullptr;
     QPushButton* mat_assign_ = nullptr;
@@ -117,11 +117,7 @@ private:
 
     QComboBox* joint_box_ = nullptr;
     QLineEdit* jm_name_ = nullptr;
-    QDoubleSpinBox* jm_phi_ = nullptr;
-    QDoubleSpinBox* jm_c_ = nullptr;
-    QDoubleSpinBox* jm_t_ = nullptr;
-    QDoubleSpinBox* jm_kn_ = nullptr;
-    QDoubleSpinBox* jm_ks_ = nullptr;
+    std::unique_ptr<form::DeclaredFields<JointMaterial>> jm_fields_;
     QLabel* jm_status_ = nullptr;
 
     QComboBox* an_kind_ = nullptr;

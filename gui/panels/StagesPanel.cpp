@@ -9,7 +9,9 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSignalBlocker>
+#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -18,11 +20,11 @@ namespace mcdda::gui {
 
 namespace {
 
-QListWidget* region_checklist(const QString& name, QWidget* parent)
+QListWidget* checklist(const QString& name, QWidget* parent)
 {
     auto* list = new QListWidget(parent);
     list->setObjectName(name);
-    list->setMaximumHeight(110);
+    list->setMaximumHeight(90);
     return list;
 }
 
@@ -33,6 +35,38 @@ std::vector<int> checked(const QListWidget* list)
     for (int i = 0; i < list->count(); ++i)
         if (list->item(i)->checkState() == Qt::Checked) regions.push_back(i);
     return regions;
+}
+
+/// The names of the items checked in `list` (each item keeps its model name as user data).
+std::vector<std::string> checked_names(const QListWidget* list)
+{
+    std::vector<std::string> names;
+    for (int i = 0; i < list->count(); ++i)
+        if (list->item(i)->checkState() == Qt::Checked)
+            names.push_back(list->item(i)->data(Qt::UserRole).toString().toStdString());
+    return names;
+}
+
+/// The supports, loads and bolts a stage can install or remove, by name, with their kind.
+std::vector<std::pair<std::string, QString>> stage_items(const Model& m)
+{
+    std::vector<std::pair<std::string, QString>> items;
+    for (const FixedPoint& f : m.fixed_points) items.emplace_back(f.name, StagesPanel::tr("fixed point"));
+    for (const Roller& r : m.rollers) items.emplace_back(r.name, StagesPanel::tr("roller"));
+    for (const PointLoad& l : m.point_loads) items.emplace_back(l.name, StagesPanel::tr("point load"));
+    for (const EdgePressure& l : m.edge_pressures) items.emplace_back(l.name, StagesPanel::tr("edge pressure"));
+    for (const Bolt& b : m.bolts) items.emplace_back(b.name, StagesPanel::tr("bolt"));
+    return items;
+}
+
+QSpinBox* count_box(const QString& name, int min, const QString& special, QWidget* parent)
+{
+    auto* box = new QSpinBox(parent);
+    box->setObjectName(name);
+    box->setRange(min, 100000000);
+    box->setKeyboardTracking(false);
+    if (!special.isEmpty()) box->setSpecialValueText(special);
+    return box;
 }
 
 }  // namespace
@@ -56,10 +90,20 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     name_ = new QLineEdit(this);
     name_->setObjectName(QStringLiteral("stageName"));
     name_->setToolTip(tr("Name of the stage (results, tree, messages)"));
-    excavate_ = region_checklist(QStringLiteral("stageExcavate"), this);
+    excavate_ = checklist(QStringLiteral("stageExcavate"), this);
     excavate_->setToolTip(tr("Regions removed at the start of the stage (an excavation)"));
-    activate_ = region_checklist(QStringLiteral("stageActivate"), this);
+    activate_ = checklist(QStringLiteral("stageActivate"), this);
     activate_->setToolTip(tr("Regions added at the start of the stage (backfill, a liner); absent before"));
+    install_ = checklist(QStringLiteral("stageInstall"), this);
+    install_->setToolTip(tr("Supports, loads and bolts added at the start of the stage; absent before"));
+    remove_items_ = checklist(QStringLiteral("stageRemove"), this);
+    remove_items_->setToolTip(tr("Supports, loads and bolts taken away at the start of the stage"));
+    steps_ = count_box(QStringLiteral("stageSteps"), 1, QString(), this);
+    steps_->setToolTip(tr("Number of load steps of the stage"));
+    release_ = count_box(QStringLiteral("stageRelease"), 0, tr("over all steps"), this);
+    release_->setSuffix(tr(" steps"));
+    release_->setToolTip(tr("Over how many steps the forces the stage leaves out of balance (an excavation's) are "
+                            "released, linearly; fewer steps release them faster"));
     apply_ = new QPushButton(tr("Apply"), this);
     apply_->setObjectName(QStringLiteral("applyStage"));
     note_ = new QLabel(this);
@@ -67,16 +111,27 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
 
     auto* buttons = new QHBoxLayout;
     for (QPushButton* b : {add, remove_, up_, down_}) buttons->addWidget(b);
-    auto* form = new QFormLayout;
+    // The stage's settings scroll, so that a short dock still shows the stage list.
+    auto* settings = new QWidget;
+    auto* form = new QFormLayout(settings);
+    form->setContentsMargins(0, 0, 0, 0);
     form->addRow(tr("Name"), name_);
     form->addRow(tr("Excavates"), excavate_);
     form->addRow(tr("Builds"), activate_);
+    form->addRow(tr("Installs"), install_);
+    form->addRow(tr("Removes"), remove_items_);
+    form->addRow(tr("Steps"), steps_);
+    form->addRow(tr("Release"), release_);
     form->addRow(QString(), apply_);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(list_, 1);
     layout->addLayout(buttons);
-    layout->addLayout(form);
     layout->addWidget(note_);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(settings);
+    layout->addWidget(scroll, 2);
 
     connect(list_, &QListWidget::currentRowChanged, this, &StagesPanel::showStage);
     connect(add, &QPushButton::clicked, this, &StagesPanel::addStage);
@@ -115,8 +170,8 @@ void StagesPanel::showStage()
     const Model& m = document_->model();
     const int stage = currentStage();
     const bool editing = stage >= 0 && stage < static_cast<int>(m.stages.size());
-    for (QWidget* w : {static_cast<QWidget*>(name_), static_cast<QWidget*>(excavate_), static_cast<QWidget*>(activate_),
-                       static_cast<QWidget*>(apply_), static_cast<QWidget*>(remove_)})
+    for (QWidget* w : std::initializer_list<QWidget*>{name_, excavate_, activate_, install_, remove_items_, steps_,
+                                                       release_, apply_, remove_})
         w->setEnabled(editing);
     up_->setEnabled(editing && stage > 0);
     down_->setEnabled(editing && stage + 1 < static_cast<int>(m.stages.size()));
@@ -135,9 +190,23 @@ void StagesPanel::showStage()
             item->setCheckState(on ? Qt::Checked : Qt::Unchecked);
         }
     }
+    const Stage* st = editing ? &m.stages[static_cast<std::size_t>(stage)] : nullptr;
+    for (auto [list, which] : {std::pair{install_, 0}, std::pair{remove_items_, 1}}) {
+        list->clear();
+        for (const auto& [name, kind] : stage_items(m)) {
+            auto* item = new QListWidgetItem(tr("%1 (%2)").arg(QString::fromStdString(name), kind), list);
+            item->setData(Qt::UserRole, QString::fromStdString(name));
+            const std::vector<std::string>* names = st ? (which == 0 ? &st->install : &st->remove) : nullptr;
+            const bool on = names && std::count(names->begin(), names->end(), name) > 0;
+            item->setCheckState(on ? Qt::Checked : Qt::Unchecked);
+        }
+    }
+    steps_->setValue(st ? st->analysis.steps : 1);
+    release_->setValue(st ? st->release_steps : 0);
     // The picture: the model as it stands in the stage.
     view::SceneOptions options = view_->sceneOptions();
     options.hidden_regions = stage >= 0 ? regions_absent(m, stage) : std::vector<int>{};
+    options.hidden_items = stage >= 0 ? items_absent(m, stage) : std::vector<std::string>{};
     view_->setSceneOptions(options);
 }
 
@@ -150,6 +219,10 @@ void StagesPanel::applyStage()
     st.name = name_->text().trimmed().toStdString();
     st.excavate = checked(excavate_);
     st.activate = checked(activate_);
+    st.install = checked_names(install_);
+    st.remove = checked_names(remove_items_);
+    st.analysis.steps = steps_->value();
+    st.release_steps = release_->value();
     document_->replaceModel(m, tr("Edit stage \"%1\"").arg(QString::fromStdString(st.name)));
 }
 

@@ -2,8 +2,9 @@
 /// \file StagesPanel.hpp
 /// The Stages dock: the model's construction stages in order, the picture showing the model as it
 /// stands in the stage chosen (regions excavated by then, or built only later, left out), and
-/// editing: add, remove, rename and reorder stages and choose the regions each excavates or
-/// builds. Every change is one undoable edit of the document; the model checker reports stages
+/// editing: add, remove, rename and reorder stages, choose the regions each excavates or builds,
+/// the supports, loads and bolts it installs or removes, its number of steps and how fast it
+/// releases the out-of-balance forces. Every change is one undoable edit of the document; the model checker reports stages
 /// that do not make sense (excavating what is already gone) in the Messages dock.
 
 #include <QWidget>
@@ -11,6 +12,7 @@
 class QLabel;
 class QLineEdit;
 class QListWidget;
+class QSpinBox;
 class QPushButton;
 
 namespace mcdda::gui {
@@ -42,6 +44,10 @@ private:
     QLineEdit* name_ = nullptr;
     QListWidget* excavate_ = nullptr;
     QListWidget* activate_ = nullptr;
+    QListWidget* install_ = nullptr;
+    QListWidget* remove_items_ = nullptr;
+    QSpinBox* steps_ = nullptr;
+    QSpinBox* release_ = nullptr;
     QPushButton* apply_ = nullptr;
     QPushButton* remove_ = nullptr;
     QPushButton* up_ = nullptr;

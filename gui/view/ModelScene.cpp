@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -360,16 +361,35 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
     if (options.show_joints) add_joints(renderer, p.model, st);
 
     const double z = symbol_layer * st.z_step;
+    // The supports, loads and bolts of the stage shown: a copy without those absent in it.
+    std::optional<Model> staged;
+    if (!options.hidden_items.empty()) {
+        staged = p.model;
+        auto drop_hidden = [&](auto& items) {
+            items.erase(std::remove_if(items.begin(), items.end(),
+                                       [&](const auto& item) {
+                                           return std::count(options.hidden_items.begin(), options.hidden_items.end(),
+                                                             item.name) > 0;
+                                       }),
+                        items.end());
+        };
+        drop_hidden(staged->fixed_points);
+        drop_hidden(staged->rollers);
+        drop_hidden(staged->point_loads);
+        drop_hidden(staged->edge_pressures);
+        drop_hidden(staged->bolts);
+    }
+    const Model& items = staged ? *staged : p.model;
     if (options.show_supports) {
-        add_shapes(renderer, roller_shapes(p.model, st.symbol), palette::support, 2.0 * st.pixel, z);
-        add_shapes(renderer, fixed_point_shapes(p.model, st.symbol), palette::support, 1.5 * st.pixel, z);
+        add_shapes(renderer, roller_shapes(items, st.symbol), palette::support, 2.0 * st.pixel, z);
+        add_shapes(renderer, fixed_point_shapes(items, st.symbol), palette::support, 1.5 * st.pixel, z);
         Shapes bolts;  // rock bolts: a line between their anchors
-        for (const Bolt& b : p.model.bolts) bolts.lines.push_back({b.from, b.to});
+        for (const Bolt& b : items.bolts) bolts.lines.push_back({b.from, b.to});
         add_shapes(renderer, bolts, palette::bolt, 3.0 * st.pixel, z);
     }
     if (options.show_loads) {
-        add_shapes(renderer, edge_pressure_shapes(p.model, st.symbol), palette::pressure, 1.5 * st.pixel, z);
-        add_shapes(renderer, point_load_shapes(p.model, st.symbol), palette::point_load, 1.5 * st.pixel, z);
+        add_shapes(renderer, edge_pressure_shapes(items, st.symbol), palette::pressure, 1.5 * st.pixel, z);
+        add_shapes(renderer, point_load_shapes(items, st.symbol), palette::point_load, 1.5 * st.pixel, z);
     }
     if (options.show_points) {
         add_shapes(renderer, measurement_shapes(p.model, st.symbol), palette::measurement, 1.0 * st.pixel, z);

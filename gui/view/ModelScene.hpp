@@ -5,6 +5,7 @@
 
 #include "Preprocess.hpp"
 
+#include <string>
 #include <vector>
 
 class vtkRenderer;
@@ -23,6 +24,8 @@ struct SceneOptions {
     /// Regions not drawn (nor their mesh, outlines and the joints through them): those absent in
     /// the construction stage shown (regions_present()).
     std::vector<int> hidden_regions;
+    /// Supports, loads and bolts not drawn, by name: those absent in the stage shown (items_absent()).
+    std::vector<std::string> hidden_items;
 };
 
 /// Adds the actors of the model to `renderer`: blocks filled in their material's colour with

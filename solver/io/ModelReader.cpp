@@ -3,6 +3,7 @@
 #include "io/JsonOverrides.hpp"
 #include "Version.hpp"
 #include "model/Defaults.hpp"
+#include "model/ModelFields.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -15,8 +16,10 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace mcdda {
 
@@ -58,6 +61,10 @@ public:
     /// Reports keys of `object` that are not in `allowed` (typos must not pass silently).
     void check_keys(const json& object, const std::string& path,
                     std::initializer_list<const char*> allowed) {
+        check_keys(object, path, std::vector<const char*>(allowed));
+    }
+
+    void check_keys(const json& object, const std::string& path, const std::vector<const char*>& allowed) {
         std::set<std::string> known(allowed.begin(), allowed.end());
         for (auto it = object.begin(); it != object.end(); ++it) {
             if (!known.count(it.key())) {
@@ -300,6 +307,27 @@ std::map<std::string, int> collect_names(Parser& p, const json& list, const std:
     return names;
 }
 
+/// The keys a record may have: "name", its declared number fields and `more`.
+template <class Record>
+std::vector<const char*> keys_of(const std::vector<RecordField<Record>>& fields, std::initializer_list<const char*> more) {
+    std::vector<const char*> keys{"name"};
+    for (const RecordField<Record>& f : fields) keys.push_back(f.field.key);
+    keys.insert(keys.end(), more.begin(), more.end());
+    return keys;
+}
+
+/// The declared number fields of `record` from `o`, in the file's units (ModelFields.hpp);
+/// those absent take their default, a required one absent is an error.
+template <class Record>
+void read_fields(Parser& p, const json& o, const std::string& path, const std::vector<RecordField<Record>>& fields,
+                 Record& record) {
+    for (const RecordField<Record>& f : fields) {
+        std::optional<double> fallback;
+        if (f.field.default_value) fallback = to_file_unit(f.field.quantity, *f.field.default_value);
+        record.*f.member = from_file_unit(f.field.quantity, p.number(o, path, f.field.key, fallback));
+    }
+}
+
 void parse_materials(Parser& p, const json& root, Model& m) {
     const json& list = p.array(root, "", "materials");
     if (list.empty()) p.error("/materials", "at least one material is required");
@@ -308,19 +336,12 @@ void parse_materials(Parser& p, const json& root, Model& m) {
         const json& o = list[i];
         Material mat;
         if (!p.is_object(o, path)) { m.materials.push_back(mat); continue; }
-        p.check_keys(o, path, {"name", "young_modulus", "poisson_ratio", "density", "unit_weight", "cohesion",
-                               "friction_angle", "dilation_angle", "tensile_strength", "plastic"});
+        p.check_keys(o, path, keys_of(material_fields(), {"unit_weight", "plastic"}));
         mat.name = p.string(o, path, "name", std::nullopt);
-        mat.young_modulus = p.number(o, path, "young_modulus", std::nullopt);
-        mat.poisson_ratio = p.number(o, path, "poisson_ratio", std::nullopt);
+        read_fields(p, o, path, material_fields(), mat);
         if (o.contains("density") && o.contains("unit_weight"))
             p.error(path, "give either density or unit_weight, not both");
         if (o.contains("unit_weight")) mat.density = p.number(o, path, "unit_weight", 0.0) / standard_gravity;
-        else mat.density = p.number(o, path, "density", 0.0);
-        mat.cohesion = p.number(o, path, "cohesion", 0.0);
-        mat.friction_angle = p.angle(o, path, "friction_angle", 0.0);
-        mat.dilation_angle = p.angle(o, path, "dilation_angle", 0.0);
-        mat.tensile_strength = p.number(o, path, "tensile_strength", 0.0);
         mat.plastic = p.boolean(o, path, "plastic", true);
         m.materials.push_back(mat);
     }
@@ -333,14 +354,9 @@ void parse_joint_materials(Parser& p, const json& root, Model& m, std::map<std::
         const json& o = list[i];
         JointMaterial jm;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, {"name", "friction_angle", "cohesion", "tensile_strength",
-                                   "normal_stiffness", "shear_stiffness"});
+            p.check_keys(o, path, keys_of(joint_material_fields(), {}));
             jm.name = p.string(o, path, "name", std::nullopt);
-            jm.friction_angle = p.angle(o, path, "friction_angle", std::nullopt);
-            jm.cohesion = p.number(o, path, "cohesion", 0.0);
-            jm.tensile_strength = p.number(o, path, "tensile_strength", 0.0);
-            jm.normal_stiffness = p.number(o, path, "normal_stiffness", 0.0);
-            jm.shear_stiffness = p.number(o, path, "shear_stiffness", 0.0);
+            read_fields(p, o, path, joint_material_fields(), jm);
         }
         m.joint_materials.push_back(jm);
     }
@@ -645,13 +661,11 @@ void parse_bolts(Parser& p, const json& root, Model& m) {
         const json& o = list[i];
         Bolt b;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, {"name", "from", "to", "stiffness", "strength", "pretension"});
+            p.check_keys(o, path, keys_of(bolt_fields(), {"from", "to"}));
             b.name = p.string(o, path, "name", std::nullopt);
             b.from = p.point(o, path, "from");
             b.to = p.point(o, path, "to");
-            b.stiffness = p.number(o, path, "stiffness", std::nullopt);
-            b.strength = p.number(o, path, "strength", 0.0);
-            b.pretension = p.number(o, path, "pretension", 0.0);
+            read_fields(p, o, path, bolt_fields(), b);
         }
         m.bolts.push_back(b);
     }

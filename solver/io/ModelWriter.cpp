@@ -3,13 +3,13 @@
 #include "io/AtomicFile.hpp"
 #include "Version.hpp"
 #include "model/Defaults.hpp"
+#include "model/ModelFields.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace mcdda {
 
@@ -18,18 +18,13 @@ namespace {
 // Keys in the order of docs/model-format.md, not sorted.
 using json = nlohmann::ordered_json;
 
-/// Radians (inside) to degrees (file). The reader multiplies by `degree`; the shortest decimal
-/// that gives back exactly `radians` that way is chosen, so 30° is written as 30, not as
-/// 29.999999999999996. Without such a decimal, the nearest degree value (off by an ulp or so).
-double to_degrees(double radians) {
-    const double nearest = radians / degree;
-    char text[40];
-    for (int digits = 1; digits <= 17; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, nearest);
-        const double candidate = std::strtod(text, nullptr);
-        if (candidate * degree == radians) return candidate;
-    }
-    return nearest;
+/// Radians (inside) to degrees (file), the shortest decimal that reads back exactly.
+double to_degrees(double radians) { return to_file_unit(Quantity::Angle, radians); }
+
+/// The declared number fields of `record` (ModelFields.hpp) into `o`, in the file's units.
+template <class Record>
+void write_fields(const Record& record, const std::vector<RecordField<Record>>& fields, json& o) {
+    for (const RecordField<Record>& f : fields) o[f.field.key] = to_file_unit(f.field.quantity, record.*f.member);
 }
 
 json point(Point2 p) { return json::array({p.x, p.y}); }
@@ -89,13 +84,7 @@ json to_json(const Model& m) {
     for (const Material& mat : m.materials) {
         json o;
         o["name"] = mat.name;
-        o["young_modulus"] = mat.young_modulus;
-        o["poisson_ratio"] = mat.poisson_ratio;
-        o["density"] = mat.density;
-        o["cohesion"] = mat.cohesion;
-        o["friction_angle"] = to_degrees(mat.friction_angle);
-        o["dilation_angle"] = to_degrees(mat.dilation_angle);
-        o["tensile_strength"] = mat.tensile_strength;
+        write_fields(mat, material_fields(), o);
         o["plastic"] = mat.plastic;
         materials.push_back(std::move(o));
     }
@@ -106,11 +95,7 @@ json to_json(const Model& m) {
         for (const JointMaterial& jm : m.joint_materials) {
             json o;
             o["name"] = jm.name;
-            o["friction_angle"] = to_degrees(jm.friction_angle);
-            o["cohesion"] = jm.cohesion;
-            o["tensile_strength"] = jm.tensile_strength;
-            o["normal_stiffness"] = jm.normal_stiffness;
-            o["shear_stiffness"] = jm.shear_stiffness;
+            write_fields(jm, joint_material_fields(), o);
             list.push_back(std::move(o));
         }
         root["joint_materials"] = std::move(list);
@@ -280,9 +265,11 @@ json to_json(const Model& m) {
     root["analysis"] = analysis_json(m.analysis, nullptr);
     if (!m.bolts.empty()) {
         json list = json::array();
-        for (const Bolt& b : m.bolts)
-            list.push_back({{"name", b.name}, {"from", point(b.from)}, {"to", point(b.to)}, {"stiffness", b.stiffness},
-                            {"strength", b.strength}, {"pretension", b.pretension}});
+        for (const Bolt& b : m.bolts) {
+            json o{{"name", b.name}, {"from", point(b.from)}, {"to", point(b.to)}};
+            write_fields(b, bolt_fields(), o);
+            list.push_back(std::move(o));
+        }
         root["bolts"] = std::move(list);
     }
     if (!m.stages.empty()) {

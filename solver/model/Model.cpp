@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace mcdda {
 
@@ -73,6 +74,21 @@ std::vector<int> regions_absent(const Model& model, int stage)
     std::vector<int> absent;
     for (std::size_t r = 0; r < present.size(); ++r)
         if (!present[r]) absent.push_back(static_cast<int>(r));
+    return absent;
+}
+
+std::vector<std::string> items_absent(const Model& model, int stage)
+{
+    std::map<std::string, bool> present;
+    for (const Stage& st : model.stages)
+        for (const std::string& name : st.install) present[name] = false;  // installed later: absent at first
+    for (int k = 0; k <= stage && k < static_cast<int>(model.stages.size()); ++k) {
+        for (const std::string& name : model.stages[static_cast<std::size_t>(k)].remove) present[name] = false;
+        for (const std::string& name : model.stages[static_cast<std::size_t>(k)].install) present[name] = true;
+    }
+    std::vector<std::string> absent;
+    for (const auto& [name, here] : present)
+        if (!here) absent.push_back(name);
     return absent;
 }
 

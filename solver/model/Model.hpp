@@ -279,4 +279,8 @@ struct Model {
 /// activates. `stage` < 0: the model before the first stage (only the later-activated ones).
 std::vector<int> regions_absent(const Model& model, int stage);
 
+/// The supports, loads and bolts (by name) absent while stage `stage` runs, in the same sense:
+/// removed by it or an earlier stage and not installed again since, or installed only later.
+std::vector<std::string> items_absent(const Model& model, int stage);
+
 }  // namespace mcdda

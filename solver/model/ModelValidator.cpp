@@ -2,6 +2,7 @@
 
 #include "geometry/PolygonChecks.hpp"
 #include "model/Defaults.hpp"
+#include "model/ModelFields.hpp"
 
 #include <cmath>
 #include <algorithm>
@@ -14,14 +15,6 @@ namespace mcdda {
 namespace {
 
 constexpr double max_coordinate = 1e7;  // m; beyond this the model is surely in the wrong units
-// Beyond these a value is no physical input but a typo or a unit error; the solver would spend
-// minutes on it or overflow (issue 10). The pressure at the Earth's centre is 3.6e11 Pa, the
-// stiffest solid (diamond) has E ≈ 1.2e12 Pa, the densest metal 22,600 kg/m³, and geotechnical
-// centrifuges spin at up to a few hundred g.
-constexpr double max_stress = 1e12;    // Pa: strengths, pressures, in-situ stresses
-constexpr double max_modulus = 1e14;   // Pa: leaves room for "rigid" footings and plates
-constexpr double max_density = 1e5;    // kg/m³
-constexpr double max_gravity = 1e4;    // m/s², about 1,000 g
 
 std::string num(double v) {
     std::ostringstream out;
@@ -56,47 +49,33 @@ private:
     std::vector<Diagnostic>& d_;
 };
 
+/// The declared ranges and physical limits of `record`'s number fields (ModelFields.hpp).
+template <class Record>
+void check_fields(Checker& c, const Record& record, const std::vector<RecordField<Record>>& fields,
+                  const std::string& path) {
+    for (const RecordField<Record>& f : fields) {
+        const double value = record.*f.member;
+        const std::string where = path + "/" + f.field.key;
+        if (std::string why = range_error(f.field, value); !why.empty()) c.error(where, why);
+        else if (std::string why = limit_error(f.field, value); !why.empty()) c.error(where, why);
+    }
+}
+
 void check_materials(Checker& c, const Model& m) {
     for (std::size_t i = 0; i < m.materials.size(); ++i) {
         const Material& mat = m.materials[i];
         const std::string path = "/materials/" + std::to_string(i);
-        if (!(mat.young_modulus > 0.0))
-            c.error(path + "/young_modulus", "Young's modulus must be positive (got " + num(mat.young_modulus) + " Pa)");
-        if (!(mat.poisson_ratio > -1.0 && mat.poisson_ratio < 0.5))
-            c.error(path + "/poisson_ratio", "Poisson's ratio must lie in (-1, 0.5) (got " + num(mat.poisson_ratio) + ")");
-        if (!(mat.density >= 0.0)) c.error(path + "/density", "density must not be negative (got " + num(mat.density) + ")");
-        if (!(mat.cohesion >= 0.0)) c.error(path + "/cohesion", "cohesion must not be negative (got " + num(mat.cohesion) + " Pa)");
-        if (!(mat.friction_angle >= 0.0 && mat.friction_angle < pi / 2))
-            c.error(path + "/friction_angle", "friction angle must lie in [0°, 90°) (got " + deg(mat.friction_angle) + ")");
-        if (!(mat.dilation_angle >= 0.0))
-            c.error(path + "/dilation_angle", "dilation angle must not be negative (got " + deg(mat.dilation_angle) + ")");
-        else if (mat.dilation_angle > mat.friction_angle)
+        check_fields(c, mat, material_fields(), path);
+        if (mat.dilation_angle >= 0.0 && mat.dilation_angle > mat.friction_angle)
             c.error(path + "/dilation_angle", "dilation angle " + deg(mat.dilation_angle) +
                                                   " exceeds the friction angle " + deg(mat.friction_angle));
-        if (!(mat.tensile_strength >= 0.0))
-            c.error(path + "/tensile_strength", "tensile strength must not be negative (got " + num(mat.tensile_strength) + " Pa)");
         if (mat.plastic && m.analysis.plasticity && mat.cohesion == 0.0 && mat.friction_angle == 0.0)
             c.error(path, "a plastic material needs cohesion or friction (both are zero)");
         if (m.analysis.kind == AnalysisSettings::Kind::Dynamic && !(mat.density > 0.0))
             c.error(path + "/density", "a dynamic analysis needs a positive density (or unit weight)");
-        c.at_most(mat.young_modulus, max_modulus, path + "/young_modulus", "Young's modulus", "Pa");
-        c.at_most(mat.density, max_density, path + "/density", "density", "kg/m³");
-        c.at_most(mat.cohesion, max_stress, path + "/cohesion", "cohesion", "Pa");
-        c.at_most(mat.tensile_strength, max_stress, path + "/tensile_strength", "tensile strength", "Pa");
     }
-    for (std::size_t i = 0; i < m.joint_materials.size(); ++i) {
-        const JointMaterial& j = m.joint_materials[i];
-        const std::string path = "/joint_materials/" + std::to_string(i);
-        if (!(j.friction_angle >= 0.0 && j.friction_angle < pi / 2))
-            c.error(path + "/friction_angle", "joint friction angle must lie in [0°, 90°) (got " + deg(j.friction_angle) + ")");
-        if (!(j.cohesion >= 0.0)) c.error(path + "/cohesion", "joint cohesion must not be negative (got " + num(j.cohesion) + " Pa)");
-        if (!(j.tensile_strength >= 0.0))
-            c.error(path + "/tensile_strength", "joint tensile strength must not be negative (got " + num(j.tensile_strength) + " Pa)");
-        if (!(j.normal_stiffness >= 0.0))
-            c.error(path + "/normal_stiffness", "normal stiffness must not be negative (0 = automatic)");
-        if (!(j.shear_stiffness >= 0.0))
-            c.error(path + "/shear_stiffness", "shear stiffness must not be negative (0 = automatic)");
-    }
+    for (std::size_t i = 0; i < m.joint_materials.size(); ++i)
+        check_fields(c, m.joint_materials[i], joint_material_fields(), "/joint_materials/" + std::to_string(i));
 }
 
 void check_geometry(Checker& c, const Model& m) {
@@ -250,9 +229,13 @@ void check_bolts(Checker& c, const Model& m) {
     for (std::size_t i = 0; i < m.bolts.size(); ++i) {
         const Bolt& b = m.bolts[i];
         const std::string path = "/bolts/" + std::to_string(i);
-        if (!(b.stiffness > 0.0)) c.error(path + "/stiffness", "bolt stiffness EA must be positive (got " + num(b.stiffness) + " N/m)");
-        if (!(b.strength >= 0.0)) c.error(path + "/strength", "bolt strength must not be negative (0 = unbreakable)");
-        if (!(b.pretension >= 0.0)) c.error(path + "/pretension", "pretension must not be negative");
+        check_fields(c, b, bolt_fields(), path);
+        if (b.name.empty()) c.error(path + "/name", "a bolt needs a name (stages install it by name)");
+        for (std::size_t k = 0; k < i; ++k)
+            if (!b.name.empty() && m.bolts[k].name == b.name) {
+                c.error(path + "/name", "duplicate bolt name \"" + b.name + "\" (also bolt " + std::to_string(k + 1) + ")");
+                break;
+            }
         if (std::hypot(b.to.x - b.from.x, b.to.y - b.from.y) <= 0.0) c.error(path, "bolt \"" + b.name + "\" has no length");
         for (const char* end : {"from", "to"}) {
             const Point2 q = std::string(end) == "from" ? b.from : b.to;

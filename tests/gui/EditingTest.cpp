@@ -27,6 +27,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QUndoStack>
 #include <QApplication>
 #include <QTextBrowser>
@@ -560,6 +561,22 @@ void EditingTest::stageListShowsAndEditsStages()
     Point2 middle{0.0, 0.0};
     for (const Point2& q : largest->outer) middle.x += q.x / largest->outer.size(), middle.y += q.y / largest->outer.size();
     QVERIFY(guitest::count_around(*view, middle.x, middle.y, rock) > 40);
+    // The roof bolts are drawn from the stage that installs them on, and the stage's lists say so.
+    const Point2 bolt{0.0, 6.0};  // on roof bolt 3
+    QCOMPARE(guitest::count_around(*view, bolt.x, bolt.y, view::palette::bolt, 3), 0);
+    QCOMPARE(window.findChild<QSpinBox*>(QStringLiteral("stageSteps"))->value(), 5);
+    QCOMPARE(window.findChild<QSpinBox*>(QStringLiteral("stageRelease"))->value(), 10);
+    list->setCurrentRow(3);  // roof bolts
+    QVERIFY(guitest::count_around(*view, bolt.x, bolt.y, view::palette::bolt, 3) > 5);
+    auto* installs = window.findChild<QListWidget*>(QStringLiteral("stageInstall"));
+    QVERIFY(installs);
+    int installed = 0;
+    for (int i = 0; i < installs->count(); ++i)
+        if (installs->item(i)->checkState() == Qt::Checked) {
+            ++installed;
+            QVERIFY2(installs->item(i)->text().contains(QStringLiteral("roof bolt")), qPrintable(installs->item(i)->text()));
+        }
+    QCOMPARE(installed, 5);
     list->setCurrentRow(0);  // the model as drawn
     QVERIFY(guitest::count_around(*view, heading.x, heading.y, rock) > 40);
     // Item 9: at the default window size the legend leaves the model's top-right corner in sight.
@@ -585,10 +602,20 @@ void EditingTest::stageListShowsAndEditsStages()
     window.findChild<QLineEdit*>(QStringLiteral("stageName"))->setText(QStringLiteral("backfill"));
     auto* builds = window.findChild<QListWidget*>(QStringLiteral("stageActivate"));
     builds->item(1)->setCheckState(Qt::Checked);
+    auto* removes = window.findChild<QListWidget*>(QStringLiteral("stageRemove"));
+    const QList<QListWidgetItem*> first_bolt = removes->findItems(QStringLiteral("roof bolt 1"), Qt::MatchStartsWith);
+    QCOMPARE(first_bolt.size(), 1);
+    first_bolt.front()->setCheckState(Qt::Checked);
+    window.findChild<QSpinBox*>(QStringLiteral("stageSteps"))->setValue(4);
+    window.findChild<QSpinBox*>(QStringLiteral("stageRelease"))->setValue(2);
     window.findChild<QPushButton*>(QStringLiteral("applyStage"))->click();
     const Stage& edited = window.document()->model().stages.back();
     QCOMPARE(edited.name, std::string("backfill"));
     QCOMPARE(edited.activate, std::vector<int>{1});
+    QCOMPARE(edited.remove, std::vector<std::string>{"roof bolt 1"});
+    QCOMPARE(edited.analysis.steps, 4);
+    QCOMPARE(edited.release_steps, 2);
+    QCOMPARE(guitest::count_around(*view, 4.26, 4.26, view::palette::bolt, 3), 0);  // roof bolt 1 taken out
     QCOMPARE(undo->count(), edits + 2);
     QVERIFY(guitest::count_around(*view, heading.x, heading.y, rock) > 40);  // built again in it
     undo->undo();

@@ -5,6 +5,8 @@
 #include "MainWindow.hpp"
 #include "WindowProbe.hpp"
 #include "document/ModelDocument.hpp"
+#include "model/ModelFields.hpp"
+#include "panels/BoltForm.hpp"
 #include "panels/PropertyEditor.hpp"
 #include "view/Palette.hpp"
 #include "widgets/ModelView.hpp"
@@ -15,6 +17,8 @@
 #include <QComboBox>
 #include <QLineEdit>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTimer>
@@ -43,6 +47,8 @@ private slots:
     void otherToolsPlaceItems();
     void viewFollowsEditsOffTheGuiThread();
     void everyFieldExplainsItself();
+    void formsFollowTheFieldDeclarations();
+    void boltFormEditsBolts();
 };
 
 void PropertyEditorTest::initTestCase()
@@ -62,7 +68,7 @@ void PropertyEditorTest::refusesImpossibleValues()
     const int commands = doc->undoStack()->count();
     PropertyEditor* editor = window->propertyEditor();
     QVERIFY(editor);
-    auto* nu = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialNu"));
+    auto* nu = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_poisson_ratio"));
     auto* apply = editor->findChild<QPushButton*>(QStringLiteral("materialApply"));
     QVERIFY(nu && apply);
 
@@ -73,7 +79,7 @@ void PropertyEditorTest::refusesImpossibleValues()
     QCOMPARE(doc->undoStack()->count(), commands);
 
     nu->setValue(before.poisson_ratio);
-    auto* phi = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialPhi"));
+    auto* phi = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_friction_angle"));
     QVERIFY(phi->suffix().contains(QStringLiteral("°")));
     phi->setValue(90.0);
     QVERIFY(!editor->applyMaterial());
@@ -81,7 +87,7 @@ void PropertyEditorTest::refusesImpossibleValues()
     QCOMPARE(doc->model().materials[0].friction_angle, before.friction_angle);
 
     phi->setValue(35.0);
-    auto* e = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialE"));
+    auto* e = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_young_modulus"));
     QVERIFY(e->suffix().contains(QStringLiteral("MPa")));
     e->setValue(0.0);
     QVERIFY(!editor->applyMaterial());
@@ -99,7 +105,7 @@ void PropertyEditorTest::appliesCohesionWithUndo()
     const double old_cohesion = doc->model().materials[0].cohesion;
     const double old_e = doc->model().materials[0].young_modulus;
     const double old_density = doc->model().materials[0].density;
-    auto* c = editor->findChild<QDoubleSpinBox*>(QStringLiteral("materialCohesion"));
+    auto* c = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_cohesion"));
     QVERIFY(c);
     QVERIFY(c->suffix().contains(QStringLiteral("kPa")));
     QCOMPARE(c->value(), old_cohesion / 1e3);
@@ -125,12 +131,12 @@ void PropertyEditorTest::appliesJointMaterialAndInSituStress()
     QVERIFY(window);
     gui::ModelDocument* doc = window->document();
     PropertyEditor* editor = window->propertyEditor();
-    auto* cj = editor->findChild<QDoubleSpinBox*>(QStringLiteral("jointCohesion"));
+    auto* cj = editor->findChild<QDoubleSpinBox*>(QStringLiteral("joint_cohesion"));
     QVERIFY(cj);
     cj->setValue(50.0);
     QVERIFY(editor->applyJointMaterial());
     QCOMPARE(doc->model().joint_materials[0].cohesion, 5e4);
-    auto* phij = editor->findChild<QDoubleSpinBox*>(QStringLiteral("jointPhi"));
+    auto* phij = editor->findChild<QDoubleSpinBox*>(QStringLiteral("joint_friction_angle"));
     phij->setValue(95.0);
     QVERIFY(!editor->applyJointMaterial());
     QVERIFY(!editor->jointMaterialStatus().isEmpty());
@@ -247,7 +253,7 @@ void PropertyEditorTest::viewFollowsEditsOffTheGuiThread()
     const auto before = window->modelView()->scene();
 
     // An edit returns at once; the previous picture stays until the new one is ready.
-    auto* c = window->propertyEditor()->findChild<QDoubleSpinBox*>(QStringLiteral("materialCohesion"));
+    auto* c = window->propertyEditor()->findChild<QDoubleSpinBox*>(QStringLiteral("material_cohesion"));
     c->setValue(200.0);
     QVERIFY(window->propertyEditor()->applyMaterial());
     QVERIFY(window->isPreprocessing());
@@ -309,6 +315,98 @@ void PropertyEditorTest::everyFieldExplainsItself()
     penalty->setValue(0.0);
     QCOMPARE(penalty->text(), QStringLiteral("automatic"));
     QVERIFY(penalty->toolTip().contains(QStringLiteral("automatic")));
+}
+
+namespace {
+
+/// Each declared field has its form field, named after its key, labelled and explained by its
+/// declaration, showing the model's value in the form's unit.
+template <class Record>
+void check_declared(PropertyEditor* editor, const std::vector<RecordField<Record>>& fields, const QString& prefix,
+                    const Record& shown)
+{
+    for (const RecordField<Record>& f : fields) {
+        const QString name = prefix + QString::fromLatin1(f.field.key);
+        auto* box = editor->findChild<QDoubleSpinBox*>(name);
+        QVERIFY2(box, qPrintable(name + QStringLiteral(" missing")));
+        auto* form = qobject_cast<QFormLayout*>(box->parentWidget()->layout());
+        QVERIFY(form);
+        auto* label = qobject_cast<QLabel*>(form->labelForField(box));
+        QVERIFY2(label && label->text().startsWith(QString::fromUtf8(f.field.label)), qPrintable(name));
+        QCOMPARE(box->toolTip(), QString::fromUtf8(f.field.help));
+        const double shown_value = shown.*f.member / gui::form::form_unit_factor(f.field.quantity);
+        QVERIFY2(std::abs(box->value() - shown_value) <= 0.5 * std::pow(10.0, -box->decimals()), qPrintable(name));
+    }
+}
+
+}  // namespace
+
+// Issue 13: the Material, Joint material and Bolts forms are built from the field declarations
+// the reader, writer and validator use (model/ModelFields.hpp).
+void PropertyEditorTest::formsFollowTheFieldDeclarations()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    QTRY_VERIFY2(settled(*window), qPrintable(window->messages()));
+    PropertyEditor* editor = window->propertyEditor();
+    const Model& m = window->document()->model();
+    check_declared(editor, material_fields(), QStringLiteral("material_"), m.materials[0]);
+    check_declared(editor, joint_material_fields(), QStringLiteral("joint_"), m.joint_materials[0]);
+    check_declared(editor, bolt_fields(), QStringLiteral("bolt_"), Bolt{});
+    // The unit weight is typed in kN/m³ and stored as a density.
+    auto* gamma = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_density"));
+    QVERIFY(gamma->suffix().contains(QStringLiteral("kN/m³")));
+    QCOMPARE(gamma->value(), std::round(m.materials[0].density * 9.81 / 1e3 * 1e3) / 1e3);
+    gamma->setValue(20.0);
+    QVERIFY(editor->applyMaterial());
+    QCOMPARE(window->document()->model().materials[0].density, 20.0e3 / 9.81);
+}
+
+// Issue 13: the Bolts tab edits the staged tunnel's roof bolts: strength in kN/m, refusals with
+// the validator's reason, a rename that the stages follow, each change one undoable edit.
+void PropertyEditorTest::boltFormEditsBolts()
+{
+    MainWindow window;
+    window.resize(1100, 750);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
+    QTRY_VERIFY(settled(window));
+    gui::BoltForm* form = window.propertyEditor()->boltForm();
+    QVERIFY(form);
+    auto* box = form->findChild<QComboBox*>(QStringLiteral("boltBox"));
+    QCOMPARE(box->count(), 5);
+    form->setBoltIndex(2);
+    auto* strength = form->findChild<QDoubleSpinBox*>(QStringLiteral("bolt_strength"));
+    auto* stiffness = form->findChild<QDoubleSpinBox*>(QStringLiteral("bolt_stiffness"));
+    QVERIFY(strength && stiffness);
+    QVERIFY(strength->suffix().contains(QStringLiteral("kN/m")));
+    QCOMPARE(strength->value(), 160.0);
+    QCOMPARE(stiffness->value(), 65.0);  // MN/m
+    QUndoStack* undo = window.document()->undoStack();
+    const int edits = undo->count();
+    strength->setValue(200.0);
+    QVERIFY(form->apply());
+    QCOMPARE(window.document()->model().bolts[2].strength, 200e3);
+    QCOMPARE(undo->count(), edits + 1);
+    stiffness->setValue(0.0);
+    QVERIFY(!form->apply());
+    QVERIFY2(form->status().contains(QStringLiteral("bolt stiffness EA must be positive")), qPrintable(form->status()));
+    QCOMPARE(window.document()->model().bolts[2].stiffness, 65e6);
+    stiffness->setValue(65.0);
+    auto* name = form->findChild<QLineEdit*>(QStringLiteral("boltName"));
+    name->setText(QStringLiteral("roof bolt 1"));  // taken
+    QVERIFY(!form->apply());
+    QVERIFY2(form->status().contains(QStringLiteral("duplicate bolt name")), qPrintable(form->status()));
+    name->setText(QStringLiteral("crown bolt"));
+    QVERIFY(form->apply());
+    const Model& m = window.document()->model();
+    QCOMPARE(m.bolts[2].name, std::string("crown bolt"));
+    QVERIFY(std::count(m.stages[2].install.begin(), m.stages[2].install.end(), std::string("crown bolt")) == 1);
+    undo->undo();
+    undo->undo();
+    QCOMPARE(window.document()->model().bolts[2].strength, 160e3);
+    QCOMPARE(window.document()->model().bolts[2].name, std::string("roof bolt 3"));
 }
 
 QTEST_MAIN(PropertyEditorTest)

@@ -284,6 +284,21 @@ TEST(ModelReader, StagesAndBoltsRead) {
     EXPECT_EQ(errors_of(r), "(no diagnostics)");
 }
 
+// What stands in each stage (the desktop program's Stages dock draws it): the core is there until
+// "dig" excavates it; bolt b1 is absent until "dig" installs it, and gone again once removed.
+TEST(ModelReader, RegionsAndItemsAbsentPerStage) {
+    const ReadResult r = read_model_text(square_model_json(),
+                                         staged({R"(/stages/-={"name": "unbolt", "remove": ["b1"]})"}));
+    ASSERT_TRUE(r.model.has_value()) << all_messages(r.diagnostics);
+    const Model& m = *r.model;
+    EXPECT_TRUE(regions_absent(m, 0).empty());
+    EXPECT_EQ(regions_absent(m, 1), std::vector<int>{1});
+    EXPECT_EQ(items_absent(m, -1), std::vector<std::string>{"b1"});
+    EXPECT_EQ(items_absent(m, 0), std::vector<std::string>{"b1"});
+    EXPECT_TRUE(items_absent(m, 1).empty());
+    EXPECT_EQ(items_absent(m, 2), std::vector<std::string>{"b1"});
+}
+
 TEST(ModelReader, StagesAndBoltsNeedVersion2) {
     const ReadResult r = read_model_text(square_model_json(), {R"(/stages=[{"name": "a"}])"});
     EXPECT_FALSE(r.model);

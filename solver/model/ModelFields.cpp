@@ -1,0 +1,155 @@
+#include "model/ModelFields.hpp"
+
+#include "model/Defaults.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+namespace mcdda {
+
+namespace {
+
+constexpr Bound above(double v) { return {v, false}; }
+constexpr Bound from(double v) { return {v, true}; }
+constexpr Bound below(double v) { return {v, false}; }
+
+}  // namespace
+
+const std::vector<RecordField<Material>>& material_fields()
+{
+    static const std::vector<RecordField<Material>> fields{
+        {{"young_modulus", "Young's modulus", MCDDA_TRANSLATABLE("ModelFields", "Young's modulus E"), Quantity::Modulus, std::nullopt, above(0.0),
+          std::nullopt, max_modulus, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Young's modulus E of the intact rock, > 0")},
+         &Material::young_modulus},
+        {{"poisson_ratio", "Poisson's ratio", MCDDA_TRANSLATABLE("ModelFields", "Poisson's ratio ν"), Quantity::Ratio, std::nullopt, above(-1.0),
+          below(0.5), 0.0, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Poisson's ratio ν, in (−1, 0.5)")},
+         &Material::poisson_ratio},
+        {{"density", "density", MCDDA_TRANSLATABLE("ModelFields", "Unit weight γ"), Quantity::Density, 0.0, from(0.0), std::nullopt, max_density,
+          nullptr, MCDDA_TRANSLATABLE("ModelFields", "Unit weight γ = ρ g (the density is γ / 9.81 m/s²); loads the model through gravity")},
+         &Material::density},
+        {{"cohesion", "cohesion", MCDDA_TRANSLATABLE("ModelFields", "Cohesion c"), Quantity::Stress, 0.0, from(0.0), std::nullopt, max_stress, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Mohr–Coulomb cohesion c, ≥ 0")},
+         &Material::cohesion},
+        {{"friction_angle", "friction angle", MCDDA_TRANSLATABLE("ModelFields", "Friction angle φ"), Quantity::Angle, 0.0, from(0.0), below(pi / 2),
+          0.0, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Mohr–Coulomb friction angle φ, in [0°, 90°)")},
+         &Material::friction_angle},
+        {{"dilation_angle", "dilation angle", MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ"), Quantity::Angle, 0.0, from(0.0), std::nullopt,
+          0.0, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)")},
+         &Material::dilation_angle},
+        {{"tensile_strength", "tensile strength", MCDDA_TRANSLATABLE("ModelFields", "Tensile strength"), Quantity::Stress, 0.0, from(0.0),
+          std::nullopt, max_stress, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension")},
+         &Material::tensile_strength},
+    };
+    return fields;
+}
+
+const std::vector<RecordField<JointMaterial>>& joint_material_fields()
+{
+    static const std::vector<RecordField<JointMaterial>> fields{
+        {{"friction_angle", "joint friction angle", MCDDA_TRANSLATABLE("ModelFields", "Friction angle φj"), Quantity::Angle, std::nullopt, from(0.0),
+          below(pi / 2), 0.0, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Coulomb friction angle of the joint surfaces, in [0°, 90°)")},
+         &JointMaterial::friction_angle},
+        {{"cohesion", "joint cohesion", MCDDA_TRANSLATABLE("ModelFields", "Cohesion cj"), Quantity::Stress, 0.0, from(0.0), std::nullopt, max_stress,
+          nullptr, MCDDA_TRANSLATABLE("ModelFields", "Cohesion of the joint, ≥ 0; lost once the joint has slipped or opened")},
+         &JointMaterial::cohesion},
+        {{"tensile_strength", "joint tensile strength", MCDDA_TRANSLATABLE("ModelFields", "Tensile strength tj"), Quantity::Stress, 0.0, from(0.0),
+          std::nullopt, max_stress, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Tensile strength of the joint, ≥ 0; 0 = the joint opens under any tension")},
+         &JointMaterial::tensile_strength},
+        {{"normal_stiffness", "normal stiffness", MCDDA_TRANSLATABLE("ModelFields", "Normal stiffness kn"), Quantity::Stiffness, 0.0, from(0.0),
+          std::nullopt, 0.0, MCDDA_TRANSLATABLE("ModelFields", "automatic"), MCDDA_TRANSLATABLE("ModelFields", "Normal stiffness per metre of thickness; 0 = the analysis penalty")},
+         &JointMaterial::normal_stiffness},
+        {{"shear_stiffness", "shear stiffness", MCDDA_TRANSLATABLE("ModelFields", "Shear stiffness ks"), Quantity::Stiffness, 0.0, from(0.0),
+          std::nullopt, 0.0, MCDDA_TRANSLATABLE("ModelFields", "automatic"), MCDDA_TRANSLATABLE("ModelFields", "Shear stiffness; 0 = automatic")},
+         &JointMaterial::shear_stiffness},
+    };
+    return fields;
+}
+
+const std::vector<RecordField<Bolt>>& bolt_fields()
+{
+    static const std::vector<RecordField<Bolt>> fields{
+        {{"stiffness", "bolt stiffness EA", MCDDA_TRANSLATABLE("ModelFields", "Axial stiffness EA"), Quantity::Stiffness, std::nullopt, above(0.0),
+          std::nullopt, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Axial stiffness EA of the bolt per metre of model thickness (bolt EA over the spacing out of plane), > 0")},
+         &Bolt::stiffness},
+        {{"strength", "bolt strength", MCDDA_TRANSLATABLE("ModelFields", "Strength"), Quantity::Force, 0.0, from(0.0), std::nullopt, 0.0,
+          MCDDA_TRANSLATABLE("ModelFields", "unbreakable"), MCDDA_TRANSLATABLE("ModelFields", "Axial force at which the bolt breaks, per metre of model thickness; 0 = unbreakable")},
+         &Bolt::strength},
+        {{"pretension", "pretension", MCDDA_TRANSLATABLE("ModelFields", "Pretension"), Quantity::Force, 0.0, from(0.0), std::nullopt, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Axial force when installed, per metre of model thickness, pulling the ends together; ≥ 0")},
+         &Bolt::pretension},
+    };
+    return fields;
+}
+
+double to_file_unit(Quantity quantity, double model_value)
+{
+    if (quantity != Quantity::Angle) return model_value;
+    const double nearest = model_value / degree;
+    char text[40];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, nearest);
+        const double candidate = std::strtod(text, nullptr);
+        if (candidate * degree == model_value) return candidate;
+    }
+    return nearest;
+}
+
+double from_file_unit(Quantity quantity, double file_value)
+{
+    return quantity == Quantity::Angle ? file_value * degree : file_value;
+}
+
+std::string value_text(Quantity quantity, double model_value)
+{
+    std::ostringstream out;
+    out << to_file_unit(quantity, model_value);
+    switch (quantity) {
+    case Quantity::Ratio: break;
+    case Quantity::Modulus:
+    case Quantity::Stress: out << " Pa"; break;
+    case Quantity::Density: out << " kg/m³"; break;
+    case Quantity::Angle: out << "°"; break;
+    case Quantity::Stiffness:
+    case Quantity::Force: out << " N/m"; break;
+    }
+    return out.str();
+}
+
+std::string range_error(const NumberField& field, double value)
+{
+    const bool above_lower = !field.lower || (field.lower->inclusive ? value >= field.lower->value : value > field.lower->value);
+    const bool below_upper = !field.upper || (field.upper->inclusive ? value <= field.upper->value : value < field.upper->value);
+    if (above_lower && below_upper && std::isfinite(value)) return {};
+    std::string rule;
+    if (field.lower && field.upper) {
+        auto end = [&](double v) {
+            return field.quantity == Quantity::Angle ? value_text(Quantity::Angle, v) : value_text(Quantity::Ratio, v);
+        };
+        rule = std::string("must lie in ") + (field.lower->inclusive ? "[" : "(") + end(field.lower->value) + ", " +
+               end(field.upper->value) + (field.upper->inclusive ? "]" : ")");
+    } else if (field.lower && field.lower->value == 0.0) {
+        rule = field.lower->inclusive ? "must not be negative" : "must be positive";
+    } else if (field.lower) {
+        rule = std::string("must be ") + (field.lower->inclusive ? "at least " : "more than ") +
+               value_text(field.quantity, field.lower->value);
+    } else {
+        rule = std::string("must be ") + (field.upper->inclusive ? "at most " : "less than ") +
+               value_text(field.quantity, field.upper->value);
+    }
+    std::string got = "got " + value_text(field.quantity, value);
+    if (field.zero_means) got += std::string("; 0 = ") + field.zero_means;
+    return std::string(field.name) + " " + rule + " (" + got + ")";
+}
+
+std::string limit_error(const NumberField& field, double value)
+{
+    if (!(field.physical_limit > 0.0) || !std::isfinite(value) || std::fabs(value) <= field.physical_limit) return {};
+    return std::string(field.name) + " of " + value_text(field.quantity, value) +
+           " is beyond any physical value (at most " + value_text(field.quantity, field.physical_limit) +
+           "): check the units";
+}
+
+}  // namespace mcdda

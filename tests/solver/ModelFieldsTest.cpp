@@ -1,0 +1,121 @@
+// The declared number fields (model/ModelFields.hpp): every one is read, written and checked
+// through its declaration, so a field declared once works in the file, the validator and the
+// forms. These tests go over the lists, so a field added to them is covered without a new test.
+
+#include "TestModels.hpp"
+#include "io/ModelReader.hpp"
+#include "io/ModelWriter.hpp"
+#include "model/Defaults.hpp"
+#include "model/ModelFields.hpp"
+#include "model/ModelValidator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+using namespace mcdda;
+using mcdda::test::all_messages;
+using mcdda::test::has_diagnostic;
+using mcdda::test::square_model_json;
+using Severity = Diagnostic::Severity;
+
+namespace {
+
+/// A value inside the field's range, different from its default and from the other fields'.
+double allowed_value(const NumberField& f, int k)
+{
+    const double step = 0.01 * (k + 1);
+    double lo = f.lower ? f.lower->value : 0.0;
+    double hi = f.upper ? f.upper->value : (lo + 1.0) * 1e6;
+    if (f.physical_limit > 0.0) hi = std::min(hi, f.physical_limit);
+    return lo + (hi - lo) * (0.2 + step);
+}
+
+/// A model with one bolt, read from the square test model.
+Model bolted_model()
+{
+    const ReadResult r = read_model_text(
+        square_model_json(),
+        {"/version=2", R"(/bolts=[{"name": "b", "from": [2,2], "to": [3,8], "stiffness": 1e8}])"});
+    EXPECT_TRUE(r.model.has_value()) << all_messages(r.diagnostics);
+    return *r.model;
+}
+
+template <class Record>
+void set_all(Record& record, const std::vector<RecordField<Record>>& fields)
+{
+    for (std::size_t k = 0; k < fields.size(); ++k) record.*fields[k].member = allowed_value(fields[k].field, static_cast<int>(k));
+}
+
+template <class Record>
+void expect_same(const Record& a, const Record& b, const std::vector<RecordField<Record>>& fields)
+{
+    for (const RecordField<Record>& f : fields) EXPECT_EQ(a.*f.member, b.*f.member) << f.field.key;
+}
+
+}  // namespace
+
+// Each declared field survives write → read exactly (angles through degrees).
+TEST(ModelFields, EveryFieldRoundTripsThroughTheFile) {
+    Model m = bolted_model();
+    set_all(m.materials[0], material_fields());
+    m.materials[0].dilation_angle = 0.5 * m.materials[0].friction_angle;  // ψ ≤ φ
+    set_all(m.joint_materials[0], joint_material_fields());
+    set_all(m.bolts[0], bolt_fields());
+    std::vector<Diagnostic> d;
+    validate_model(m, d);
+    EXPECT_FALSE(has_errors(d)) << all_messages(d);
+    const ReadResult back = read_model_text(write_model_text(m));
+    ASSERT_TRUE(back.model.has_value()) << all_messages(back.diagnostics);
+    EXPECT_FALSE(has_errors(back.diagnostics)) << all_messages(back.diagnostics);
+    expect_same(m.materials[0], back.model->materials[0], material_fields());
+    expect_same(m.joint_materials[0], back.model->joint_materials[0], joint_material_fields());
+    expect_same(m.bolts[0], back.model->bolts[0], bolt_fields());
+}
+
+// A value below a field's lower bound is an error at that field's place, naming the field, the
+// value with its unit and, where 0 has a meaning, that meaning.
+TEST(ModelFields, EveryLowerBoundIsChecked) {
+    auto check = [](auto& record, const auto& fields, const std::string& prefix, Model& m) {
+        for (const auto& f : fields) {
+            if (!f.field.lower) continue;
+            const double kept = record.*f.member;
+            record.*f.member = f.field.lower->value - 1.0;
+            std::vector<Diagnostic> d;
+            validate_model(m, d);
+            const std::string path = prefix + f.field.key;
+            EXPECT_TRUE(has_diagnostic(d, Severity::Error, path, f.field.name)) << path << "\n" << all_messages(d);
+            if (f.field.zero_means)
+                EXPECT_TRUE(has_diagnostic(d, Severity::Error, path, std::string("0 = ") + f.field.zero_means));
+            record.*f.member = kept;
+        }
+    };
+    Model m = bolted_model();
+    check(m.materials[0], material_fields(), "/materials/0/", m);
+    check(m.joint_materials[0], joint_material_fields(), "/joint_materials/0/", m);
+    check(m.bolts[0], bolt_fields(), "/bolts/0/", m);
+    std::vector<Diagnostic> d;
+    validate_model(m, d);
+    EXPECT_FALSE(has_errors(d)) << all_messages(d);  // and each error went away with its cause
+}
+
+// Ranges read as engineers write them, in the file's units.
+TEST(ModelFields, MessagesInTheFileUnits) {
+    const NumberField& phi = material_fields()[4].field;
+    ASSERT_STREQ(phi.key, "friction_angle");
+    EXPECT_EQ(range_error(phi, 95.0 * degree), "friction angle must lie in [0°, 90°) (got 95°)");
+    EXPECT_EQ(range_error(phi, 30.0 * degree), "");
+    const NumberField& nu = material_fields()[1].field;
+    EXPECT_EQ(range_error(nu, 0.5), "Poisson's ratio must lie in (-1, 0.5) (got 0.5)");
+    EXPECT_EQ(limit_error(material_fields()[0].field, 2e15),
+              "Young's modulus of 2e+15 Pa is beyond any physical value (at most 1e+14 Pa): check the units");
+    EXPECT_EQ(to_file_unit(Quantity::Angle, 30.0 * degree), 30.0);
+}
+
+// A key that no declaration knows is refused and the message lists the known ones.
+TEST(ModelFields, UnknownKeysListTheDeclaredOnes) {
+    const ReadResult r = read_model_text(square_model_json(), {"/materials/0/young_modulu=1e9"});
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/materials/0/young_modulu", "tensile_strength")) << all_messages(r.diagnostics);
+}
