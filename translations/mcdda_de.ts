@@ -343,6 +343,21 @@
     </message>
 </context>
 <context>
+    <name>mcdda::gui::DisplayUnits</name>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="48"/>
+        <location filename="../gui/session/DisplayUnits.cpp" line="55"/>
+        <source>MPa</source>
+        <translation>MPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="48"/>
+        <location filename="../gui/session/DisplayUnits.cpp" line="55"/>
+        <source>kPa</source>
+        <translation>kPa</translation>
+    </message>
+</context>
+<context>
     <name>mcdda::gui::EditingTools</name>
     <message>
         <location filename="../gui/tools/EditingTools.cpp" line="99"/>
@@ -981,305 +996,305 @@
 <context>
     <name>mcdda::gui::LoadForm</name>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="73"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="75"/>
         <source>Load tables</source>
         <translation>Lasttabellen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="76"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="78"/>
         <source>The load table shown below: a factor against time (or step) that loads may follow</source>
         <translation>Die unten gezeigte Lasttabelle: ein Faktor über der Zeit (oder dem Schritt), dem Lasten folgen können</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="83"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="85"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="86"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="88"/>
         <source>Delete</source>
         <translation>Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="93"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="95"/>
         <source>Table</source>
         <translation>Tabelle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="96"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="98"/>
         <source>Name of the load table, as loads refer to it</source>
         <translation>Name der Lasttabelle, unter dem Lasten auf sie verweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="99"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="101"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="101"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="103"/>
         <source>Whether the table&apos;s abscissa is the time (s) or the step number</source>
         <translation>Ob die Abszisse der Tabelle die Zeit (s) oder die Schrittnummer ist</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="103"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="105"/>
         <source>Step number</source>
         <translation>Schrittnummer</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="104"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="106"/>
         <source>Time</source>
         <translation>Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="106"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="108"/>
         <source>Variable</source>
         <translation>Veränderliche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="107"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="109"/>
         <source>Extrapolate (else hold the last factor)</source>
         <translation>Extrapolieren (sonst letzten Faktor halten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="109"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="111"/>
         <source>Beyond the last point, continue the last segment&apos;s slope</source>
         <translation>Nach dem letzten Punkt die Steigung des letzten Abschnitts fortsetzen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="119"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="121"/>
         <source>Add Row</source>
         <translation>Zeile hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="122"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="124"/>
         <source>Remove Row</source>
         <translation>Zeile entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="131"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="170"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="194"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="133"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="172"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="196"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="144"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="146"/>
         <source>Point loads and edge pressures</source>
         <translation>Punktlasten und Kantendrücke</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="147"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="149"/>
         <source>The point load or edge pressure shown below</source>
         <translation>Die unten gezeigte Einzellast oder Randdruck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="154"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="156"/>
         <source>Load</source>
         <translation>Last</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="155"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="158"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="157"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="160"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="156"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="158"/>
         <source>x component of the point load, per metre out of plane</source>
         <translation>x-Komponente der Einzellast, je Meter senkrecht zur Ebene</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="157"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="159"/>
         <source>Force fx</source>
         <translation>Kraft fx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="159"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="161"/>
         <source>y component of the point load, per metre out of plane (negative = downwards)</source>
         <translation>y-Komponente der Einzellast, je Meter senkrecht zur Ebene (negativ = nach unten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="160"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="162"/>
         <source>Force fy</source>
         <translation>Kraft fy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="161"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="163"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="162"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="164"/>
         <source>Normal pressure; positive pushes into the material</source>
         <translation>Normaldruck; positiv drückt in das Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="163"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="165"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="168"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="170"/>
         <source>The table whose factor multiplies the load; constant = factor 1</source>
         <translation>Die Tabelle, deren Faktor die Last multipliziert; konstant = Faktor 1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="169"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="171"/>
         <source>Load table</source>
         <translation>Lasttabelle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="183"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="185"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="185"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="188"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="187"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="190"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="186"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="188"/>
         <source>x component of the acceleration of gravity</source>
         <translation>x-Komponente der Erdbeschleunigung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="187"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="189"/>
         <source>gx</source>
         <translation>gx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="189"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="191"/>
         <source>y component of the acceleration of gravity (−9.81 m/s²: standard)</source>
         <translation>y-Komponente der Erdbeschleunigung (−9,81 m/s²: Standard)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="190"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="192"/>
         <source>gy</source>
         <translation>gy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="191"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="193"/>
         <source>Standard (0, −9.81)</source>
         <translation>Standard (0, −9,81)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="213"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="215"/>
         <source>Time [s]</source>
         <translation>Zeit [s]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="213"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="215"/>
         <source>Step [–]</source>
         <translation>Schritt [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="213"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="215"/>
         <source>Factor [–]</source>
         <translation>Faktor [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="225"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="227"/>
         <source>constant</source>
         <translation>konstant</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="227"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="229"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="234"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="236"/>
         <source>Point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="235"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="237"/>
         <source>Edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="368"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="370"/>
         <source>Not applied: row %1: %2 &quot;%3&quot; is not a number</source>
         <translation>Nicht übernommen: Zeile %1: %2 „%3“ ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="370"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="372"/>
         <source>abscissa</source>
         <translation>Abszisse</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="370"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="372"/>
         <source>factor</source>
         <translation>Faktor</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="382"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="491"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="507"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="384"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="493"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="509"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="388"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="390"/>
         <source>Change load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="389"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="494"/>
-        <location filename="../gui/panels/LoadForm.cpp" line="512"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="391"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="496"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="514"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="409"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="411"/>
         <source>Not added: %1</source>
         <translation>Nicht hinzugefügt: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="414"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="416"/>
         <source>Add load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="416"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="418"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="429"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="431"/>
         <source>Not deleted: load table &quot;%1&quot; is used by point load &quot;%2&quot;</source>
         <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Punktlast „%2“ verwendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="436"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="438"/>
         <source>Not deleted: load table &quot;%1&quot; is used by edge pressure &quot;%2&quot;</source>
         <translation>Nicht gelöscht: Lasttabelle „%1“ wird von Kantendruck „%2“ verwendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="447"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="449"/>
         <source>Delete load table &quot;%1&quot;</source>
         <translation>Lasttabelle „%1“ löschen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="448"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="450"/>
         <source>Deleted &quot;%1&quot;.</source>
         <translation>„%1“ gelöscht.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="475"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="477"/>
         <source>Change point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="488"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="490"/>
         <source>Change edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/LoadForm.cpp" line="511"/>
+        <location filename="../gui/panels/LoadForm.cpp" line="513"/>
         <source>Change gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
@@ -1802,43 +1817,43 @@
 <context>
     <name>mcdda::gui::ModelTree</name>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="27"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="36"/>
         <source>pressure %1 MPa</source>
         <translation>Druck %1 MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="28"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="37"/>
         <source>pressure %1 kPa</source>
         <translation>Druck %1 kPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="57"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="66"/>
         <source>Item</source>
         <translation>Eintrag</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="57"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="66"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="84"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="97"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="89"/>
-        <location filename="../gui/widgets/ModelTree.cpp" line="106"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="102"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="119"/>
         <source>no material</source>
         <translation>kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="90"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="103"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="91"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="104"/>
         <source>%1, %n vertices</source>
         <translation>
             <numerusform>%1, %n Eckpunkt</numerusform>
@@ -1846,12 +1861,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="94"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
         <source>hole %1</source>
         <translation>Loch %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="94"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
         <source>%n vertices</source>
         <translation>
             <numerusform>%n Eckpunkt</numerusform>
@@ -1859,17 +1874,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="101"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="114"/>
         <source>Blocks</source>
         <translation>Blöcke</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="109"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="122"/>
         <source>block %1</source>
         <translation>Block %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="110"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="123"/>
         <source>%1, %2 m², %n elements</source>
         <translation>
             <numerusform>%1, %2 m², %n Element</numerusform>
@@ -1877,102 +1892,102 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="114"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
         <source>Joints</source>
         <translation>Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="115"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
         <source>Explicit</source>
         <translation>Einzelklüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="119"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
         <source>spacing %1 m</source>
         <translation>Abstand %1 m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="121"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="134"/>
         <source>, persistence %1 %, joints %2 m long</source>
         <translation>, Durchtrennungsgrad %1 %, Klüfte %2 m lang</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="122"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="135"/>
         <source>Set %1</source>
         <translation>Kluftschar %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="131"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="144"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="145"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="137"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="150"/>
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="138"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="151"/>
         <source>rock/soil</source>
         <translation>Fels/Boden</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="139"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="152"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="140"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="153"/>
         <source>Supports</source>
         <translation>Auflager</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="142"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="155"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="146"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="159"/>
         <source>roller %1 to %2</source>
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="148"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="161"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="150"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="163"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="155"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="169"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="160"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="162"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
         <source>%1 to %2, EA %3 MN/m</source>
         <translation>%1 bis %2, EA %3 MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="166"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="180"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="180"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="194"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -1980,27 +1995,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="181"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="195"/>
         <source>excavates %1</source>
         <translation>bricht %1 aus</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="182"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="196"/>
         <source>builds %1</source>
         <translation>baut %1 ein</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="183"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="197"/>
         <source>installs %1</source>
         <translation>setzt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="184"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="198"/>
         <source>removes %1</source>
         <translation>entfernt %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="185"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="199"/>
         <source>%n material change(s)</source>
         <translation>
             <numerusform>%n Materialänderung</numerusform>
@@ -2008,7 +2023,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="186"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="200"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
@@ -2016,366 +2031,366 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="82"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="125"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="83"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="83"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="166"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="168"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="89"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="90"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="91"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="93"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="94"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="109"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="111"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="126"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
         <source>The material shown below; Assign to Selection gives it to the selected region</source>
         <translation>Das unten gezeigte Material; „Auswahl zuweisen“ gibt es dem gewählten Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="168"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="170"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
         <source>Add a material (a copy of the one shown)</source>
         <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="172"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="453"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="135"/>
         <source>The region selected in the view or the Model tree is made of this material</source>
         <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="138"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="179"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="139"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
         <source>Name of the material, as the tree and the legend show it</source>
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="261"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
         <source>Plastic (Mohr–Coulomb)</source>
         <translation>Plastisch (Mohr-Coulomb)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
         <source>Whether the material yields (Mohr–Coulomb); off = elastic whatever the stress</source>
         <translation>Ob das Material plastifiziert (Mohr-Coulomb); aus = elastisch bei jeder Spannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="145"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="183"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="167"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="169"/>
         <source>The joint material shown below; Assign to Selection gives it to the selected joint</source>
         <translation>Das unten gezeigte Kluftmaterial; „Auswahl zuweisen“ gibt es der gewählten Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="170"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="172"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="176"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="182"/>
         <source>Name of the joint material</source>
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="205"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="206"/>
         <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding</source>
         <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="210"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
         <source>Number of time steps; the loads follow their tables over the time they cover</source>
         <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="213"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="214"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="213"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="215"/>
         <source>Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps</source>
         <translation>Anfänglicher und größter Zeitschritt; er wird automatisch verkleinert, wenn sich ein Schritt zu weit bewegt oder nicht konvergiert. In einer statischen Berechnung ordnet die Zeit nur die Laststufen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="216"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="217"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
         <source>Max displacement ratio [–]</source>
         <translation>Max. Verschiebungsverhältnis [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="221"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="223"/>
         <source>Penalty</source>
         <translation>Penalty</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="231"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="259"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="260"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="262"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="286"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="316"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="321"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="318"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="323"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="453"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="471"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="488"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="473"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="499"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="509"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="501"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="511"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="528"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="550"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="575"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="601"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="530"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="552"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="577"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="604"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="532"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="554"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="579"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="605"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="534"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="581"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="608"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -2456,203 +2471,203 @@
 <context>
     <name>mcdda::gui::ResultToolBar</name>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="40"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="41"/>
         <source>Results</source>
         <translation>Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="44"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="45"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="46"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="47"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="47"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="48"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="48"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="49"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="49"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="50"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="50"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="52"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="52"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="53"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="53"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="54"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="54"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="55"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="55"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="56"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="61"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="62"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="62"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="63"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="63"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="64"/>
         <source>Sign of the stresses shown. Compression positive (as RS2, PLAXIS and UDEC): σ1 is the major compressive stress, σ1 ≥ σ3. Tension positive: the result files&apos; convention.</source>
         <translation>Vorzeichen der gezeigten Spannungen. Druck positiv (wie RS2, PLAXIS und UDEC): σ1 ist die größte Druckspannung, σ1 ≥ σ3. Zug positiv: die Konvention der Ergebnisdateien.</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="68"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="69"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="71"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="72"/>
         <source>Scale factor of the drawn displacements: 0 = undeformed; one step below 0 = auto, the largest displacement drawn as 5 % of the model&apos;s size</source>
         <translation>Überhöhung der gezeichneten Verschiebungen: 0 = unverformt; eine Stufe unter 0 = auto, die größte Verschiebung als 5 % der Modellgröße gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="74"/>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="150"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="75"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="149"/>
         <source>auto</source>
         <translation>auto</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="85"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="86"/>
         <source>Contacts</source>
         <translation>Kontakte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="89"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="90"/>
         <source>Draw the contact forces (lines along the force, the largest 6 % of the model long), joint slip and opening, and the bolts of the saved step shown</source>
         <translation>Kontaktkräfte (Linien in Kraftrichtung, die größte 6 % der Modellgröße lang), Kluftgleiten und -öffnung und die Anker des gezeigten gespeicherten Schritts zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="96"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="97"/>
         <source>Units</source>
         <translation>Einheiten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="97"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="98"/>
         <source>Units of stresses and displacements in the legend, the cursor read-out and query lines</source>
         <translation>Einheiten der Spannungen und Verschiebungen in Legende, Cursoranzeige und Abfragelinien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="108"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="109"/>
         <source>Stresses</source>
         <translation>Spannungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="109"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="110"/>
         <source>kPa, or MPa from 1 MPa on</source>
         <translation>kPa, ab 1 MPa in MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="110"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="111"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="111"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="112"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="113"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="114"/>
         <source>Displacements</source>
         <translation>Verschiebungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="114"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="116"/>
         <source>mm</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="132"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="131"/>
         <source>Rainbow</source>
         <translation>Regenbogen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="133"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="132"/>
         <source>Viridis</source>
         <translation>Viridis</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="134"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="133"/>
         <source>Grey</source>
         <translation>Grau</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="134"/>
         <source>Blue–white–red</source>
         <translation>Blau–Weiß–Rot</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="136"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
         <source>Colour map of the scale</source>
         <translation>Farbskala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="142"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="141"/>
         <source>smooth</source>
         <translation>stufenlos</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="143"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="142"/>
         <source> bands</source>
         <translation> Stufen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="144"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="143"/>
         <source>Number of colour bands (contours); smooth = a continuous scale</source>
         <translation>Anzahl der Farbstufen (Isoflächen); stufenlos = kontinuierliche Skala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="147"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="146"/>
         <source>Range</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="158"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="157"/>
         <source>Lower end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Unteres Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="159"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="158"/>
         <source>Upper end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Oberes Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
@@ -3216,37 +3231,27 @@
 <context>
     <name>mcdda::gui::form</name>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="51"/>
+        <location filename="../gui/panels/FormFields.cpp" line="52"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="109"/>
-        <source>MPa</source>
-        <translation>MPa</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="110"/>
-        <source>kPa</source>
-        <translation>kPa</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="111"/>
+        <location filename="../gui/panels/FormFields.cpp" line="119"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="112"/>
+        <location filename="../gui/panels/FormFields.cpp" line="120"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="113"/>
+        <location filename="../gui/panels/FormFields.cpp" line="121"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="114"/>
+        <location filename="../gui/panels/FormFields.cpp" line="122"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
@@ -3322,62 +3327,62 @@
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="542"/>
+        <location filename="../gui/view/ResultScene.cpp" line="543"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="543"/>
+        <location filename="../gui/view/ResultScene.cpp" line="544"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="701"/>
+        <location filename="../gui/view/ResultScene.cpp" line="702"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="703"/>
+        <location filename="../gui/view/ResultScene.cpp" line="704"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="708"/>
+        <location filename="../gui/view/ResultScene.cpp" line="709"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="710"/>
+        <location filename="../gui/view/ResultScene.cpp" line="711"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="714"/>
+        <location filename="../gui/view/ResultScene.cpp" line="715"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="719"/>
+        <location filename="../gui/view/ResultScene.cpp" line="720"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="734"/>
+        <location filename="../gui/view/ResultScene.cpp" line="735"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="771"/>
+        <location filename="../gui/view/ResultScene.cpp" line="772"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="775"/>
+        <location filename="../gui/view/ResultScene.cpp" line="776"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="782"/>
+        <location filename="../gui/view/ResultScene.cpp" line="783"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>

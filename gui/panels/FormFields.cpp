@@ -1,6 +1,7 @@
 #include "panels/FormFields.hpp"
 
 #include "panels/DeclaredFields.hpp"
+#include "session/DisplayUnits.hpp"
 
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -94,9 +95,10 @@ bool cell_value(const QString& text, double* value)
 
 namespace {
 
-/// How a form shows a quantity: model value = shown value × factor.
+/// How a form shows a quantity: model value = shown value × factor. Stresses and moduli follow
+/// the units chosen (DisplayUnits); the rest is fixed.
 struct FormUnit {
-    const char* unit;  ///< translated in the context "mcdda::gui::form"
+    QString unit;
     double factor;
     double range;  ///< the field accepts ±range; the validator says what is allowed within it
     int decimals;
@@ -104,16 +106,31 @@ struct FormUnit {
 
 FormUnit form_unit(Quantity quantity)
 {
+    const DisplayUnits* units = DisplayUnits::instance();
+    auto text = [](const char* unit) { return QCoreApplication::translate("mcdda::gui::form", unit); };
     switch (quantity) {
-    case Quantity::Ratio: return {"", 1.0, 10.0, 4};
-    case Quantity::Modulus: return {QT_TRANSLATE_NOOP("mcdda::gui::form", "MPa"), 1e6, 1e9, 3};
-    case Quantity::Stress: return {QT_TRANSLATE_NOOP("mcdda::gui::form", "kPa"), 1e3, 1e9, 3};
-    case Quantity::Density: return {QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m³"), 1e3 / standard_gravity, 1e4, 3};
-    case Quantity::Angle: return {QT_TRANSLATE_NOOP("mcdda::gui::form", "°"), degree, 360.0, 3};
-    case Quantity::Stiffness: return {QT_TRANSLATE_NOOP("mcdda::gui::form", "MN/m"), 1e6, 1e9, 3};
-    case Quantity::Force: return {QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m"), 1e3, 1e9, 3};
+    case Quantity::Ratio: return {QString(), 1.0, 10.0, 4};
+    case Quantity::Modulus:
+        return {units->formModulusUnit(), units->formModulusFactor(), 1e15 / units->formModulusFactor(), 3};
+    case Quantity::Stress: {
+        const double factor = units->formStressFactor();
+        return {units->formStressUnit(), factor, 1e12 / factor, factor > 1e3 ? 6 : 3};  // 1 kPa steps in MPa too
     }
-    return {"", 1.0, 1e9, 3};
+    case Quantity::Density: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m³")), 1e3 / standard_gravity, 1e4, 3};
+    case Quantity::Angle: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "°")), degree, 360.0, 3};
+    case Quantity::Stiffness: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "MN/m")), 1e6, 1e9, 3};
+    case Quantity::Force: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m")), 1e3, 1e9, 3};
+    }
+    return {QString(), 1.0, 1e9, 3};
+}
+
+/// Gives `box` the unit, decimals and range of `u` (the unit may have changed since).
+void set_unit(QDoubleSpinBox* box, const FormUnit& u)
+{
+    box->setSuffix(u.unit.isEmpty() ? QString() : QLatin1Char(' ') + u.unit);
+    box->setDecimals(u.decimals);
+    box->setMaximum(u.range);
+    if (box->minimum() != 0.0) box->setMinimum(-u.range);  // "0 = automatic" fields stay at 0
 }
 
 }  // namespace
@@ -121,11 +138,10 @@ FormUnit form_unit(Quantity quantity)
 QDoubleSpinBox* declared_number(const NumberField& field, const QString& prefix, QFormLayout* form, QWidget* parent)
 {
     const FormUnit u = form_unit(field.quantity);
-    const QString unit = *u.unit ? QCoreApplication::translate("mcdda::gui::form", u.unit) : QString();
-    QDoubleSpinBox* box = number(prefix + QString::fromLatin1(field.key), unit, -u.range, u.range, u.decimals, parent);
+    QDoubleSpinBox* box = number(prefix + QString::fromLatin1(field.key), u.unit, -u.range, u.range, u.decimals, parent);
     if (field.quantity == Quantity::Ratio) box->setSingleStep(0.01);
     QString label = QCoreApplication::translate("ModelFields", field.label);
-    if (unit.isEmpty()) label += QStringLiteral(" [–]");
+    if (u.unit.isEmpty()) label += QStringLiteral(" [–]");
     form->addRow(label, box);
     explain(box, QCoreApplication::translate("ModelFields", field.help));
     if (field.zero_means && field.lower && field.lower->value == 0.0 && field.lower->inclusive) {
@@ -139,12 +155,26 @@ double form_unit_factor(Quantity quantity) { return form_unit(quantity).factor; 
 
 void display_declared(QDoubleSpinBox* box, const NumberField& field, double model_value)
 {
-    display(box, model_value / form_unit(field.quantity).factor);
+    const FormUnit u = form_unit(field.quantity);
+    set_unit(box, u);
+    display(box, model_value / u.factor);
 }
 
 double declared_value(const QDoubleSpinBox* box, const NumberField& field, double original)
 {
     return si(box, original, form_unit(field.quantity).factor);
+}
+
+void display_stress(QDoubleSpinBox* box, double pascal)
+{
+    const FormUnit u = form_unit(Quantity::Stress);
+    set_unit(box, u);
+    display(box, pascal / u.factor);
+}
+
+double stress_value(const QDoubleSpinBox* box, double original, double sign)
+{
+    return si(box, original, sign * form_unit(Quantity::Stress).factor);
 }
 
 }  // namespace mcdda::gui::form

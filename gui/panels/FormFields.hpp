@@ -31,6 +31,13 @@ void display(QDoubleSpinBox* box, double value);
 /// The field's value converted to SI by `factor`, or `original` when the field is untouched.
 double si(const QDoubleSpinBox* box, double original, double factor);
 
+/// A stress field in the stress unit chosen (Results ▸ Units: kPa, or MPa): shows `pascal`
+/// (already signed as the form shows it) and sets the field's unit.
+void display_stress(QDoubleSpinBox* box, double pascal);
+/// The stress field's value in Pa times `sign` (−1: the form shows compression positive), or
+/// `original` when untouched.
+double stress_value(const QDoubleSpinBox* box, double original, double sign = 1.0);
+
 /// Says what a field means, in its tooltip and in Help ▸ What's This (Shift+F1).
 void explain(QWidget* field, const QString& text);
 

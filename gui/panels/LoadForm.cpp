@@ -4,6 +4,7 @@
 #include "document/ModelDocument.hpp"
 #include "panels/FormFields.hpp"
 #include "panels/PropertyEditor.hpp"
+#include "session/DisplayUnits.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -63,6 +64,7 @@ LoadForm::LoadForm(ModelDocument* document, QWidget* parent) : QWidget(parent), 
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(scroll);
     connect(document_, &ModelDocument::changed, this, &LoadForm::refresh);
+    connect(DisplayUnits::instance(), &DisplayUnits::changed, this, &LoadForm::refresh);
     refresh();
 }
 
@@ -295,7 +297,7 @@ void LoadForm::loadLoad()
         const EdgePressure& p = m.edge_pressures[static_cast<std::size_t>(e - points)];
         display(ld_fx_, 0.0);
         display(ld_fy_, 0.0);
-        display(ld_pressure_, p.pressure / 1e3);
+        form::display_stress(ld_pressure_, p.pressure);
         table = p.table;
     }
     ld_table_->setCurrentIndex(ld_table_->findData(table));
@@ -477,7 +479,7 @@ bool LoadForm::applyLoad()
         const auto k = static_cast<std::size_t>(e - points);
         const EdgePressure& old = m.edge_pressures[k];
         EdgePressure x = old;
-        x.pressure = si(ld_pressure_, old.pressure, 1e3);
+        x.pressure = form::stress_value(ld_pressure_, old.pressure);
         if (chosen.isValid()) x.table = chosen.toInt();
         if (x.pressure == old.pressure && x.table == old.table) return true;
         candidate.edge_pressures[k] = x;

@@ -6,6 +6,7 @@
 #include "panels/FormFields.hpp"
 #include "panels/LoadForm.hpp"
 #include "panels/MeshForm.hpp"
+#include "session/DisplayUnits.hpp"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -95,6 +96,7 @@ PropertyEditor::PropertyEditor(ModelDocument* document, QWidget* parent) : QWidg
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(tabs_);
     connect(document_, &ModelDocument::changed, this, &PropertyEditor::refresh);
+    connect(DisplayUnits::instance(), &DisplayUnits::changed, this, &PropertyEditor::refresh);
     refresh();
 }
 
@@ -383,11 +385,11 @@ void PropertyEditor::loadInitialStress()
     const InitialStress& s = document_->model().initial_stress;
     loading_ = true;
     is_kind_->setCurrentIndex(is_kind_->findData(static_cast<int>(s.kind)));
-    display(is_sxx_, -s.stress[0] / 1e3);  // shown compression positive
-    display(is_syy_, -s.stress[1] / 1e3);
-    display(is_sxy_, -s.stress[2] / 1e3);
+    form::display_stress(is_sxx_, -s.stress[0]);  // shown compression positive
+    form::display_stress(is_syy_, -s.stress[1]);
+    form::display_stress(is_sxy_, -s.stress[2]);
     is_szz_given_->setChecked(s.stress_zz.has_value());
-    display(is_szz_, s.stress_zz ? -*s.stress_zz / 1e3 : 0.0);
+    form::display_stress(is_szz_, s.stress_zz ? -*s.stress_zz : 0.0);
     display(is_surface_, s.surface_y);
     display(is_k0_, s.k0);
     updateStressFields();
@@ -586,9 +588,10 @@ bool PropertyEditor::applyInitialStress()
     const InitialStress& old = m.initial_stress;
     InitialStress s = old;
     s.kind = static_cast<InitialStress::Kind>(is_kind_->currentData().toInt());
-    s.stress = {si(is_sxx_, old.stress[0], -1e3), si(is_syy_, old.stress[1], -1e3), si(is_sxy_, old.stress[2], -1e3)};
+    s.stress = {form::stress_value(is_sxx_, old.stress[0], -1.0), form::stress_value(is_syy_, old.stress[1], -1.0),
+                form::stress_value(is_sxy_, old.stress[2], -1.0)};
     if (is_szz_given_->isChecked())
-        s.stress_zz = si(is_szz_, old.stress_zz.value_or(0.0), -1e3);
+        s.stress_zz = form::stress_value(is_szz_, old.stress_zz.value_or(0.0), -1.0);
     else
         s.stress_zz.reset();
     s.surface_y = si(is_surface_, old.surface_y, 1.0);

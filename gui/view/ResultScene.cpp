@@ -294,6 +294,7 @@ Result snapshot_result(const Preprocessed& model, const ResultSnapshot& s, const
     Result r = check_result(grid, model, "of step " + std::to_string(s.step), field, options);
     r.step = s.step;
     r.time = s.time;
+    r.stage = s.stage;
     return r;
 }
 

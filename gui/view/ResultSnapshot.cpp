@@ -11,6 +11,7 @@ ResultSnapshot ResultSnapshot::of(const Simulation& simulation)
     r.step = s.step;
     r.total_steps = simulation.planned_steps();
     r.time = s.time;
+    r.stage = s.stage + 1;
     r.displacement.assign(s.displacement.data(), s.displacement.data() + s.displacement.size());
     r.stress.reserve(s.stress.size());
     for (std::size_t e = 0; e < s.stress.size(); ++e)

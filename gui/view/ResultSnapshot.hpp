@@ -15,6 +15,7 @@ struct ResultSnapshot {
     int step = 0;         ///< accepted steps so far
     int total_steps = 0;  ///< steps the analysis asks for
     double time = 0.0;    ///< s
+    int stage = 1;        ///< construction stage of the last step, 1-based as in the result files
     std::vector<double> displacement;         ///< m, 2 per node (ux, uy), since the start
     std::vector<std::array<double, 4>> stress;  ///< Pa, per element (xx, yy, zz, xy), tension positive
     std::vector<double> plastic_strain;       ///< per element, accumulated equivalent

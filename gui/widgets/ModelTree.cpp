@@ -1,5 +1,7 @@
 #include "widgets/ModelTree.hpp"
 
+#include "session/DisplayUnits.hpp"
+
 #include <QCoreApplication>
 #include <QHeaderView>
 #include <QLocale>
@@ -21,11 +23,18 @@ QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 
 QString point_text(const Point2& p) { return QStringLiteral("(%1, %2)").arg(p.x, 0, 'g', 6).arg(p.y, 0, 'g', 6); }
 
-/// A pressure as the forms and the legend give it: kPa, or MPa from 1 MPa on (not "1e+07 Pa").
+constexpr int pressure_role = Qt::UserRole + 3;  ///< an edge pressure's value (Pa), for a change of units
+
+/// A pressure in the stress unit chosen (Results ▸ Units): kPa or MPa, and automatically MPa from
+/// 1 MPa on (not "1e+07 Pa").
 QString pressure_text(double pa)
 {
-    return std::abs(pa) >= 1e6 ? QCoreApplication::translate("mcdda::gui::ModelTree", "pressure %1 MPa").arg(QLocale().toString(pa / 1e6, 'g', 6))
-                               : QCoreApplication::translate("mcdda::gui::ModelTree", "pressure %1 kPa").arg(QLocale().toString(pa / 1e3, 'g', 6));
+    const view::StressUnit unit = DisplayUnits::instance()->stress();
+    const bool mpa = unit == view::StressUnit::MPa || (unit == view::StressUnit::Automatic && std::abs(pa) >= 1e6);
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);  // as the forms write numbers
+    return mpa ? QCoreApplication::translate("mcdda::gui::ModelTree", "pressure %1 MPa").arg(locale.toString(pa / 1e6, 'g', 6))
+               : QCoreApplication::translate("mcdda::gui::ModelTree", "pressure %1 kPa").arg(locale.toString(pa / 1e3, 'g', 6));
 }
 
 QString name_or(const std::string& name, const QString& fallback) { return name.empty() ? fallback : to_qt(name); }
@@ -66,6 +75,10 @@ ModelTree::ModelTree(QWidget* parent) : QTreeWidget(parent)
     });
     connect(this, &QTreeWidget::itemCollapsed, this, [this](QTreeWidgetItem* item) {
         if (!quiet_ && item == blocks_) blocks_expanded_ = false;
+    });
+    connect(DisplayUnits::instance(), &DisplayUnits::changed, this, [this] {
+        for (QTreeWidgetItemIterator it(this); *it; ++it)
+            if (const QVariant pa = (*it)->data(1, pressure_role); pa.isValid()) (*it)->setText(1, pressure_text(pa.toDouble()));
     });
 }
 
@@ -151,7 +164,8 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
             {Kind::PointLoad, static_cast<int>(i)});
     for (std::size_t i = 0; i < m.edge_pressures.size(); ++i)
         row(loads, to_qt(m.edge_pressures[i].name), pressure_text(m.edge_pressures[i].pressure),
-            {Kind::EdgePressure, static_cast<int>(i)});
+            {Kind::EdgePressure, static_cast<int>(i)})
+            ->setData(1, pressure_role, m.edge_pressures[i].pressure);
     QTreeWidgetItem* points = group(tr("Measurement points"), m.measurement_points.size());
     for (std::size_t i = 0; i < m.measurement_points.size(); ++i)
         row(points, to_qt(m.measurement_points[i].name), point_text(m.measurement_points[i].point),

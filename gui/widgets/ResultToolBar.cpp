@@ -1,9 +1,10 @@
 #include "widgets/ResultToolBar.hpp"
 
+#include "session/DisplayUnits.hpp"
+
 #include <QActionGroup>
 #include <QComboBox>
 #include <QMenu>
-#include <QSettings>
 #include <QToolButton>
 #include <QDoubleSpinBox>
 #include <QDoubleValidator>
@@ -115,16 +116,14 @@ ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
     choice(length_units_, tr("mm"), QStringLiteral("lengthUnitMm"), int(view::LengthUnit::Millimetre));
     units->setMenu(menu);
     addWidget(units);
-    const QSettings settings;
-    setUnits(static_cast<view::StressUnit>(settings.value(QStringLiteral("units/stress"), 0).toInt()),
-             static_cast<view::LengthUnit>(settings.value(QStringLiteral("units/length"), 0).toInt()));
+    // One choice for the whole program (legend, read-outs, forms, tree), kept between sessions.
+    DisplayUnits* chosen = DisplayUnits::instance();
+    setUnits(chosen->stress(), chosen->length());
     for (QActionGroup* group : {stress_units_, length_units_})
-        connect(group, &QActionGroup::triggered, this, [this] {
-            QSettings settings;
-            settings.setValue(QStringLiteral("units/stress"), int(stressUnit()));
-            settings.setValue(QStringLiteral("units/length"), int(lengthUnit()));
-            emit optionsChanged();
-        });
+        connect(group, &QActionGroup::triggered, this, [this] { DisplayUnits::instance()->set(stressUnit(), lengthUnit()); });
+    connect(chosen, &DisplayUnits::changed, this, [this] {
+        setUnits(DisplayUnits::instance()->stress(), DisplayUnits::instance()->length());
+    });
 
     addSeparator();
     map_box_ = new QComboBox(this);
@@ -179,6 +178,7 @@ void ResultToolBar::setUnits(view::StressUnit stress, view::LengthUnit length)
 {
     for (auto [group, value] : {std::pair{stress_units_, int(stress)}, std::pair{length_units_, int(length)}})
         for (QAction* a : group->actions()) a->setChecked(a->data().toInt() == value);
+    DisplayUnits::instance()->set(stress, length);  // nothing when it is the choice already
     emit optionsChanged();
 }
 

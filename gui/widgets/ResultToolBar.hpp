@@ -35,8 +35,8 @@ public:
     /// The automatic scale: the largest displacement drawn as 5 % of the model's size.
     bool deformAuto() const;
     void setDeformAuto(bool on);
-    /// The units of stresses and displacements in legend, read-out and query lines; kept in the
-    /// program's settings between sessions.
+    /// The units of stresses and displacements in legend, read-out and query lines, and of
+    /// stresses in the forms and the tree: the program's one choice (DisplayUnits).
     void setUnits(view::StressUnit stress, view::LengthUnit length);
     view::StressUnit stressUnit() const;
     view::LengthUnit lengthUnit() const;

@@ -61,6 +61,7 @@ private slots:
     void newModelTalksOfRegionsAndFitsTheFirst();
     void stageListShowsAndEditsStages();
     void boltToolDrawsABolt();
+    void tinyBlocksAreReported();
 };
 
 void EditingTest::initTestCase()
@@ -649,6 +650,34 @@ void EditingTest::boltToolDrawsABolt()
     QVERIFY(doc->model().bolts.empty());
     QTRY_VERIFY(guitest::settled(window));
     QCOMPARE(guitest::count_around(*window.modelView(), 5.0, 5.0, view::palette::bolt, 3), 0);
+}
+
+// Issue 13, item 4: a joint set whose trace passes a hair's breadth from a corner (as with the old
+// default origin on the model corner) cuts no sliver block: the cutter snaps it onto the corner.
+// Where a sliver cannot be avoided — a region drawn with a vertex 1e-8 m from an edge — the
+// Messages dock says so, naming the block, its region and the place.
+void EditingTest::tinyBlocksAreReported()
+{
+    MainWindow window;
+    QVERIFY(guitest::show_square(window));
+    QTRY_VERIFY(guitest::settled(window));
+    gui::ModelDocument* doc = window.document();
+    JointSet set;
+    set.name = "diagonal";
+    set.angle = std::atan(1.0);  // 45°
+    set.spacing = 2.0;
+    set.origin = {1e-9, 0.0};  // a trace 0.7 nm from the corner (0, 0)
+    doc->addJointSet(set);
+    QTRY_VERIFY2(guitest::settled(window), qPrintable(window.messages()));
+    const auto& blocks = window.modelView()->scene()->blocks;
+    QVERIFY(blocks.size() >= 8);
+    for (const Block& b : blocks) QVERIFY2(b.area > 1e-3, qPrintable(QString::number(b.area)));
+    QVERIFY2(!window.messages().contains(QStringLiteral("cannot be meshed")), qPrintable(window.messages()));
+
+    doc->addRegion({{20, 0}, {30, 0}, {30, 10}, {25, 1e-8}, {20, 10}}, 0);  // a spike down to 1e-8 m above the base
+    QTRY_VERIFY(!window.isPreprocessing() && window.messages().contains(QStringLiteral("cannot be meshed")));
+    const QString text = window.messages();
+    QVERIFY2(text.contains(QStringLiteral("block")) && text.contains(QStringLiteral("near (25")), qPrintable(text));
 }
 
 QTEST_MAIN(EditingTest)

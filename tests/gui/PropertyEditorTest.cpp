@@ -8,6 +8,8 @@
 #include "model/ModelFields.hpp"
 #include "panels/BoltForm.hpp"
 #include "panels/PropertyEditor.hpp"
+#include "session/DisplayUnits.hpp"
+#include "widgets/ModelTree.hpp"
 #include "view/Palette.hpp"
 #include "widgets/ModelView.hpp"
 
@@ -22,6 +24,7 @@
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTimer>
+#include <QTreeWidgetItemIterator>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -49,11 +52,13 @@ private slots:
     void everyFieldExplainsItself();
     void formsFollowTheFieldDeclarations();
     void boltFormEditsBolts();
+    void unitsChosenReachFormsAndTree();
 };
 
 void PropertyEditorTest::initTestCase()
 {
     QStandardPaths::setTestModeEnabled(true);
+    gui::DisplayUnits::instance()->set(view::StressUnit::Automatic, view::LengthUnit::Metre);  // whatever a run left
     if (QGuiApplication::platformName() != QLatin1String("xcb"))
         QSKIP("the VTK view needs the xcb platform (run under xvfb-run)");
 }
@@ -407,6 +412,56 @@ void PropertyEditorTest::boltFormEditsBolts()
     undo->undo();
     QCOMPARE(window.document()->model().bolts[2].strength, 160e3);
     QCOMPARE(window.document()->model().bolts[2].name, std::string("roof bolt 3"));
+}
+
+// Issue 13, item 7: the units chosen in the Results toolbar (Units ▸ MPa / kPa) reach the forms
+// (moduli, strengths, in-situ stresses, pressures) and the Model tree; values typed in them mean
+// the unit shown.
+void PropertyEditorTest::unitsChosenReachFormsAndTree()
+{
+    MainWindow window;
+    window.resize(1100, 750);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
+    QTRY_VERIFY(settled(window));
+    PropertyEditor* editor = window.propertyEditor();
+    const Material rock = window.document()->model().materials[0];
+    auto* cohesion = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_cohesion"));
+    auto* modulus = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_young_modulus"));
+    auto* pressure = editor->findChild<QDoubleSpinBox*>(QStringLiteral("loadPressure"));
+    QVERIFY(cohesion && modulus && pressure);
+    auto pressure_row = [&](const QString& unit) {
+        for (QTreeWidgetItemIterator it(window.modelTree()); *it; ++it)
+            if ((*it)->text(1).startsWith(QStringLiteral("pressure ")) && (*it)->text(1).endsWith(unit)) return (*it)->text(1);
+        return QString();
+    };
+    auto* mpa = window.findChild<QAction*>(QStringLiteral("stressUnitMPa"));
+    auto* kpa = window.findChild<QAction*>(QStringLiteral("stressUnitKPa"));
+    QVERIFY(mpa && kpa);
+
+    mpa->trigger();
+    QVERIFY2(cohesion->suffix().contains(QStringLiteral("MPa")), qPrintable(cohesion->suffix()));
+    QCOMPARE(cohesion->value(), rock.cohesion / 1e6);
+    QVERIFY(modulus->suffix().contains(QStringLiteral("MPa")));
+    QVERIFY(editor->findChild<QDoubleSpinBox*>(QStringLiteral("stressXX"))->suffix().contains(QStringLiteral("MPa")));
+    QVERIFY(pressure->suffix().contains(QStringLiteral("MPa")));
+    QCOMPARE(pressure_row(QStringLiteral("MPa")), QStringLiteral("pressure 2 MPa"));
+    cohesion->setValue(0.25);  // MPa
+    QVERIFY(editor->applyMaterial());
+    QCOMPARE(window.document()->model().materials[0].cohesion, 0.25e6);
+
+    kpa->trigger();
+    QVERIFY(cohesion->suffix().contains(QStringLiteral("kPa")));
+    QCOMPARE(cohesion->value(), 250.0);
+    QVERIFY(modulus->suffix().contains(QStringLiteral("kPa")));
+    QCOMPARE(modulus->value(), rock.young_modulus / 1e3);
+    QCOMPARE(pressure_row(QStringLiteral("kPa")), QStringLiteral("pressure 2000 kPa"));
+    QCOMPARE(gui::DisplayUnits::instance()->stress(), view::StressUnit::KPa);
+
+    window.findChild<QAction*>(QStringLiteral("stressUnitAuto"))->trigger();  // as it was
+    QVERIFY(modulus->suffix().contains(QStringLiteral("MPa")));
+    QVERIFY(cohesion->suffix().contains(QStringLiteral("kPa")));
 }
 
 QTEST_MAIN(PropertyEditorTest)

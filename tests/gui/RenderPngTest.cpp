@@ -727,3 +727,30 @@ TEST_F(RenderPng, ResultStressSignConvention)
     EXPECT_GT(s1_c, 0.0);  // both principal stresses are compressive here
 }
 
+
+// Issue 13: the live picture of a staged run names the stage as the saved steps' pictures do
+// (the snapshot carries it).
+TEST_F(RenderPng, LiveResultTitleNamesTheStage)
+{
+    Model m = tunnel_model();
+    Stage in_situ;
+    in_situ.name = "in situ";
+    in_situ.analysis = m.analysis;
+    Stage dig = in_situ;
+    dig.name = "excavation";
+    m.stages = {in_situ, dig};
+    const Preprocessed p = preprocess_model(m);
+    ASSERT_TRUE(p.ok);
+    ResultSnapshot s;
+    s.step = 7;
+    s.total_steps = 10;
+    s.time = 7.0;
+    s.stage = 2;
+    s.displacement.assign(2 * p.mesh.nodes.size(), 0.0);
+    view::ResultOptions options;
+    options.field = "displacement";
+    view::ResultInfo info;
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, s, options, nullptr, &info); });
+    EXPECT_NE(info.title.find("step 7"), std::string::npos) << info.title;
+    EXPECT_NE(info.title.find("stage \"excavation\""), std::string::npos) << info.title;
+}

@@ -3,6 +3,7 @@
 // display: QCoreApplication.
 
 #include "model/Defaults.hpp"
+#include "session/DisplayUnits.hpp"
 #include "session/PreprocessScheduler.hpp"
 #include "session/RunMessages.hpp"
 #include "session/RunSession.hpp"
@@ -11,7 +12,9 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -49,6 +52,7 @@ private slots:
     void readFileReportsProblemsAsDiagnostics();
     void messagesSayHowTheRunEnded();
     void newModelDefaults();
+    void unitChoiceIsSharedAndKept();
 };
 
 void SessionTest::resultsFolderFollowsTheModelFile()
@@ -269,6 +273,31 @@ void SessionTest::newModelDefaults()
     QCOMPARE(m.analysis.kind, AnalysisSettings::Kind::Static);
     QCOMPARE(m.analysis.steps, 20);
     QCOMPARE(m.analysis.time_step, 1.0);  // load steps counted in seconds, not 0.01 s
+}
+
+// Issue 13, item 7: one choice of units for the whole program: stored in the settings, told to
+// everyone once when it changes, and giving the forms their stress and modulus units.
+void SessionTest::unitChoiceIsSharedAndKept()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    gui::DisplayUnits* units = gui::DisplayUnits::instance();
+    units->set(view::StressUnit::Automatic, view::LengthUnit::Metre);
+    QSignalSpy changed(units, &gui::DisplayUnits::changed);
+    QCOMPARE(units->formStressUnit(), QStringLiteral("kPa"));   // automatic: strengths in kPa,
+    QCOMPARE(units->formModulusUnit(), QStringLiteral("MPa"));  // moduli in MPa
+    units->set(view::StressUnit::MPa, view::LengthUnit::Millimetre);
+    QCOMPARE(changed.count(), 1);
+    units->set(view::StressUnit::MPa, view::LengthUnit::Millimetre);
+    QCOMPARE(changed.count(), 1);  // no change, no news
+    QCOMPARE(units->formStressUnit(), QStringLiteral("MPa"));
+    QCOMPARE(units->formStressFactor(), 1e6);
+    QCOMPARE(QSettings().value(QStringLiteral("units/stress")).toInt(), int(view::StressUnit::MPa));
+    QCOMPARE(QSettings().value(QStringLiteral("units/length")).toInt(), int(view::LengthUnit::Millimetre));
+    units->set(view::StressUnit::KPa, view::LengthUnit::Metre);
+    QCOMPARE(units->formModulusUnit(), QStringLiteral("kPa"));
+    QCOMPARE(units->formModulusFactor(), 1e3);
+    units->set(view::StressUnit::Automatic, view::LengthUnit::Metre);
+    QCOMPARE(changed.count(), 3);
 }
 
 QTEST_GUILESS_MAIN(SessionTest)
