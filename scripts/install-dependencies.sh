@@ -17,6 +17,8 @@ packages=(
   # Qt's own German texts: Strg/Entf in shortcuts, Abbrechen on dialog buttons.
   qt6-translations-l10n
   libvtk9-dev
+  # The Python module (pybind11, NumPy; tests with unittest) and DXF import (dxflib).
+  python3-dev pybind11-dev python3-numpy libdxflib-dev
   xvfb xauth mesa-utils libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
 )
 

@@ -18,6 +18,8 @@ Usage:
                [--range MIN:MAX] [--title TEXT] [--no-axes]
                [--size WxH] [--set POINTER=VALUE]...
   mcdda run    MODEL --out DIR [--profile] [--quiet] [--threads N] [--set POINTER=VALUE]...
+  mcdda study  STUDY.json --out DIR [--quiet] [--threads N]
+  mpirun -n N mcdda study STUDY.json --out DIR
   mcdda --help | --version
 
 Commands:
@@ -31,6 +33,10 @@ Commands:
   run      run the analysis: DIR/<model>.pvd with one .vtu per saved step
            (displacement, velocity, stress, block, material), DIR/history.csv and
            DIR/summary.json (status, timing); Ctrl-C stops after the current step
+  study    run a parameter study (docs/study.md): every run of STUDY.json in
+           DIR/runs/run_NNNN, one row each in DIR/study.csv; under mpirun the runs are
+           spread over the ranks; a rerun skips the runs that have their result;
+           exit status 4 when a run failed
 
 Options:
   --set POINTER=VALUE  override any field of the model by JSON pointer before it is
@@ -73,7 +79,7 @@ output, 4 the run failed, 5 the model collapsed, 130 cancelled.
 
 std::optional<Request> parse_command_line(const std::vector<std::string>& args, std::string& error) {
     Request r;
-    static const std::set<std::string> commands{"check", "mesh", "render", "run"};
+    static const std::set<std::string> commands{"check", "mesh", "render", "run", "study"};
     std::vector<std::string> positional;
     bool field_given = false, deform_given = false, result_option = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -236,7 +242,7 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
         return std::nullopt;
     }
     r.model = positional[1];
-    if ((r.command == "mesh" || r.command == "render" || r.command == "run") && r.out.empty()) {
+    if ((r.command == "mesh" || r.command == "render" || r.command == "run" || r.command == "study") && r.out.empty()) {
         error = r.command + ": --out is required";
         return std::nullopt;
     }

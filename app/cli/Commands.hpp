@@ -14,5 +14,6 @@ int run_check(const Request& r);
 int run_mesh(const Request& r);
 int run_render(const Request& r);
 int run_run(const Request& r);
+int run_study(const Request& r);
 
 }  // namespace mcdda::cli

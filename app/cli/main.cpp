@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
         if (request->command == "check") return run_check(*request);
         if (request->command == "mesh") return run_mesh(*request);
         if (request->command == "run") return run_run(*request);
+        if (request->command == "study") return run_study(*request);
         if (request->command == "render") {
             if (!ensure_display(args, error)) {
                 std::cerr << "mcdda render: " << error << "\n";

@@ -2,7 +2,7 @@
 
 #include <QFileInfo>
 
-#include "document/Commands.hpp"
+#include "document/EditCommands.hpp"
 #include "geometry/PolygonChecks.hpp"
 #include "io/ModelReader.hpp"
 #include "io/ModelWriter.hpp"

@@ -1,6 +1,6 @@
 #include "panels/LoadForm.hpp"
 
-#include "document/Commands.hpp"
+#include "document/EditCommands.hpp"
 #include "document/ModelDocument.hpp"
 #include "panels/FormFields.hpp"
 #include "panels/PropertyEditor.hpp"

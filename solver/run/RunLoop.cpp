@@ -37,7 +37,8 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
                    "collapse: " + std::string(e.what()) +
                        (carried.empty() ? std::string()
                                         : "; collapse load between " + carried + " (carried) and " + not_carried +
-                                              " (not carried)")};
+                                              " (not carried)"),
+                   e.carried, e.not_carried};
             if (output && simulation.state().step_fraction > 0.0) output->record_history(simulation);
             break;
         } catch (const std::exception& e) {

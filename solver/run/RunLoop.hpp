@@ -14,6 +14,8 @@ namespace mcdda {
 struct RunEnd {
     RunStatus status = RunStatus::Completed;
     std::string message;  ///< "completed", or why the run stopped
+    /// Collapsed: the load position (steps, fractional) last carried and the first not carried.
+    double collapse_carried = 0.0, collapse_not_carried = 0.0;
 };
 
 /// Runs `simulation` to its last step: records every step and saves every output_every-th and the

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -307,6 +308,21 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
             j["collapse"] = {{"carried", loads_at(sim->collapse()->carried)},
                              {"not_carried", loads_at(sim->collapse()->not_carried)}};
         }
+        // What a parameter study compares between runs (docs/study.md).
+        double plastic_area = 0.0, largest = 0.0;
+        const Mesh& mesh = sim->mesh();
+        const std::vector<unsigned char>& plastic = sim->state().plastic_state;
+        for (std::size_t e = 0; e < mesh.triangles.size() && e < plastic.size(); ++e) {
+            if (plastic[e] == 0) continue;
+            const auto& t = mesh.triangles[e];
+            const Point2 &a = mesh.nodes[static_cast<std::size_t>(t[0])], &b = mesh.nodes[static_cast<std::size_t>(t[1])],
+                         &c = mesh.nodes[static_cast<std::size_t>(t[2])];
+            plastic_area += 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+        }
+        const Eigen::VectorXd& u = sim->state().displacement;
+        for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
+        j["plastic_area"] = plastic_area;  // m², elements that have yielded at some time
+        j["max_displacement"] = largest;   // m
         j["element"] = sim->mesh().quadratic() ? "t6" : "t3";
         j["model"] = {{"name", sim->model().name}, {"nodes", sim->mesh().nodes.size()},
                       {"elements", sim->mesh().triangles.size()}, {"blocks", sim->mesh().block_count()}};

@@ -1,7 +1,7 @@
 // The model document: undoable edits, the modified flag, save and reopen. No display needed.
 
 #include "ModelCompare.hpp"
-#include "document/Commands.hpp"
+#include "document/EditCommands.hpp"
 #include "document/ModelDocument.hpp"
 #include "io/ModelReader.hpp"
 

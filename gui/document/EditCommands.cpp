@@ -1,4 +1,4 @@
-#include "document/Commands.hpp"
+#include "document/EditCommands.hpp"
 
 #include "document/ModelDocument.hpp"
 

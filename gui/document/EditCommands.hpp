@@ -1,5 +1,5 @@
 #pragma once
-/// \file Commands.hpp
+/// \file EditCommands.hpp
 /// Undoable edits of a ModelDocument. Each command stores what it needs to restore the model
 /// exactly; redo() and undo() emit the document's changed().
 

@@ -1,0 +1,158 @@
+"""The Python module `mcdda` (docs/python.md): models from files and dicts, overrides, checks,
+mesh and fields as NumPy arrays, runs with progress, stopping, errors and the GIL released."""
+
+import os
+import threading
+import time
+import unittest
+
+import numpy as np
+
+import mcdda
+
+EXAMPLES = os.environ.get("MCDDA_EXAMPLES_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "examples"))
+INCLINE = os.path.join(EXAMPLES, "incline-stable.json")
+STATIC = ["/analysis/type=\"static\"", "/analysis/time_step=1"]
+
+
+def square_block():
+    """A 10 m square of rock on rollers, as a dict laid out like the model file."""
+    return {
+        "format": "mcdda-model", "version": 1,
+        "materials": [{"name": "rock", "young_modulus": 1e9, "poisson_ratio": 0.25,
+                       "unit_weight": 25e3, "cohesion": 1e6, "friction_angle": 35}],
+        "regions": [{"name": "block", "material": "rock",
+                     "boundary": [[0, 0], [10, 0], [10, 10], [0, 10]]}],
+        "rollers": [{"name": "base", "from": [0, 0], "to": [10, 0], "fixed": "y"},
+                    {"name": "side", "from": [0, 0], "to": [0, 10], "fixed": "x"}],
+        "mesh": {"size": 2.0},
+        "analysis": {"type": "static", "steps": 2, "time_step": 1},
+    }
+
+
+class ModelTest(unittest.TestCase):
+    def test_version(self):
+        self.assertRegex(mcdda.__version__, r"^\d+\.\d+\.\d+$")
+
+    def test_dict_model_meshes_into_arrays(self):
+        a = mcdda.Analysis.from_dict(square_block())
+        self.assertEqual([d for d in a.mesh() if d["severity"] == "error"], [])
+        self.assertTrue(a.ok)
+        m = a.mesh_arrays()
+        self.assertEqual(m["nodes"].shape[1], 2)
+        self.assertEqual(m["triangles"].shape[1], 3)
+        self.assertEqual(m["triangles"].dtype, np.int32)
+        self.assertAlmostEqual(float(m["area"].sum()), 100.0, places=9)
+        self.assertTrue((m["area"] > 0).all())
+        self.assertLess(int(m["triangles"].max()), m["nodes"].shape[0])
+
+    def test_overrides_by_dict_and_by_list(self):
+        a = mcdda.Analysis.from_file(INCLINE)
+        a.set({"/materials/0/cohesion": 2e5, "/analysis/steps": 7})
+        a.set(["/joint_materials/0/friction_angle=33"])
+        model = a.to_dict()
+        self.assertEqual(model["materials"][0]["cohesion"], 2e5)
+        self.assertEqual(model["analysis"]["steps"], 7)
+        self.assertEqual(model["joint_materials"][0]["friction_angle"], 33)
+
+    def test_bad_input_names_the_place(self):
+        with self.assertRaises(mcdda.ModelError) as caught:
+            mcdda.Analysis.from_dict({"format": "mcdda-model", "version": 1, "materials": []})
+        self.assertIn("/materials", str(caught.exception))
+        a = mcdda.Analysis.from_dict(square_block())
+        with self.assertRaises(mcdda.ModelError):
+            a.set({"/materials/0/cohesion": "strong"})
+        self.assertEqual(a.to_dict()["materials"][0]["cohesion"], 1e6)  # unchanged
+        a.set({"/materials/0/poisson_ratio": 0.5})
+        errors = [d for d in a.check() if d["severity"] == "error"]
+        self.assertTrue(any(d["path"] == "/materials/0/poisson_ratio" for d in errors), errors)
+        self.assertFalse(a.ok)
+        with self.assertRaises(mcdda.ModelError):
+            a.run()
+        with self.assertRaises(mcdda.ModelError):
+            mcdda.Analysis.from_file("/nonexistent/model.json")
+
+
+class RunTest(unittest.TestCase):
+    def test_run_gives_history_and_fields(self):
+        a = mcdda.Analysis.from_file(INCLINE, STATIC + ["/analysis/steps=4", "/analysis/output_every=2"])
+        heard = []
+        r = a.run(progress=lambda p: heard.append(p["step"]))
+        self.assertEqual(r["status"], "completed", r["message"])
+        self.assertEqual(r["exit_code"], 0)
+        self.assertEqual(heard, [1, 2, 3, 4])
+        np.testing.assert_array_equal(r["history"]["step"], [1, 2, 3, 4])
+        self.assertEqual([f["step"] for f in r["fields"]], [2, 4])
+        m = a.mesh_arrays()
+        last = r["fields"][-1]
+        self.assertEqual(last["displacement"].shape, m["nodes"].shape)
+        self.assertEqual(last["stress"].shape, (m["triangles"].shape[0], 4))
+        largest = np.hypot(last["displacement"][:, 0], last["displacement"][:, 1]).max()
+        self.assertAlmostEqual(largest, r["history"]["max_displacement"][-1], places=15)
+
+    def test_progress_returning_false_stops(self):
+        a = mcdda.Analysis.from_file(INCLINE, ["/analysis/steps=50"])
+        r = a.run(progress=lambda p: p["step"] < 2)
+        self.assertEqual(r["status"], "cancelled")
+        self.assertEqual(r["exit_code"], 130)
+        self.assertEqual(r["steps"], 2)
+
+    def test_error_in_progress_is_raised_after_the_step(self):
+        a = mcdda.Analysis.from_file(INCLINE, ["/analysis/steps=50"])
+
+        def failing(p):
+            raise RuntimeError("stop at %d" % p["step"])
+        with self.assertRaisesRegex(RuntimeError, "stop at 1"):
+            a.run(progress=failing)
+
+    def test_gil_released_while_solving(self):
+        a = mcdda.Analysis.from_file(INCLINE, ["/analysis/steps=30"])
+        ticks = []
+        running = threading.Event()
+        done = threading.Event()
+
+        def tick():
+            running.wait()
+            while not done.is_set():
+                ticks.append(1)
+                time.sleep(0.001)
+        thread = threading.Thread(target=tick)
+        thread.start()
+        marks = []  # ticks counted when each callback begins and ends
+
+        def progress(p):
+            running.set()
+            marks.append(len(ticks))
+            marks.append(len(ticks))
+        a.run(progress=progress)
+        done.set()
+        thread.join()
+        # The other thread ticked while the solver computed the steps (between one callback's end
+        # and the next one's beginning): the solver does not hold the GIL.
+        # (Without the release a tick may still slip in at each callback: one per step at most.)
+        steps = len(marks) // 2
+        while_solving = sum(marks[k + 1] - marks[k] for k in range(1, len(marks) - 1, 2))
+        self.assertGreater(while_solving, 3 * steps, marks)
+
+    def test_files_written_when_asked(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as folder:
+            a = mcdda.Analysis.from_dict(square_block())
+            r = a.run(output_folder=folder, name="square")
+            self.assertEqual(r["status"], "completed", r["message"])
+            for name in ("square.pvd", "history.csv", "summary.json"):
+                self.assertTrue(os.path.exists(os.path.join(folder, name)), name)
+
+    def test_parameter_study(self):
+        """The study of docs/python.md: joint friction against the 40° incline."""
+        statuses = {}
+        for phi in (30, 45):
+            a = mcdda.Analysis.from_file(INCLINE, STATIC + ["/analysis/steps=10"])
+            a.set({"/joint_materials/0/friction_angle": phi})
+            statuses[phi] = a.run()["status"]
+        self.assertEqual(statuses[45], "completed")
+        self.assertNotEqual(statuses[30], "completed")
+
+
+if __name__ == "__main__":
+    unittest.main()
