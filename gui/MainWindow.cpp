@@ -1,5 +1,6 @@
 #include "MainWindow.hpp"
 
+#include "dialogs/DxfImportDialog.hpp"
 #include "dialogs/HelpMenu.hpp"
 #include "document/ModelDocument.hpp"
 #include "model/Defaults.hpp"
@@ -100,11 +101,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     refreshModelTree();
 }
 
-MainWindow::~MainWindow()
-{
-    session_->abandon();
-    scheduler_->drop();
-}
+MainWindow::~MainWindow() { session_->abandon(); scheduler_->drop(); }
 
 void MainWindow::createDocks()
 {
@@ -113,9 +110,7 @@ void MainWindow::createDocks()
     resizeDocks({messages_dock_}, {messages_->preferredHeight()}, Qt::Vertical);  // the model keeps the height
 
     tree_ = new ModelTree(this);
-    connect(tree_, &ModelTree::itemChosen, this, [this](const ItemRef& ref) {
-        if (ref.valid()) selectItem(ref);
-    });
+    connect(tree_, &ModelTree::itemChosen, this, [this](const ItemRef& ref) { if (ref.valid()) selectItem(ref); });
     model_dock_ = addDock(tr("Model"), QStringLiteral("model"), tree_, Qt::RightDockWidgetArea);
 
     steps_ = new StepSlider(this);
@@ -133,7 +128,6 @@ void MainWindow::createDocks()
     plot_ = new HistoryPlot(this);
     plot_dock_ = addDock(tr("Plots"), QStringLiteral("plots"), plot_, Qt::RightDockWidgetArea, model_dock_);
     resizeDocks({plot_dock_}, {320}, Qt::Horizontal);  // the view keeps its width
-
     stages_dock_ = addDock(tr("Stages"), QStringLiteral("stages"), new StagesPanel(document_, view_, this),
                            Qt::RightDockWidgetArea, model_dock_);
     property_editor_ = new PropertyEditor(document_, this);
@@ -193,8 +187,9 @@ void MainWindow::createActions()
     connect(export_menu_, &ExportMenu::exported, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     file->addMenu(export_menu_);
     file->addSeparator();
-    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
+    file->addAction(tr("&Import DXF..."), this, [this] { importDxf(QString()); })->setObjectName(QStringLiteral("importDxfAction"));
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     editing_->createActions(edit);
@@ -209,6 +204,10 @@ void MainWindow::createActions()
     menuBar()->addMenu(help_menu_);
 }
 
+bool MainWindow::importDxf(const QString& path)
+{
+    return import_dxf_into(this, document_, [this] { return maybeSave(); }, [this](const QString& line) { log(line); }, path);
+}
 
 DrawTool* MainWindow::activeTool() const { return editing_->activeTool(); }
 ItemRef MainWindow::selection() const { return editing_->selection(); }

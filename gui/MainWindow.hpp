@@ -55,6 +55,8 @@ public:
     /// box; whatever could be read is still drawn. The work runs on the thread pool; the window
     /// keeps painting (input waits) until it is done. False at once while another file loads.
     bool openModel(const QString& path);
+    /// File ▸ Import DXF: a new model made of the drawing at `path` (asks for one when empty).
+    bool importDxf(const QString& path);
     /// Whether a model file is being read and meshed (openModel on the stack).
     bool isLoading() const { return loading_; }
 

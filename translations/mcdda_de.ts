@@ -260,7 +260,7 @@
 <context>
     <name>mcdda::gui::AddHoleCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="119"/>
+        <location filename="../gui/document/EditCommands.cpp" line="119"/>
         <source>Add hole to region &quot;%1&quot;</source>
         <translation>Öffnung in Bereich „%1“ hinzufügen</translation>
     </message>
@@ -268,7 +268,7 @@
 <context>
     <name>mcdda::gui::AddJointCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="39"/>
+        <location filename="../gui/document/EditCommands.cpp" line="39"/>
         <source>Add joint &quot;%1&quot;</source>
         <translation>Kluft „%1“ hinzufügen</translation>
     </message>
@@ -276,7 +276,7 @@
 <context>
     <name>mcdda::gui::AddRegionCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="18"/>
+        <location filename="../gui/document/EditCommands.cpp" line="18"/>
         <source>Add region &quot;%1&quot;</source>
         <translation>Bereich „%1“ hinzufügen</translation>
     </message>
@@ -284,7 +284,7 @@
 <context>
     <name>mcdda::gui::AddRollerCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="59"/>
+        <location filename="../gui/document/EditCommands.cpp" line="59"/>
         <source>Add roller &quot;%1&quot;</source>
         <translation>Rollenlager „%1“ hinzufügen</translation>
     </message>
@@ -355,6 +355,41 @@
         <location filename="../gui/session/DisplayUnits.cpp" line="55"/>
         <source>kPa</source>
         <translation>kPa</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::DxfImportDialog</name>
+    <message>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="29"/>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="37"/>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="50"/>
+        <source>Import DXF</source>
+        <translation>DXF importieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="29"/>
+        <source>DXF drawings (*.dxf *.DXF)</source>
+        <translation>DXF-Zeichnungen (*.dxf *.DXF)</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="38"/>
+        <source>The drawing does not say its units. One drawing unit is:</source>
+        <translation>Die Zeichnung nennt ihre Einheiten nicht. Eine Zeichnungseinheit ist:</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="50"/>
+        <source>%1 cannot be imported:</source>
+        <translation>%1 kann nicht importiert werden:</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="59"/>
+        <source>Imported %1: %2</source>
+        <translation>%1 importiert: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/dialogs/DxfImportDialog.cpp" line="61"/>
+        <source>Set the materials&apos; properties (they carry defaults) and draw the supports before running.</source>
+        <translation>Vor der Berechnung die Materialeigenschaften setzen (sie tragen Standardwerte) und die Lager zeichnen.</translation>
     </message>
 </context>
 <context>
@@ -1302,192 +1337,197 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="92"/>
+        <location filename="../gui/MainWindow.cpp" line="93"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="126"/>
+        <location filename="../gui/MainWindow.cpp" line="121"/>
         <source>Query</source>
         <translation>Abfrage</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="137"/>
+        <location filename="../gui/MainWindow.cpp" line="131"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="160"/>
+        <location filename="../gui/MainWindow.cpp" line="154"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="161"/>
+        <location filename="../gui/MainWindow.cpp" line="155"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="164"/>
+        <location filename="../gui/MainWindow.cpp" line="158"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="159"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="168"/>
+        <location filename="../gui/MainWindow.cpp" line="162"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="169"/>
+        <location filename="../gui/MainWindow.cpp" line="163"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="172"/>
+        <location filename="../gui/MainWindow.cpp" line="166"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="180"/>
+        <location filename="../gui/MainWindow.cpp" line="174"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <location filename="../gui/MainWindow.cpp" line="178"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="185"/>
+        <location filename="../gui/MainWindow.cpp" line="179"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="188"/>
+        <location filename="../gui/MainWindow.cpp" line="182"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="196"/>
+        <location filename="../gui/MainWindow.cpp" line="190"/>
+        <source>&amp;Import DXF...</source>
+        <translation>DXF &amp;importieren...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="192"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="199"/>
+        <location filename="../gui/MainWindow.cpp" line="194"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="119"/>
+        <location filename="../gui/MainWindow.cpp" line="114"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="260"/>
+        <location filename="../gui/MainWindow.cpp" line="259"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="74"/>
+        <location filename="../gui/MainWindow.cpp" line="75"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="241"/>
+        <location filename="../gui/MainWindow.cpp" line="240"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="248"/>
+        <location filename="../gui/MainWindow.cpp" line="247"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="249"/>
+        <location filename="../gui/MainWindow.cpp" line="248"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="260"/>
+        <location filename="../gui/MainWindow.cpp" line="259"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="262"/>
+        <location filename="../gui/MainWindow.cpp" line="261"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="282"/>
+        <location filename="../gui/MainWindow.cpp" line="281"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="282"/>
+        <location filename="../gui/MainWindow.cpp" line="281"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="298"/>
+        <location filename="../gui/MainWindow.cpp" line="297"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="78"/>
+        <location filename="../gui/MainWindow.cpp" line="79"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="112"/>
+        <location filename="../gui/MainWindow.cpp" line="109"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="122"/>
+        <location filename="../gui/MainWindow.cpp" line="117"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="134"/>
+        <location filename="../gui/MainWindow.cpp" line="129"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="331"/>
+        <location filename="../gui/MainWindow.cpp" line="330"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="359"/>
+        <location filename="../gui/MainWindow.cpp" line="358"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="360"/>
+        <location filename="../gui/MainWindow.cpp" line="359"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="409"/>
+        <location filename="../gui/MainWindow.cpp" line="408"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="410"/>
+        <location filename="../gui/MainWindow.cpp" line="409"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="451"/>
+        <location filename="../gui/MainWindow.cpp" line="450"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="505"/>
+        <location filename="../gui/MainWindow.cpp" line="504"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1495,62 +1535,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="529"/>
+        <location filename="../gui/MainWindow.cpp" line="528"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="529"/>
+        <location filename="../gui/MainWindow.cpp" line="528"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="494"/>
+        <location filename="../gui/MainWindow.cpp" line="493"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="555"/>
+        <location filename="../gui/MainWindow.cpp" line="554"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="563"/>
+        <location filename="../gui/MainWindow.cpp" line="562"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="563"/>
+        <location filename="../gui/MainWindow.cpp" line="562"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="564"/>
+        <location filename="../gui/MainWindow.cpp" line="563"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="140"/>
+        <location filename="../gui/MainWindow.cpp" line="134"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="224"/>
+        <location filename="../gui/MainWindow.cpp" line="223"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="376"/>
+        <location filename="../gui/MainWindow.cpp" line="375"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="435"/>
+        <location filename="../gui/MainWindow.cpp" line="434"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="436"/>
+        <location filename="../gui/MainWindow.cpp" line="435"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -2858,7 +2898,7 @@
 <context>
     <name>mcdda::gui::SetAnalysisSettingsCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="94"/>
+        <location filename="../gui/document/EditCommands.cpp" line="94"/>
         <source>Change analysis settings</source>
         <translation>Berechnungseinstellungen ändern</translation>
     </message>
@@ -2866,7 +2906,7 @@
 <context>
     <name>mcdda::gui::SetInitialStressCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="147"/>
+        <location filename="../gui/document/EditCommands.cpp" line="147"/>
         <source>Change in-situ stress</source>
         <translation>Primärspannungszustand ändern</translation>
     </message>
@@ -2874,7 +2914,7 @@
 <context>
     <name>mcdda::gui::SetJointMaterialCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="139"/>
+        <location filename="../gui/document/EditCommands.cpp" line="139"/>
         <source>Change joint material &quot;%1&quot;</source>
         <translation>Kluftmaterial „%1“ ändern</translation>
     </message>
@@ -2882,7 +2922,7 @@
 <context>
     <name>mcdda::gui::SetMaterialCommand</name>
     <message>
-        <location filename="../gui/document/Commands.cpp" line="78"/>
+        <location filename="../gui/document/EditCommands.cpp" line="78"/>
         <source>Change material &quot;%1&quot;</source>
         <translation>Material „%1“ ändern</translation>
     </message>

@@ -1,5 +1,7 @@
 #include "CommandLine.hpp"
 
+#include "io/DxfImport.hpp"
+
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -20,6 +22,7 @@ Usage:
   mcdda run    MODEL --out DIR [--profile] [--quiet] [--threads N] [--set POINTER=VALUE]...
   mcdda study  STUDY.json --out DIR [--quiet] [--threads N]
   mpirun -n N mcdda study STUDY.json --out DIR
+  mcdda import-dxf DRAWING.dxf --out MODEL.json [--units m|mm|cm|km|in|ft]
   mcdda --help | --version
 
 Commands:
@@ -37,6 +40,10 @@ Commands:
            DIR/runs/run_NNNN, one row each in DIR/study.csv; under mpirun the runs are
            spread over the ranks; a rerun skips the runs that have their result;
            exit status 4 when a run failed
+  import-dxf  make a model of a DXF drawing (docs/dxf-import.md): closed polylines are
+           regions (layer = material; on a layer "holes": holes), lines and open
+           polylines joints, points measurement points; the drawing's units are read
+           from $INSUNITS unless --units gives them; skipped entities are reported
 
 Options:
   --set POINTER=VALUE  override any field of the model by JSON pointer before it is
@@ -79,7 +86,7 @@ output, 4 the run failed, 5 the model collapsed, 130 cancelled.
 
 std::optional<Request> parse_command_line(const std::vector<std::string>& args, std::string& error) {
     Request r;
-    static const std::set<std::string> commands{"check", "mesh", "render", "run", "study"};
+    static const std::set<std::string> commands{"check", "mesh", "render", "run", "study", "import-dxf"};
     std::vector<std::string> positional;
     bool field_given = false, deform_given = false, result_option = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -187,6 +194,14 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
                 error = "--threads expects a number of threads from 1 to 256, got \"" + *v + "\"";
                 return std::nullopt;
             }
+        } else if (is("--units")) {
+            const auto v = value("--units");
+            if (!v) return std::nullopt;
+            r.units = *v;
+            if (metres_per_unit_named(*v) <= 0.0) {
+                error = "--units expects m, mm, cm, km, in or ft, got \"" + *v + "\"";
+                return std::nullopt;
+            }
         } else if (is("--results")) {
             const auto v = value("--results");
             if (!v) return std::nullopt;
@@ -242,7 +257,9 @@ std::optional<Request> parse_command_line(const std::vector<std::string>& args, 
         return std::nullopt;
     }
     r.model = positional[1];
-    if ((r.command == "mesh" || r.command == "render" || r.command == "run" || r.command == "study") && r.out.empty()) {
+    if ((r.command == "mesh" || r.command == "render" || r.command == "run" || r.command == "study" ||
+         r.command == "import-dxf") &&
+        r.out.empty()) {
         error = r.command + ": --out is required";
         return std::nullopt;
     }

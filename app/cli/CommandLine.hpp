@@ -31,6 +31,7 @@ struct Request {
     bool show_axes = true;               ///< --no-axes hides the rulers and the scale bar
     std::string title;                   ///< --title TEXT over a result picture
     int threads = 0;                     ///< --threads N for run (0: $MCDDA_THREADS, else one per core)
+    std::string units;                   ///< --units NAME for import-dxf (empty: the drawing's)
 };
 
 /// Parses argv; returns the request or sets `error` to a message for the user.

@@ -15,5 +15,6 @@ int run_mesh(const Request& r);
 int run_render(const Request& r);
 int run_run(const Request& r);
 int run_study(const Request& r);
+int run_import_dxf(const Request& r);
 
 }  // namespace mcdda::cli

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
         if (request->command == "mesh") return run_mesh(*request);
         if (request->command == "run") return run_run(*request);
         if (request->command == "study") return run_study(*request);
+        if (request->command == "import-dxf") return run_import_dxf(*request);
         if (request->command == "render") {
             if (!ensure_display(args, error)) {
                 std::cerr << "mcdda render: " << error << "\n";

@@ -62,6 +62,7 @@ private slots:
     void stageListShowsAndEditsStages();
     void boltToolDrawsABolt();
     void tinyBlocksAreReported();
+    void importDxfMakesAModel();
 };
 
 void EditingTest::initTestCase()
@@ -678,6 +679,52 @@ void EditingTest::tinyBlocksAreReported()
     QTRY_VERIFY(!window.isPreprocessing() && window.messages().contains(QStringLiteral("cannot be meshed")));
     const QString text = window.messages();
     QVERIFY2(text.contains(QStringLiteral("block")) && text.contains(QStringLiteral("near (25")), qPrintable(text));
+}
+
+// Issue 14: File ▸ Import DXF makes a new, untitled model of a drawing (a 10 m square in
+// millimetres on layer "granite" and a joint across it), says what it did, and draws it.
+void EditingTest::importDxfMakesAModel()
+{
+    MainWindow window;
+    QVERIFY(guitest::show_square(window));
+    QTRY_VERIFY(guitest::settled(window));
+    QVERIFY(window.findChild<QAction*>(QStringLiteral("importDxfAction")));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("square.dxf"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QStringList groups{QStringLiteral("0"), QStringLiteral("SECTION"), QStringLiteral("2"), QStringLiteral("HEADER"),
+                       QStringLiteral("9"), QStringLiteral("$INSUNITS"), QStringLiteral("70"), QStringLiteral("4"),
+                       QStringLiteral("0"), QStringLiteral("ENDSEC"), QStringLiteral("0"), QStringLiteral("SECTION"),
+                       QStringLiteral("2"), QStringLiteral("ENTITIES"), QStringLiteral("0"), QStringLiteral("LWPOLYLINE"),
+                       QStringLiteral("8"), QStringLiteral("granite"), QStringLiteral("90"), QStringLiteral("4"),
+                       QStringLiteral("70"), QStringLiteral("1")};
+    for (const char* xy : {"0 0", "10000 0", "10000 10000", "0 10000"}) {
+        const QStringList v = QString::fromLatin1(xy).split(QLatin1Char(' '));
+        groups << QStringLiteral("10") << v[0] << QStringLiteral("20") << v[1];
+    }
+    groups << QStringLiteral("0") << QStringLiteral("LINE") << QStringLiteral("8") << QStringLiteral("joints")
+           << QStringLiteral("10") << QStringLiteral("0") << QStringLiteral("20") << QStringLiteral("3000")
+           << QStringLiteral("11") << QStringLiteral("10000") << QStringLiteral("21") << QStringLiteral("7000")
+           << QStringLiteral("0") << QStringLiteral("ENDSEC") << QStringLiteral("0") << QStringLiteral("EOF");
+    file.write(groups.join(QLatin1Char('\n')).toLatin1() + "\n");
+    file.close();
+    window.setAskToSave(false);
+    QVERIFY(window.importDxf(path));
+    const Model& m = window.document()->model();
+    QCOMPARE(m.regions.size(), std::size_t(1));
+    QCOMPARE(m.materials.front().name, std::string("granite"));
+    QCOMPARE(m.regions.front().boundary[2].x, 10.0);  // millimetres read as such
+    QCOMPARE(m.joints.size(), std::size_t(1));
+    QVERIFY(window.document()->path().isEmpty());  // untitled: Save asks where
+    QVERIFY2(window.messages().contains(QStringLiteral("Imported square.dxf")), qPrintable(window.messages()));
+    QTRY_VERIFY2(!window.isPreprocessing() && window.messages().contains(QStringLiteral("nothing is fixed")),
+                 qPrintable(window.messages()));
+    const view::Rgb rock = view::material_color(0);
+    QVERIFY(guitest::count_around(*window.modelView(), 2.0, 8.0, rock) > 40);  // above the joint
+    QVERIFY(guitest::count_around(*window.modelView(), 8.0, 2.0, rock) > 40);  // below it
+    QVERIFY(!window.importDxf(dir.filePath(QStringLiteral("missing.dxf"))));
+    QCOMPARE(window.document()->model().materials.front().name, std::string("granite"));  // kept
 }
 
 QTEST_MAIN(EditingTest)
