@@ -19,6 +19,8 @@ packages=(
   libvtk9-dev
   # The Python module (pybind11, NumPy; tests with unittest) and DXF import (dxflib).
   python3-dev pybind11-dev python3-numpy libdxflib-dev
+  # Parameter studies over MPI ranks (mpirun) and their tests (pkill).
+  openmpi-bin libopenmpi-dev procps
   xvfb xauth mesa-utils libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
 )
 

@@ -39,6 +39,17 @@ py::list diagnostics_list(const std::vector<Diagnostic>& diagnostics)
     return out;
 }
 
+/// check() or mesh() with the GIL released (meshing a large model takes seconds).
+py::list preprocess(Analysis& a, std::vector<Diagnostic> (Analysis::*stage)())
+{
+    std::vector<Diagnostic> d;
+    {
+        py::gil_scoped_release released;
+        d = (a.*stage)();
+    }
+    return diagnostics_list(d);
+}
+
 /// Overrides as `mcdda run --set` takes them, from a dict {pointer: value} (values written as
 /// JSON) or a list of "pointer=json" strings.
 std::vector<std::string> overrides_of(const py::object& changes)
@@ -172,26 +183,10 @@ PYBIND11_MODULE(mcdda, m)
             "to_dict", [](const Analysis& a) { return py::module_::import("json").attr("loads")(a.to_json()); },
             "The model as a dict")
         .def(
-            "check",
-            [](Analysis& a) {
-                std::vector<Diagnostic> d;
-                {
-                    py::gil_scoped_release released;
-                    d = a.check();
-                }
-                return diagnostics_list(d);
-            },
+            "check", [](Analysis& a) { return preprocess(a, &Analysis::check); },
             "Checks the model and cuts its blocks: a list of {severity, path, message}")
         .def(
-            "mesh",
-            [](Analysis& a) {
-                std::vector<Diagnostic> d;
-                {
-                    py::gil_scoped_release released;
-                    d = a.mesh();
-                }
-                return diagnostics_list(d);
-            },
+            "mesh", [](Analysis& a) { return preprocess(a, &Analysis::mesh); },
             "Checks, cuts and meshes: a list of {severity, path, message}")
         .def_property_readonly("ok", &Analysis::ok, "True when the last check or mesh found no error")
         .def_property_readonly(

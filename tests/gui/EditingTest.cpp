@@ -531,10 +531,7 @@ void EditingTest::newModelTalksOfRegionsAndFitsTheFirst()
 void EditingTest::stageListShowsAndEditsStages()
 {
     MainWindow window;
-    window.resize(1100, 750);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
+    QVERIFY(guitest::show_model(window, QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
     QTRY_VERIFY(guitest::settled(window));
     auto* list = window.findChild<QListWidget*>(QStringLiteral("stageList"));
     QVERIFY(list);

@@ -372,10 +372,7 @@ void PropertyEditorTest::formsFollowTheFieldDeclarations()
 void PropertyEditorTest::boltFormEditsBolts()
 {
     MainWindow window;
-    window.resize(1100, 750);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
+    QVERIFY(show_model(window, QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
     QTRY_VERIFY(settled(window));
     gui::BoltForm* form = window.propertyEditor()->boltForm();
     QVERIFY(form);
@@ -420,10 +417,7 @@ void PropertyEditorTest::boltFormEditsBolts()
 void PropertyEditorTest::unitsChosenReachFormsAndTree()
 {
     MainWindow window;
-    window.resize(1100, 750);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    QVERIFY(window.openModel(QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
+    QVERIFY(show_model(window, QStringLiteral(MCDDA_EXAMPLES_DIR "/jointed-tunnel-staged.json")));
     QTRY_VERIFY(settled(window));
     PropertyEditor* editor = window.propertyEditor();
     const Material rock = window.document()->model().materials[0];

@@ -55,6 +55,13 @@ std::unique_ptr<gui::MainWindow> square_window()
     return show_square(*window) ? std::move(window) : nullptr;
 }
 
+bool show_model(gui::MainWindow& window, const QString& path)
+{
+    window.resize(1100, 750);
+    window.show();
+    return QTest::qWaitForWindowExposed(&window) && window.openModel(path);
+}
+
 bool settled(const gui::MainWindow& window)
 {
     return !window.isPreprocessing() && window.modelView()->scene() && window.modelView()->scene()->ok;

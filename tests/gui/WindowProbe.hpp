@@ -8,6 +8,7 @@
 
 #include <QColor>
 #include <QPoint>
+#include <QString>
 
 #include <memory>
 
@@ -26,6 +27,8 @@ int count_around(gui::ModelView& view, double x, double y, const view::Rgb& colo
 /// Shows `window` (1100 × 750) and makes it File ▸ New with a 10 m square region and a roller
 /// holding its base (x and y); false when the window could not be shown.
 bool show_square(gui::MainWindow& window);
+/// Shows `window` at 1100 × 750 with the model file at `path` open; false when it cannot.
+bool show_model(gui::MainWindow& window, const QString& path);
 
 /// The same in a window of its own; null when it could not be shown.
 std::unique_ptr<gui::MainWindow> square_window();
