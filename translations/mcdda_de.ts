@@ -124,6 +124,7 @@
     <message>
         <location filename="../solver/model/ModelFields.cpp" line="61"/>
         <location filename="../solver/model/ModelFields.cpp" line="64"/>
+        <location filename="../solver/model/ModelFields.cpp" line="100"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
@@ -176,6 +177,76 @@
         <location filename="../solver/model/ModelFields.cpp" line="81"/>
         <source>Axial force when installed, per metre of model thickness, pulling the ends together; ≥ 0</source>
         <translation>Axialkraft beim Einbau, je Meter Modelldicke, zieht die Enden zusammen; ≥ 0</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="91"/>
+        <source>Time step Δt</source>
+        <translation>Zeitschritt Δt</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="93"/>
+        <source>Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps</source>
+        <translation>Anfänglicher und größter Zeitschritt; er wird automatisch verkleinert, wenn sich ein Schritt zu weit bewegt oder nicht konvergiert. In einer statischen Berechnung ordnet die Zeit nur die Laststufen</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="95"/>
+        <source>Max displacement ratio</source>
+        <translation>Max. Verschiebungsverhältnis</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="97"/>
+        <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
+        <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="99"/>
+        <source>Penalty</source>
+        <translation>Kontaktsteifigkeit (Penalty)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="101"/>
+        <source>Contact spring stiffness; 0 = automatic (from E)</source>
+        <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="103"/>
+        <source>Dynamic ratio</source>
+        <translation>Dynamikfaktor</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="105"/>
+        <source>Fraction of the velocity carried into the next step of a dynamic analysis (1: none lost)</source>
+        <translation>Anteil der Geschwindigkeit, der in einer dynamischen Berechnung in den nächsten Schritt übernommen wird (1: nichts geht verloren)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="107"/>
+        <source>Equilibrium tolerance</source>
+        <translation>Gleichgewichtstoleranz</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="109"/>
+        <source>Out-of-balance force, relative to the force scale, below which a step&apos;s equilibrium iterations stop</source>
+        <translation>Ungleichgewichtskraft, bezogen auf die Kraftskala, unter der die Gleichgewichtsiterationen eines Schritts enden</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="111"/>
+        <source>Smallest load increment</source>
+        <translation>Kleinstes Lastinkrement</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="113"/>
+        <source>A static step that does not converge is halved down to this fraction of a step; failing there is a collapse</source>
+        <translation>Ein statischer Schritt, der nicht konvergiert, wird bis auf diesen Bruchteil eines Schritts halbiert; scheitert er auch dort, ist es ein Versagen</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="115"/>
+        <source>Equilibrium ratio</source>
+        <translation>Gleichgewichtsgrenze</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="117"/>
+        <source>A run whose unbalanced-force ratio ends above this is reported as not in equilibrium</source>
+        <translation>Eine Berechnung, deren Ungleichgewichtsverhältnis am Ende darüber liegt, wird als nicht im Gleichgewicht gemeldet</translation>
     </message>
 </context>
 <context>
@@ -2131,8 +2202,8 @@
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="453"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="440"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="442"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
@@ -2153,10 +2224,10 @@
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="260"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
@@ -2173,8 +2244,8 @@
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2199,11 +2270,6 @@
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
-        <source>MN/m</source>
-        <translation>MN/m</translation>
-    </message>
-    <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
         <source>Static</source>
         <translation>Statisch</translation>
@@ -2215,7 +2281,7 @@
     </message>
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="205"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="249"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
@@ -2235,202 +2301,167 @@
         <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="213"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="214"/>
-        <source>Time step Δt</source>
-        <translation>Zeitschritt Δt</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="215"/>
-        <source>Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps</source>
-        <translation>Anfänglicher und größter Zeitschritt; er wird automatisch verkleinert, wenn sich ein Schritt zu weit bewegt oder nicht konvergiert. In einer statischen Berechnung ordnet die Zeit nur die Laststufen</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
-        <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
-        <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
-    </message>
-    <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
-        <source>Max displacement ratio [–]</source>
-        <translation>Max. Verschiebungsverhältnis [–]</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
-        <source>Contact spring stiffness; 0 = automatic (from E)</source>
-        <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="223"/>
-        <source>Penalty</source>
-        <translation>Penalty</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="221"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="231"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="225"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="259"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="250"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="260"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="259"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="261"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="262"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="286"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="318"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="323"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="309"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="314"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="453"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="440"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="442"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="473"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="462"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="479"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="501"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="511"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="500"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="530"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="552"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="577"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="604"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="519"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="541"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="564"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="591"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="534"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="581"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="608"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="523"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="545"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="568"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="595"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -2930,192 +2961,192 @@
 <context>
     <name>mcdda::gui::StagesPanel</name>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="54"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="56"/>
         <source>fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="55"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="57"/>
         <source>roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="56"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
         <source>point load</source>
         <translation>Einzellast</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="57"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="59"/>
         <source>edge pressure</source>
         <translation>Randdruck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="80"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="84"/>
         <source>Choose a stage to see the model as it stands in it; the first row shows every region</source>
         <translation>Eine Bauphase wählen, um das Modell so zu sehen, wie es in ihr steht; die erste Zeile zeigt alle Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="81"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="85"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="83"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="87"/>
         <source>Add a stage at the end (10 steps, the model&apos;s analysis settings)</source>
         <translation>Eine Bauphase am Ende hinzufügen (10 Schritte, die Berechnungseinstellungen des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="84"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="88"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="86"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="90"/>
         <source>Up</source>
         <translation>Nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="88"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="92"/>
         <source>Down</source>
         <translation>Nach unten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="92"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="96"/>
         <source>Name of the stage (results, tree, messages)</source>
         <translation>Name der Bauphase (Ergebnisse, Baum, Meldungen)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="94"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
         <source>Regions removed at the start of the stage (an excavation)</source>
         <translation>Bereiche, die zu Beginn der Bauphase entfernt werden (ein Ausbruch)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="96"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
         <source>Regions added at the start of the stage (backfill, a liner); absent before</source>
         <translation>Bereiche, die zu Beginn der Bauphase hinzukommen (Verfüllung, Ausbau); vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
         <source>Supports, loads and bolts added at the start of the stage; absent before</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase hinzukommen; vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
         <source>Supports, loads and bolts taken away at the start of the stage</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase entfernt werden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="106"/>
         <source>Number of load steps of the stage</source>
         <translation>Anzahl der Laststufen der Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="103"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
         <source>over all steps</source>
         <translation>über alle Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="108"/>
         <source> steps</source>
         <translation> Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="105"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="109"/>
         <source>Over how many steps the forces the stage leaves out of balance (an excavation&apos;s) are released, linearly; fewer steps release them faster</source>
         <translation>Über wie viele Schritte die Ungleichgewichtskräfte der Bauphase (etwa eines Ausbruchs) linear freigesetzt werden; weniger Schritte setzen sie schneller frei</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="111"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="118"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="122"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="119"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="123"/>
         <source>Excavates</source>
         <translation>Bricht aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="120"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
         <source>Builds</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="121"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
         <source>Installs</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="122"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="126"/>
         <source>Removes</source>
         <translation>Baut aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="123"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="127"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
         <source>Release</source>
         <translation>Freisetzung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="157"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
         <source>Model as drawn (every region)</source>
         <translation>Modell wie gezeichnet (alle Bereiche)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="159"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="166"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="162"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="169"/>
         <source>No stages: the model is analysed in one go. Add one to excavate or build regions step by step.</source>
         <translation>Keine Bauphasen: das Modell wird in einem Zug berechnet. Eine hinzufügen, um Bereiche schrittweise auszubrechen oder einzubauen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="183"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="191"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="197"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="205"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="226"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="237"/>
         <source>Edit stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="233"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="244"/>
         <source>stage %1</source>
         <translation>Bauphase %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="237"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="248"/>
         <source>Add stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="248"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="259"/>
         <source>Remove stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="257"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="268"/>
         <source>Move stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ verschieben</translation>
     </message>
@@ -3294,6 +3325,11 @@
         <location filename="../gui/panels/FormFields.cpp" line="122"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="123"/>
+        <source>s</source>
+        <translation>s</translation>
     </message>
 </context>
 <context>

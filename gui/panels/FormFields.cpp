@@ -109,7 +109,7 @@ FormUnit form_unit(Quantity quantity)
     const DisplayUnits* units = DisplayUnits::instance();
     auto text = [](const char* unit) { return QCoreApplication::translate("mcdda::gui::form", unit); };
     switch (quantity) {
-    case Quantity::Ratio: return {QString(), 1.0, 10.0, 4};
+    case Quantity::Ratio: return {QString(), 1.0, 10.0, 6};
     case Quantity::Modulus:
         return {units->formModulusUnit(), units->formModulusFactor(), 1e15 / units->formModulusFactor(), 3};
     case Quantity::Stress: {
@@ -120,6 +120,7 @@ FormUnit form_unit(Quantity quantity)
     case Quantity::Angle: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "°")), degree, 360.0, 3};
     case Quantity::Stiffness: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "MN/m")), 1e6, 1e9, 3};
     case Quantity::Force: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m")), 1e3, 1e9, 3};
+    case Quantity::Time: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "s")), 1.0, 1e6, 6};
     }
     return {QString(), 1.0, 1e9, 3};
 }
@@ -139,7 +140,7 @@ QDoubleSpinBox* declared_number(const NumberField& field, const QString& prefix,
 {
     const FormUnit u = form_unit(field.quantity);
     QDoubleSpinBox* box = number(prefix + QString::fromLatin1(field.key), u.unit, -u.range, u.range, u.decimals, parent);
-    if (field.quantity == Quantity::Ratio) box->setSingleStep(0.01);
+    if (field.quantity == Quantity::Ratio) box->setSingleStep(0.001);
     QString label = QCoreApplication::translate("ModelFields", field.label);
     if (u.unit.isEmpty()) label += QStringLiteral(" [–]");
     form->addRow(label, box);

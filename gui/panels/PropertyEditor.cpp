@@ -210,17 +210,8 @@ QWidget* PropertyEditor::createAnalysisForm()
     an_steps_->setKeyboardTracking(false);
     form->addRow(tr("Steps [–]"), an_steps_);
     explain(an_steps_, tr("Number of time steps; the loads follow their tables over the time they cover"));
-    an_dt_ = number(QStringLiteral("analysisTimeStep"), tr("s"), -1e6, 1e6, 6, page);
-    form->addRow(tr("Time step Δt"), an_dt_);
-    explain(an_dt_, tr("Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps"));
-    an_ratio_ = number(QStringLiteral("analysisRatio"), QString(), -1.0, 1.0, 6, page);
-    an_ratio_->setSingleStep(0.001);
-    explain(an_ratio_, tr("Largest displacement in one step divided by the model size (Shi's g2)"));
-    form->addRow(tr("Max displacement ratio [–]"), an_ratio_);
-    an_penalty_ = number(QStringLiteral("analysisPenalty"), tr("MN/m"), -1e12, 1e12, 3, page);
-    zero_is_automatic(an_penalty_);
-    explain(an_penalty_, tr("Contact spring stiffness; 0 = automatic (from E)"));
-    form->addRow(tr("Penalty"), an_penalty_);
+    an_fields_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(analysis_fields(), QStringLiteral("analysis_"),
+                                                                          form, page);
     an_output_ = new QSpinBox(page);
     an_output_->setObjectName(QStringLiteral("analysisOutputEvery"));
     an_output_->setRange(-1, 100000000);
@@ -238,7 +229,7 @@ QWidget* PropertyEditor::createAnalysisForm()
     form->addRow(QString(), apply);
     an_status_ = status_label(QStringLiteral("analysisStatus"), page);
     form->addRow(an_status_);
-    for (QDoubleSpinBox* box : {an_dt_, an_ratio_, an_penalty_})
+    for (QDoubleSpinBox* box : an_fields_->boxes())
         connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyAnalysis(); });
     for (QSpinBox* box : {an_steps_, an_output_})
         connect(box, &QSpinBox::editingFinished, this, [this] { if (!loading_) applyAnalysis(); });
@@ -372,9 +363,7 @@ void PropertyEditor::loadAnalysis()
     loading_ = true;
     an_kind_->setCurrentIndex(an_kind_->findData(static_cast<int>(a.kind)));
     an_steps_->setValue(a.steps);
-    display(an_dt_, a.time_step);
-    display(an_ratio_, a.max_displacement_ratio);
-    display(an_penalty_, a.penalty / 1e6);
+    an_fields_->show(a);
     an_output_->setValue(a.output_every);
     an_plasticity_->setChecked(a.plasticity);
     loading_ = false;
@@ -564,9 +553,7 @@ bool PropertyEditor::applyAnalysis()
     AnalysisSettings a = old;
     a.kind = static_cast<AnalysisSettings::Kind>(an_kind_->currentData().toInt());
     a.steps = an_steps_->value();
-    a.time_step = si(an_dt_, old.time_step, 1.0);
-    a.max_displacement_ratio = si(an_ratio_, old.max_displacement_ratio, 1.0);
-    a.penalty = si(an_penalty_, old.penalty, 1e6);
+    an_fields_->read(old, a);
     a.output_every = an_output_->value();
     a.plasticity = an_plasticity_->isChecked();
     if (same(a, old)) return true;

@@ -122,9 +122,7 @@ private:
 
     QComboBox* an_kind_ = nullptr;
     QSpinBox* an_steps_ = nullptr;
-    QDoubleSpinBox* an_dt_ = nullptr;
-    QDoubleSpinBox* an_ratio_ = nullptr;
-    QDoubleSpinBox* an_penalty_ = nullptr;
+    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> an_fields_;
     QSpinBox* an_output_ = nullptr;
     QCheckBox* an_plasticity_ = nullptr;
     QLabel* an_status_ = nullptr;

@@ -1,8 +1,10 @@
 #include "panels/StagesPanel.hpp"
 
 #include "document/ModelDocument.hpp"
+#include "panels/DeclaredFields.hpp"
 #include "widgets/ModelView.hpp"
 
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -71,6 +73,8 @@ QSpinBox* count_box(const QString& name, int min, const QString& special, QWidge
 
 }  // namespace
 
+StagesPanel::~StagesPanel() = default;
+
 StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* parent)
     : QWidget(parent), document_(document), view_(view)
 {
@@ -122,6 +126,9 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     form->addRow(tr("Removes"), remove_items_);
     form->addRow(tr("Steps"), steps_);
     form->addRow(tr("Release"), release_);
+    // The stage's own analysis settings, declared once with the model's (model/ModelFields.hpp).
+    analysis_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(analysis_fields(), QStringLiteral("stage_"),
+                                                                         form, settings);
     form->addRow(QString(), apply_);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(list_, 1);
@@ -173,6 +180,7 @@ void StagesPanel::showStage()
     for (QWidget* w : std::initializer_list<QWidget*>{name_, excavate_, activate_, install_, remove_items_, steps_,
                                                        release_, apply_, remove_})
         w->setEnabled(editing);
+    for (QDoubleSpinBox* box : analysis_->boxes()) box->setEnabled(editing);
     up_->setEnabled(editing && stage > 0);
     down_->setEnabled(editing && stage + 1 < static_cast<int>(m.stages.size()));
     name_->setText(editing ? QString::fromStdString(m.stages[static_cast<std::size_t>(stage)].name) : QString());
@@ -203,6 +211,7 @@ void StagesPanel::showStage()
     }
     steps_->setValue(st ? st->analysis.steps : 1);
     release_->setValue(st ? st->release_steps : 0);
+    analysis_->show(st ? st->analysis : m.analysis);
     // The picture: the model as it stands in the stage.
     view::SceneOptions options = view_->sceneOptions();
     options.hidden_regions = stage >= 0 ? regions_absent(m, stage) : std::vector<int>{};
@@ -223,6 +232,8 @@ void StagesPanel::applyStage()
     st.remove = checked_names(remove_items_);
     st.analysis.steps = steps_->value();
     st.release_steps = release_->value();
+    const AnalysisSettings before = st.analysis;
+    analysis_->read(before, st.analysis);
     document_->replaceModel(m, tr("Edit stage \"%1\"").arg(QString::fromStdString(st.name)));
 }
 

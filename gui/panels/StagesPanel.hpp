@@ -3,11 +3,15 @@
 /// The Stages dock: the model's construction stages in order, the picture showing the model as it
 /// stands in the stage chosen (regions excavated by then, or built only later, left out), and
 /// editing: add, remove, rename and reorder stages, choose the regions each excavates or builds,
-/// the supports, loads and bolts it installs or removes, its number of steps and how fast it
-/// releases the out-of-balance forces. Every change is one undoable edit of the document; the model checker reports stages
+/// the supports, loads and bolts it installs or removes, its number of steps, how fast it
+/// releases the out-of-balance forces and its other number settings (time step, tolerances …). Every change is one undoable edit of the document; the model checker reports stages
 /// that do not make sense (excavating what is already gone) in the Messages dock.
 
+#include "panels/DeclaredFields.hpp"
+
 #include <QWidget>
+
+#include <memory>
 
 class QLabel;
 class QLineEdit;
@@ -25,6 +29,7 @@ class StagesPanel : public QWidget {
 
 public:
     StagesPanel(ModelDocument* document, ModelView* view, QWidget* parent = nullptr);
+    ~StagesPanel() override;
 
     /// The stage shown: -1 = the model as drawn (every region).
     int currentStage() const;
@@ -48,6 +53,7 @@ private:
     QListWidget* remove_items_ = nullptr;
     QSpinBox* steps_ = nullptr;
     QSpinBox* release_ = nullptr;
+    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> analysis_;  ///< the stage's number settings
     QPushButton* apply_ = nullptr;
     QPushButton* remove_ = nullptr;
     QPushButton* up_ = nullptr;

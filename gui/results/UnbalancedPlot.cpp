@@ -32,7 +32,7 @@ UnbalancedPlot::UnbalancedPlot(QWidget* parent) : QWidget(parent)
     limit_->setName(tr("equilibrium limit"));
     QPen dashed(limitColor());
     dashed.setStyle(Qt::DashLine);
-    dashed.setWidthF(1.5);
+    dashed.setWidthF(2.0);  // as wide as the series: whole pixels of its colour at any height
     limit_->setPen(dashed);
     chart->addSeries(series_);
     chart->addSeries(limit_);

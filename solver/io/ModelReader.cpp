@@ -307,12 +307,11 @@ std::map<std::string, int> collect_names(Parser& p, const json& list, const std:
     return names;
 }
 
-/// The keys a record may have: "name", its declared number fields and `more`.
+/// The keys a record may have: `more` and its declared number fields.
 template <class Record>
 std::vector<const char*> keys_of(const std::vector<RecordField<Record>>& fields, std::initializer_list<const char*> more) {
-    std::vector<const char*> keys{"name"};
+    std::vector<const char*> keys(more);
     for (const RecordField<Record>& f : fields) keys.push_back(f.field.key);
-    keys.insert(keys.end(), more.begin(), more.end());
     return keys;
 }
 
@@ -328,6 +327,17 @@ void read_fields(Parser& p, const json& o, const std::string& path, const std::v
     }
 }
 
+/// The same over the values already in `record` (a stage's analysis over the model's): an
+/// absent field keeps its value.
+template <class Record>
+void read_fields_over(Parser& p, const json& o, const std::string& path, const std::vector<RecordField<Record>>& fields,
+                      Record& record) {
+    for (const RecordField<Record>& f : fields) {
+        const double kept = to_file_unit(f.field.quantity, record.*f.member);
+        record.*f.member = from_file_unit(f.field.quantity, p.number(o, path, f.field.key, kept));
+    }
+}
+
 void parse_materials(Parser& p, const json& root, Model& m) {
     const json& list = p.array(root, "", "materials");
     if (list.empty()) p.error("/materials", "at least one material is required");
@@ -336,7 +346,7 @@ void parse_materials(Parser& p, const json& root, Model& m) {
         const json& o = list[i];
         Material mat;
         if (!p.is_object(o, path)) { m.materials.push_back(mat); continue; }
-        p.check_keys(o, path, keys_of(material_fields(), {"unit_weight", "plastic"}));
+        p.check_keys(o, path, keys_of(material_fields(), {"name", "unit_weight", "plastic"}));
         mat.name = p.string(o, path, "name", std::nullopt);
         read_fields(p, o, path, material_fields(), mat);
         if (o.contains("density") && o.contains("unit_weight"))
@@ -354,7 +364,7 @@ void parse_joint_materials(Parser& p, const json& root, Model& m, std::map<std::
         const json& o = list[i];
         JointMaterial jm;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, keys_of(joint_material_fields(), {}));
+            p.check_keys(o, path, keys_of(joint_material_fields(), {"name"}));
             jm.name = p.string(o, path, "name", std::nullopt);
             read_fields(p, o, path, joint_material_fields(), jm);
         }
@@ -622,23 +632,17 @@ void parse_mesh(Parser& p, const json& root, Model& m) {
 /// overrides the model's).
 void parse_analysis_object(Parser& p, const json& o, const std::string& path, AnalysisSettings& a) {
     if (!p.is_object(o, path)) return;
-    p.check_keys(o, path, {"type", "steps", "time_step", "max_displacement_ratio", "penalty", "dynamic_ratio",
-                           "open_close_iterations", "plastic_iterations", "plastic_tolerance", "min_load_fraction",
-                           "geometry", "output_every", "plasticity", "equilibrium_ratio"});
+    p.check_keys(o, path, keys_of(analysis_fields(), {"type", "steps", "open_close_iterations", "plastic_iterations",
+                                                      "geometry", "output_every", "plasticity"}));
     const std::string type =
         p.string(o, path, "type", std::string(a.kind == AnalysisSettings::Kind::Static ? "static" : "dynamic"));
     if (type == "static") a.kind = AnalysisSettings::Kind::Static;
     else if (type == "dynamic") a.kind = AnalysisSettings::Kind::Dynamic;
     else p.error(path + "/type", "must be \"static\" or \"dynamic\", got \"" + type + "\"");
     a.steps = static_cast<int>(p.integer(o, path, "steps", a.steps));
-    a.time_step = p.number(o, path, "time_step", a.time_step);
-    a.max_displacement_ratio = p.number(o, path, "max_displacement_ratio", a.max_displacement_ratio);
-    a.penalty = p.number(o, path, "penalty", a.penalty);
-    a.dynamic_ratio = p.number(o, path, "dynamic_ratio", a.dynamic_ratio);
+    read_fields_over(p, o, path, analysis_fields(), a);
     a.max_open_close_iterations = static_cast<int>(p.integer(o, path, "open_close_iterations", a.max_open_close_iterations));
     a.max_plastic_iterations = static_cast<int>(p.integer(o, path, "plastic_iterations", a.max_plastic_iterations));
-    a.plastic_tolerance = p.number(o, path, "plastic_tolerance", a.plastic_tolerance);
-    a.min_load_fraction = p.number(o, path, "min_load_fraction", a.min_load_fraction);
     const std::string geometry = p.string(
         o, path, "geometry", std::string(a.geometry == AnalysisSettings::Geometry::Updated ? "updated" : "initial"));
     if (geometry == "updated") a.geometry = AnalysisSettings::Geometry::Updated;
@@ -646,7 +650,6 @@ void parse_analysis_object(Parser& p, const json& o, const std::string& path, An
     else p.error(path + "/geometry", "must be \"updated\" or \"initial\", got \"" + geometry + "\"");
     a.output_every = static_cast<int>(p.integer(o, path, "output_every", a.output_every));
     a.plasticity = p.boolean(o, path, "plasticity", a.plasticity);
-    a.equilibrium_ratio = p.number(o, path, "equilibrium_ratio", a.equilibrium_ratio);
 }
 
 void parse_analysis(Parser& p, const json& root, Model& m) {
@@ -661,7 +664,7 @@ void parse_bolts(Parser& p, const json& root, Model& m) {
         const json& o = list[i];
         Bolt b;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, keys_of(bolt_fields(), {"from", "to"}));
+            p.check_keys(o, path, keys_of(bolt_fields(), {"name", "from", "to"}));
             b.name = p.string(o, path, "name", std::nullopt);
             b.from = p.point(o, path, "from");
             b.to = p.point(o, path, "to");

@@ -55,20 +55,14 @@ json analysis_json(const AnalysisSettings& a, const AnalysisSettings* base) {
     put("type", std::string(a.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static"),
         std::string(b.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static"));
     put("steps", a.steps, b.steps);
-    put("time_step", a.time_step, b.time_step);
-    put("max_displacement_ratio", a.max_displacement_ratio, b.max_displacement_ratio);
-    put("penalty", a.penalty, b.penalty);
-    put("dynamic_ratio", a.dynamic_ratio, b.dynamic_ratio);
+    for (const RecordField<AnalysisSettings>& f : analysis_fields())
+        put(f.field.key, to_file_unit(f.field.quantity, a.*f.member), to_file_unit(f.field.quantity, b.*f.member));
     put("open_close_iterations", a.max_open_close_iterations, b.max_open_close_iterations);
     put("plastic_iterations", a.max_plastic_iterations, b.max_plastic_iterations);
-    put("plastic_tolerance", a.plastic_tolerance, b.plastic_tolerance);
-    put("min_load_fraction", a.min_load_fraction, b.min_load_fraction);
     put("geometry", std::string(a.geometry == AnalysisSettings::Geometry::Initial ? "initial" : "updated"),
         std::string(b.geometry == AnalysisSettings::Geometry::Initial ? "initial" : "updated"));
     put("output_every", a.output_every, b.output_every);
     put("plasticity", a.plasticity, b.plasticity);
-    // Written only when not the default (files stay as they were before it existed).
-    if (a.equilibrium_ratio != b.equilibrium_ratio) o["equilibrium_ratio"] = a.equilibrium_ratio;
     if (o.is_null()) o = json::object();
     return o;
 }

@@ -84,6 +84,42 @@ const std::vector<RecordField<Bolt>>& bolt_fields()
     return fields;
 }
 
+const std::vector<RecordField<AnalysisSettings>>& analysis_fields()
+{
+    const AnalysisSettings defaults;
+    static const std::vector<RecordField<AnalysisSettings>> fields{
+        {{"time_step", "time step", MCDDA_TRANSLATABLE("ModelFields", "Time step Δt"), Quantity::Time,
+          defaults.time_step, above(0.0), std::nullopt, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps")},
+         &AnalysisSettings::time_step},
+        {{"max_displacement_ratio", "max displacement ratio", MCDDA_TRANSLATABLE("ModelFields", "Max displacement ratio"),
+          Quantity::Ratio, defaults.max_displacement_ratio, above(0.0), Bound{0.1, true}, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Largest displacement in one step divided by the model size (Shi's g2)")},
+         &AnalysisSettings::max_displacement_ratio},
+        {{"penalty", "penalty", MCDDA_TRANSLATABLE("ModelFields", "Penalty"), Quantity::Stiffness, defaults.penalty,
+          from(0.0), std::nullopt, 0.0, MCDDA_TRANSLATABLE("ModelFields", "automatic"),
+          MCDDA_TRANSLATABLE("ModelFields", "Contact spring stiffness; 0 = automatic (from E)")},
+         &AnalysisSettings::penalty},
+        {{"dynamic_ratio", "dynamic ratio", MCDDA_TRANSLATABLE("ModelFields", "Dynamic ratio"), Quantity::Ratio,
+          defaults.dynamic_ratio, from(0.0), Bound{1.0, true}, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Fraction of the velocity carried into the next step of a dynamic analysis (1: none lost)")},
+         &AnalysisSettings::dynamic_ratio},
+        {{"plastic_tolerance", "plastic tolerance", MCDDA_TRANSLATABLE("ModelFields", "Equilibrium tolerance"),
+          Quantity::Ratio, defaults.plastic_tolerance, above(0.0), std::nullopt, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Out-of-balance force, relative to the force scale, below which a step's equilibrium iterations stop")},
+         &AnalysisSettings::plastic_tolerance},
+        {{"min_load_fraction", "min load fraction", MCDDA_TRANSLATABLE("ModelFields", "Smallest load increment"),
+          Quantity::Ratio, defaults.min_load_fraction, above(0.0), Bound{1.0, true}, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "A static step that does not converge is halved down to this fraction of a step; failing there is a collapse")},
+         &AnalysisSettings::min_load_fraction},
+        {{"equilibrium_ratio", "equilibrium ratio", MCDDA_TRANSLATABLE("ModelFields", "Equilibrium ratio"),
+          Quantity::Ratio, defaults.equilibrium_ratio, above(0.0), std::nullopt, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "A run whose unbalanced-force ratio ends above this is reported as not in equilibrium")},
+         &AnalysisSettings::equilibrium_ratio},
+    };
+    return fields;
+}
+
 double to_file_unit(Quantity quantity, double model_value)
 {
     if (quantity != Quantity::Angle) return model_value;
@@ -114,6 +150,7 @@ std::string value_text(Quantity quantity, double model_value)
     case Quantity::Angle: out << "°"; break;
     case Quantity::Stiffness:
     case Quantity::Force: out << " N/m"; break;
+    case Quantity::Time: out << " s"; break;
     }
     return out.str();
 }

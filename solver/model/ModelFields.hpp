@@ -1,6 +1,6 @@
 #pragma once
 /// \file ModelFields.hpp
-/// The number fields of materials, joint materials and bolts, each declared once: its key in the
+/// The number fields of materials, joint materials, bolts and analysis settings, each declared once: its key in the
 /// model file, its name in messages, its label and help text in the desktop program's forms, its
 /// quantity (which fixes its units in the file, the model and the forms), its default and the
 /// values it may take. The reader, the writer, the validator and the forms all go through these
@@ -29,6 +29,7 @@ enum class Quantity {
     Angle,      ///< degrees in the file, radians in the model
     Stiffness,  ///< N/m per metre of model thickness
     Force,      ///< N/m per metre of model thickness
+    Time,       ///< s
 };
 
 /// One end of the values a field may take.
@@ -60,6 +61,10 @@ struct RecordField {
 const std::vector<RecordField<Material>>& material_fields();
 const std::vector<RecordField<JointMaterial>>& joint_material_fields();
 const std::vector<RecordField<Bolt>>& bolt_fields();
+/// The number settings of an analysis (the whole-number and choice settings — steps, type,
+/// geometry, iterations — are read and written by hand). A stage's analysis starts from the
+/// model's, so the reader takes an absent setting from the record, not from default_value.
+const std::vector<RecordField<AnalysisSettings>>& analysis_fields();
 
 /// Whether `a` and `b` agree in every declared field.
 template <class Record>

@@ -312,18 +312,10 @@ void check_stages(Checker& c, const Model& m) {
 void check_analysis(Checker& c, const AnalysisSettings& a, const std::string& at) {
     const std::string path = at;
     if (a.steps < 1) c.error(path + "/steps", "at least one step is needed");
-    if (!(a.time_step > 0.0)) c.error(path + "/time_step", "time step must be positive (got " + num(a.time_step) + " s)");
-    if (!(a.max_displacement_ratio > 0.0 && a.max_displacement_ratio <= 0.1))
-        c.error(path + "/max_displacement_ratio", "must lie in (0, 0.1] (got " + num(a.max_displacement_ratio) + ")");
-    if (!(a.penalty >= 0.0)) c.error(path + "/penalty", "penalty must not be negative (0 = automatic)");
-    if (!(a.dynamic_ratio >= 0.0 && a.dynamic_ratio <= 1.0)) c.error(path + "/dynamic_ratio", "must lie in [0, 1]");
+    check_fields(c, a, analysis_fields(), path);
     if (a.max_open_close_iterations < 1) c.error(path + "/open_close_iterations", "must be at least 1");
     if (a.max_plastic_iterations < 1) c.error(path + "/plastic_iterations", "must be at least 1");
-    if (!(a.plastic_tolerance > 0.0)) c.error(path + "/plastic_tolerance", "must be positive");
-    if (!(a.min_load_fraction > 0.0 && a.min_load_fraction <= 1.0))
-        c.error(path + "/min_load_fraction", "must lie in (0, 1]");
     if (a.output_every < 1) c.error(path + "/output_every", "must be at least 1");
-    if (!(a.equilibrium_ratio > 0.0)) c.error(path + "/equilibrium_ratio", "must be positive");
 }
 
 }  // namespace

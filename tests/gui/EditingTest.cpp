@@ -24,6 +24,7 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
@@ -607,6 +608,10 @@ void EditingTest::stageListShowsAndEditsStages()
     first_bolt.front()->setCheckState(Qt::Checked);
     window.findChild<QSpinBox*>(QStringLiteral("stageSteps"))->setValue(4);
     window.findChild<QSpinBox*>(QStringLiteral("stageRelease"))->setValue(2);
+    auto* time_step = window.findChild<QDoubleSpinBox*>(QStringLiteral("stage_time_step"));
+    QVERIFY(time_step && time_step->isEnabled());
+    QCOMPARE(time_step->value(), window.document()->model().analysis.time_step);  // a new stage starts from the model's
+    time_step->setValue(2.5);
     window.findChild<QPushButton*>(QStringLiteral("applyStage"))->click();
     const Stage& edited = window.document()->model().stages.back();
     QCOMPARE(edited.name, std::string("backfill"));
@@ -614,6 +619,8 @@ void EditingTest::stageListShowsAndEditsStages()
     QCOMPARE(edited.remove, std::vector<std::string>{"roof bolt 1"});
     QCOMPARE(edited.analysis.steps, 4);
     QCOMPARE(edited.release_steps, 2);
+    QCOMPARE(edited.analysis.time_step, 2.5);
+    QCOMPARE(edited.analysis.plastic_tolerance, window.document()->model().analysis.plastic_tolerance);  // untouched
     QCOMPARE(guitest::count_around(*view, 4.26, 4.26, view::palette::bolt, 3), 0);  // roof bolt 1 taken out
     QCOMPARE(undo->count(), edits + 2);
     QVERIFY(guitest::count_around(*view, heading.x, heading.y, rock) > 40);  // built again in it

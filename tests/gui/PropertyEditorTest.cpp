@@ -315,7 +315,7 @@ void PropertyEditorTest::everyFieldExplainsItself()
         QVERIFY2(!w->whatsThis().isEmpty(), qPrintable(name + QStringLiteral(" has no What's This")));
     }
     QVERIFY2(fields >= 40, qPrintable(QString::number(fields)));
-    auto* penalty = editor->findChild<QDoubleSpinBox*>(QStringLiteral("analysisPenalty"));
+    auto* penalty = editor->findChild<QDoubleSpinBox*>(QStringLiteral("analysis_penalty"));
     QVERIFY(penalty);
     penalty->setValue(0.0);
     QCOMPARE(penalty->text(), QStringLiteral("automatic"));
@@ -358,6 +358,7 @@ void PropertyEditorTest::formsFollowTheFieldDeclarations()
     check_declared(editor, material_fields(), QStringLiteral("material_"), m.materials[0]);
     check_declared(editor, joint_material_fields(), QStringLiteral("joint_"), m.joint_materials[0]);
     check_declared(editor, bolt_fields(), QStringLiteral("bolt_"), Bolt{});
+    check_declared(editor, analysis_fields(), QStringLiteral("analysis_"), m.analysis);
     // The unit weight is typed in kN/m³ and stored as a density.
     auto* gamma = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_density"));
     QVERIFY(gamma->suffix().contains(QStringLiteral("kN/m³")));

@@ -259,7 +259,7 @@ void ResultsTest::unbalancedRatioBesideTheHistory()
         return n;
     };
     QVERIFY2(count(gui::UnbalancedPlot::seriesColor()) > 30, qPrintable(QString::number(count(gui::UnbalancedPlot::seriesColor()))));
-    QVERIFY2(count(gui::UnbalancedPlot::limitColor()) > 10, qPrintable(QString::number(count(gui::UnbalancedPlot::limitColor()))));
+    QVERIFY2(count(gui::UnbalancedPlot::limitColor()) > 10, qPrintable(QString::number(count(gui::UnbalancedPlot::limitColor())) + QStringLiteral(" size %1x%2 axis %3..%4").arg(image.width()).arg(image.height()).arg(unbalanced->limitSeries()->at(0).y()).arg(unbalanced->limitSeries()->at(1).x())));
 }
 
 // Issue 13, item 10: the automatic deformation scale is used and shown beside the field; a

@@ -64,6 +64,7 @@ TEST(ModelFields, EveryFieldRoundTripsThroughTheFile) {
     m.materials[0].dilation_angle = 0.5 * m.materials[0].friction_angle;  // ψ ≤ φ
     set_all(m.joint_materials[0], joint_material_fields());
     set_all(m.bolts[0], bolt_fields());
+    set_all(m.analysis, analysis_fields());
     std::vector<Diagnostic> d;
     validate_model(m, d);
     EXPECT_FALSE(has_errors(d)) << all_messages(d);
@@ -73,6 +74,7 @@ TEST(ModelFields, EveryFieldRoundTripsThroughTheFile) {
     expect_same(m.materials[0], back.model->materials[0], material_fields());
     expect_same(m.joint_materials[0], back.model->joint_materials[0], joint_material_fields());
     expect_same(m.bolts[0], back.model->bolts[0], bolt_fields());
+    expect_same(m.analysis, back.model->analysis, analysis_fields());
 }
 
 // A value below a field's lower bound is an error at that field's place, naming the field, the
@@ -96,6 +98,7 @@ TEST(ModelFields, EveryLowerBoundIsChecked) {
     check(m.materials[0], material_fields(), "/materials/0/", m);
     check(m.joint_materials[0], joint_material_fields(), "/joint_materials/0/", m);
     check(m.bolts[0], bolt_fields(), "/bolts/0/", m);
+    check(m.analysis, analysis_fields(), "/analysis/", m);
     std::vector<Diagnostic> d;
     validate_model(m, d);
     EXPECT_FALSE(has_errors(d)) << all_messages(d);  // and each error went away with its cause
