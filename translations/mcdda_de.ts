@@ -3183,7 +3183,6 @@
     <name>mcdda::gui::UnbalancedPlot</name>
     <message>
         <location filename="../gui/results/UnbalancedPlot.cpp" line="29"/>
-        <location filename="../gui/results/UnbalancedPlot.cpp" line="43"/>
         <source>unbalanced-force ratio</source>
         <translation>Ungleichgewichtsverhältnis</translation>
     </message>
@@ -3196,6 +3195,11 @@
         <location filename="../gui/results/UnbalancedPlot.cpp" line="40"/>
         <source>step</source>
         <translation>Schritt</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="43"/>
+        <source>ratio</source>
+        <translation>Verhältnis</translation>
     </message>
     <message>
         <location filename="../gui/results/UnbalancedPlot.cpp" line="55"/>

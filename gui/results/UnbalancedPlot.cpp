@@ -15,7 +15,7 @@ namespace mcdda::gui {
 
 namespace {
 
-/// A log axis cannot show 0: a ratio of exactly 0 (nothing loaded yet) is drawn at this floor.
+/// The smallest ratio the axis goes down to.
 constexpr double floor_ratio = 1e-12;
 
 }  // namespace
@@ -40,7 +40,7 @@ UnbalancedPlot::UnbalancedPlot(QWidget* parent) : QWidget(parent)
     x_axis_->setTitleText(tr("step"));
     x_axis_->setLabelFormat(QStringLiteral("%d"));
     y_axis_ = new QLogValueAxis(chart);
-    y_axis_->setTitleText(tr("unbalanced-force ratio"));
+    y_axis_->setTitleText(tr("ratio"));  // short: the dock is narrow; the tooltip says which ratio
     y_axis_->setLabelFormat(QStringLiteral("%.0e"));
     chart->addAxis(x_axis_, Qt::AlignBottom);
     chart->addAxis(y_axis_, Qt::AlignLeft);
@@ -67,22 +67,28 @@ QColor UnbalancedPlot::limitColor() { return QColor(200, 30, 30); }
 void UnbalancedPlot::show(const HistoryTable& table)
 {
     const int si = table.column(QStringLiteral("step")), ri = table.column(QStringLiteral("unbalanced_ratio"));
-    QList<QPointF> points;
-    double lo = limit_ratio_, hi = limit_ratio_;
+    // Whole decades around the positive ratios and the limit. A ratio of exactly 0 (nothing
+    // loaded yet) has no place on a log axis: it is drawn on the axis' floor, which it does not
+    // push down (a floor of 1e-12 left 14 decades whose labels no longer fit).
+    double lo = limit_ratio_ / 10.0, hi = limit_ratio_;  // the limit a decade above the floor, in sight
     last_step_ = 1.0;
     if (si >= 0 && ri >= 0)
         for (const auto& row : table.rows) {
-            const double ratio = std::max(row[ri], floor_ratio);
-            points.append(QPointF(row[si], ratio));
-            lo = std::min(lo, ratio), hi = std::max(hi, ratio);
+            if (row[ri] > 0.0) lo = std::min(lo, row[ri]), hi = std::max(hi, row[ri]);
             last_step_ = std::max(last_step_, row[si]);
         }
+    lo = std::max(lo, floor_ratio);
+    const double bottom = std::pow(10.0, std::floor(std::log10(lo)));
+    QList<QPointF> points;
+    if (si >= 0 && ri >= 0)
+        for (const auto& row : table.rows) points.append(QPointF(row[si], std::max(row[ri], bottom)));
     series_->replace(points);
     x_axis_->setRange(0.0, last_step_);
-    // Whole decades around the data and the limit.
-    y_axis_->setRange(std::pow(10.0, std::floor(std::log10(lo))), std::pow(10.0, std::ceil(std::log10(hi)) + 0.0));
+    y_axis_->setRange(bottom, std::pow(10.0, std::ceil(std::log10(hi))));
     redrawLimit();
 }
+
+double UnbalancedPlot::axisFloor() const { return y_axis_->min(); }
 
 void UnbalancedPlot::setLimit(double ratio)
 {

@@ -30,6 +30,8 @@ public:
     /// The ratio per step, and the limit line.
     QLineSeries* series() const { return series_; }
     QLineSeries* limitSeries() const { return limit_; }
+    /// The bottom of the log axis, where ratios of 0 are drawn.
+    double axisFloor() const;
     QChartView* chartView() const { return view_; }
     /// The colours of the ratio and of the limit line.
     static QColor seriesColor();
