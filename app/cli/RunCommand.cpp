@@ -9,6 +9,7 @@
 #include "run/RunLoop.hpp"
 #include "run/RunOutput.hpp"
 #include "run/Simulation.hpp"
+#include "run/StrengthReduction.hpp"
 
 #include <ctime>
 #include <atomic>
@@ -42,6 +43,70 @@ void print_timings(const RunTimings& t, int steps) {
 
 }  // namespace
 
+namespace {
+
+/// `mcdda run` of a strength reduction analysis: the trials one line each, then the factor.
+int run_strength_reduction(const Request& r, const Preprocessed& p, const std::string& stem) {
+    std::unique_ptr<StrengthReductionSearch> search;
+    try {
+        search = std::make_unique<StrengthReductionSearch>(p);
+    } catch (const std::exception& e) {
+        std::cerr << r.model << ": error: " << e.what() << "\n";
+        return exit_model_error;
+    }
+    std::unique_ptr<RunOutput> output;
+    try {
+        output = std::make_unique<RunOutput>(r.out, stem);
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return exit_output_error;
+    }
+    if (!r.quiet)
+        std::cout << "running " << r.model << ": " << p.statistics.elements << " elements, " << p.statistics.blocks
+                  << " blocks, strength reduction -> " << r.out << std::endl;
+    stop_requested = false;
+    auto previous_handler = std::signal(SIGINT, request_stop);
+    auto previous_term_handler = std::signal(SIGTERM, request_stop);
+    StrengthReductionSearch::Callbacks callbacks;
+    callbacks.should_stop = [] { return stop_requested.load(); };
+    callbacks.on_trial = [&](const StrengthTrial& t) {
+        if (r.quiet) return;
+        char line[200];
+        std::snprintf(line, sizeof line, "trial %d: F = %.4f %s (%d steps, %d iterations, largest displacement %.4g m)",
+                      t.number, t.factor, t.stands ? "stands" : ("does not stand: " + t.status).c_str(), t.steps,
+                      t.iterations, t.max_displacement);
+        std::cout << line << std::endl;
+    };
+    RunEnd end;
+    try {
+        end = search->run(output.get(), callbacks);
+    } catch (const std::exception& e) {
+        std::signal(SIGINT, previous_handler);
+        std::signal(SIGTERM, previous_term_handler);
+        std::cerr << "error: " << e.what() << "\n";
+        return exit_output_error;
+    }
+    std::signal(SIGINT, previous_handler);
+    std::signal(SIGTERM, previous_term_handler);
+    try {
+        output->write_summary(&search->simulation(), end.status, end.message, &search->factor());
+    } catch (const std::exception& e) {
+        std::cerr << "error: cannot write the run's summary: " << e.what() << "\n";
+        return exit_output_error;
+    }
+    if (end.status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(end.status) << ": " << end.message << "\n";
+    if (!r.quiet) {
+        const FactorOfSafety& f = search->factor();
+        if (f.found)
+            std::cout << "factor of safety " << f.value << " (stands at " << f.converged << ", not at " << f.not_converged
+                      << "; " << f.trials << " trials); results in " << r.out << "\n";
+    }
+    if (r.profile) print_timings(search->timings(), search->simulation().state().step);
+    return exit_status(end.status);
+}
+
+}  // namespace
+
 int run_run(const Request& r) {
     if (r.threads > 0) set_thread_count(r.threads);
     const Preprocessed p = preprocess_file(r.model, r.overrides, PreprocessStage::Mesh);
@@ -60,6 +125,7 @@ int run_run(const Request& r) {
 
     std::string stem = std::filesystem::path(r.model).stem().string();
     if (stem.empty()) stem = "model";
+    if (is_strength_reduction(p.model)) return run_strength_reduction(r, p, stem);
     // Set up before the output folder is touched: a run refused here leaves earlier results in
     // the folder as they were.
     std::unique_ptr<Simulation> simulation;

@@ -19,7 +19,9 @@ ElementAssembly::ElementAssembly(const Model& model, const Mesh& mesh)
     : model_(&model), mesh_(&mesh), quadratic_(mesh.quadratic()) {
     for (const Material& m : model.materials) {
         laws_.push_back(make_constitutive_law(m, model.analysis.plasticity));
-        has_tangent_ = has_tangent_ || (laws_.back()->may_yield() && laws_.back()->symmetric_tangent());
+        if (!laws_.back()->may_yield()) continue;
+        has_tangent_ = true;
+        symmetric_tangent_ = symmetric_tangent_ && laws_.back()->symmetric_tangent();
     }
 }
 
@@ -115,19 +117,22 @@ int ElementAssembly::evaluate_element(int e, const Eigen::VectorXd& d, const Poi
                                 old.stress_zz[p] + nu * (increment[0] + increment[1])};
         ReturnResult& r = returned[p];
         Eigen::Matrix3d tangent;
-        const bool want_tangent = matrix == ElementMatrix::Tangent && law.symmetric_tangent();
+        const bool want_tangent = matrix == ElementMatrix::Tangent && law.may_yield();
         r = law.return_map(trial, want_tangent ? &tangent : nullptr);
         if (r.plastic) ++yielding;
         const Eigen::Vector3d sigma(r.stress.xx, r.stress.yy, r.stress.xy);
         f.noalias() += w * g.B[q].transpose() * sigma;
         if (!k) continue;
         if (want_tangent && r.plastic) {
-            // Symmetric up to round-off for ψ = φ. Non-associated points keep D (below): the
-            // symmetric part of their tangent is indefinite, and the associated law's
-            // tangent was measured not to converge (Lavarak cavern); the initial-stress
-            // iteration with D does.
-            const Eigen::Matrix3d C = 0.5 * (tangent + tangent.transpose());
-            k->noalias() += w * g.B[q].transpose() * C * g.B[q];
+            // Symmetric up to round-off for ψ = φ (symmetrised, so Cholesky sees an exactly
+            // symmetric matrix); for ψ < φ the exact unsymmetric tangent, which keeps Newton's
+            // convergence quadratic where collapse is judged (factorised by LU).
+            if (law.symmetric_tangent()) {
+                const Eigen::Matrix3d C = 0.5 * (tangent + tangent.transpose());
+                k->noalias() += w * g.B[q].transpose() * C * g.B[q];
+            } else {
+                k->noalias() += w * g.B[q].transpose() * tangent * g.B[q];
+            }
         } else {
             k->noalias() += w * g.B[q].transpose() * D * g.B[q];
         }

@@ -34,7 +34,7 @@ struct PointStates {
 enum class ElementMatrix {
     None,     ///< forces only
     Elastic,  ///< ∫BᵀDB: the initial-stress (modified Newton) iteration
-    Tangent,  ///< ∫BᵀCB with C the algorithmic tangent of the return mapping (ψ = φ), else D
+    Tangent,  ///< ∫BᵀCB with C the algorithmic tangent of the return mapping (unsymmetric for ψ < φ)
 };
 
 class ElementAssembly {
@@ -63,9 +63,11 @@ public:
     void set_active(std::vector<char> active) { active_ = std::move(active); }
     bool active(int e) const { return active_.empty() || active_[e]; }
 
-    /// Some material may yield with associated flow (ψ = φ): ElementMatrix::Tangent differs from
-    /// the elastic matrix there (non-associated points keep the elastic stiffness).
+    /// Some material may yield: ElementMatrix::Tangent differs from the elastic matrix there.
     bool has_tangent() const { return has_tangent_; }
+    /// Every material that may yield has a symmetric tangent (associated flow): the tangent
+    /// matrix is symmetric; otherwise it is not (SymmetricSystem's unsymmetric mode).
+    bool symmetric_tangent() const { return symmetric_tangent_; }
 
     struct Evaluation {
         int yielding = 0;          ///< integration points on the yield surface
@@ -98,6 +100,7 @@ private:
     bool quadratic_ = false;
     std::vector<std::unique_ptr<ConstitutiveLaw>> laws_;  ///< per material
     bool has_tangent_ = false;                 ///< see has_tangent()
+    bool symmetric_tangent_ = true;            ///< see symmetric_tangent()
     std::vector<Triangle3::Geometry> linear_;  ///< per element, three-node meshes
     std::vector<Triangle6::Geometry> quadratic_geometry_;  ///< per element, six-node meshes
     /// Per-element results of one chunk of evaluate(), kept between calls: the plastic

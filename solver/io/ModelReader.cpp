@@ -346,13 +346,14 @@ void parse_materials(Parser& p, const json& root, Model& m) {
         const json& o = list[i];
         Material mat;
         if (!p.is_object(o, path)) { m.materials.push_back(mat); continue; }
-        p.check_keys(o, path, keys_of(material_fields(), {"name", "unit_weight", "plastic"}));
+        p.check_keys(o, path, keys_of(material_fields(), {"name", "unit_weight", "plastic", "reduce"}));
         mat.name = p.string(o, path, "name", std::nullopt);
         read_fields(p, o, path, material_fields(), mat);
         if (o.contains("density") && o.contains("unit_weight"))
             p.error(path, "give either density or unit_weight, not both");
         if (o.contains("unit_weight")) mat.density = p.number(o, path, "unit_weight", 0.0) / standard_gravity;
         mat.plastic = p.boolean(o, path, "plastic", true);
+        mat.reduce = p.boolean(o, path, "reduce", true);
         m.materials.push_back(mat);
     }
 }
@@ -364,8 +365,9 @@ void parse_joint_materials(Parser& p, const json& root, Model& m, std::map<std::
         const json& o = list[i];
         JointMaterial jm;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, keys_of(joint_material_fields(), {"name"}));
+            p.check_keys(o, path, keys_of(joint_material_fields(), {"name", "reduce"}));
             jm.name = p.string(o, path, "name", std::nullopt);
+            jm.reduce = p.boolean(o, path, "reduce", true);
             read_fields(p, o, path, joint_material_fields(), jm);
         }
         m.joint_materials.push_back(jm);
@@ -633,12 +635,13 @@ void parse_mesh(Parser& p, const json& root, Model& m) {
 void parse_analysis_object(Parser& p, const json& o, const std::string& path, AnalysisSettings& a) {
     if (!p.is_object(o, path)) return;
     p.check_keys(o, path, keys_of(analysis_fields(), {"type", "steps", "open_close_iterations", "plastic_iterations",
-                                                      "geometry", "output_every", "plasticity"}));
-    const std::string type =
-        p.string(o, path, "type", std::string(a.kind == AnalysisSettings::Kind::Static ? "static" : "dynamic"));
-    if (type == "static") a.kind = AnalysisSettings::Kind::Static;
+                                                      "geometry", "output_every", "plasticity", "max_trials"}));
+    const std::string type = p.string(o, path, "type", std::string(analysis_type_name(a)));
+    a.strength_reduction = type == "strength_reduction";
+    if (type == "static" || type == "strength_reduction") a.kind = AnalysisSettings::Kind::Static;
     else if (type == "dynamic") a.kind = AnalysisSettings::Kind::Dynamic;
-    else p.error(path + "/type", "must be \"static\" or \"dynamic\", got \"" + type + "\"");
+    else p.error(path + "/type", "must be \"static\", \"dynamic\" or \"strength_reduction\", got \"" + type + "\"");
+    a.max_trials = static_cast<int>(p.integer(o, path, "max_trials", a.max_trials));
     a.steps = static_cast<int>(p.integer(o, path, "steps", a.steps));
     read_fields_over(p, o, path, analysis_fields(), a);
     a.max_open_close_iterations = static_cast<int>(p.integer(o, path, "open_close_iterations", a.max_open_close_iterations));
@@ -708,7 +711,7 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
         st.analysis = m.analysis;
         if (p.is_object(o, path)) {
             p.check_keys(o, path, {"name", "excavate", "activate", "materials", "install", "remove", "analysis",
-                                   "release", "target_ratio"});
+                                   "release", "target_ratio", "reset_displacements"});
             st.name = p.string(o, path, "name", std::nullopt);
             st.excavate = region_indices(o, path, "excavate");
             st.activate = region_indices(o, path, "activate");
@@ -737,6 +740,7 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
                 st.release_table = optional_reference(p, r, where, "table", table_names, "load table");
             }
             st.target_ratio = p.number(o, path, "target_ratio", 0.0);
+            st.reset_displacements = p.boolean(o, path, "reset_displacements", false);
         }
         m.stages.push_back(st);
     }

@@ -52,8 +52,7 @@ json analysis_json(const AnalysisSettings& a, const AnalysisSettings* base) {
     };
     const AnalysisSettings defaults;
     const AnalysisSettings& b = base ? *base : defaults;
-    put("type", std::string(a.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static"),
-        std::string(b.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static"));
+    put("type", std::string(analysis_type_name(a)), std::string(analysis_type_name(b)));
     put("steps", a.steps, b.steps);
     for (const RecordField<AnalysisSettings>& f : analysis_fields())
         put(f.field.key, to_file_unit(f.field.quantity, a.*f.member), to_file_unit(f.field.quantity, b.*f.member));
@@ -63,6 +62,7 @@ json analysis_json(const AnalysisSettings& a, const AnalysisSettings* base) {
         std::string(b.geometry == AnalysisSettings::Geometry::Initial ? "initial" : "updated"));
     put("output_every", a.output_every, b.output_every);
     put("plasticity", a.plasticity, b.plasticity);
+    put("max_trials", a.max_trials, b.max_trials);
     if (o.is_null()) o = json::object();
     return o;
 }
@@ -80,6 +80,7 @@ json to_json(const Model& m) {
         o["name"] = mat.name;
         write_fields(mat, material_fields(), o);
         o["plastic"] = mat.plastic;
+        if (!mat.reduce) o["reduce"] = false;
         materials.push_back(std::move(o));
     }
     root["materials"] = std::move(materials);
@@ -90,6 +91,7 @@ json to_json(const Model& m) {
             json o;
             o["name"] = jm.name;
             write_fields(jm, joint_material_fields(), o);
+            if (!jm.reduce) o["reduce"] = false;
             list.push_back(std::move(o));
         }
         root["joint_materials"] = std::move(list);
@@ -292,6 +294,7 @@ json to_json(const Model& m) {
             if (st.release_table >= 0) o["release"] = {{"table", name_of(m.load_tables, st.release_table, "load table")}};
             else if (st.release_steps > 0) o["release"] = {{"steps", st.release_steps}};
             if (st.target_ratio > 0.0) o["target_ratio"] = st.target_ratio;
+            if (st.reset_displacements) o["reset_displacements"] = true;
             list.push_back(std::move(o));
         }
         root["stages"] = std::move(list);

@@ -1,6 +1,7 @@
 #include "linalg/SymmetricSystem.hpp"
 
 #include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
 
 #include <algorithm>
 #include <chrono>
@@ -17,7 +18,13 @@ public:
     Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
 };
 
-SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()) {
+// UMFPACK's LU with its default (unsymmetric or symmetric) strategy chosen from the pattern.
+class LuFactor {
+public:
+    Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu;
+};
+
+SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()), lu_(std::make_unique<LuFactor>()) {
     factor_->llt.cholmod().print = 0;  // failures are reported through SingularSystem, not stderr
     // LLᵀ in both methods: a simplicial LDLᵀ would accept an indefinite matrix (a mechanism)
     // and only stop at an exactly zero pivot.
@@ -64,7 +71,11 @@ void SymmetricSystem::set_pattern(int equations, const std::vector<CouplingGroup
     diagonal_slot_.resize(equations);
     for (int e = 0; e < equations; ++e) diagonal_slot_[e] = outer[e];  // the diagonal is each column's first row
     analysed_ = false;
-    has_factor_ = false;
+    has_factor_ = llt_valid_ = false;
+    full_.resize(0, 0);
+    full_source_.clear();
+    lu_analysed_ = false;
+    lu_current_ = false;
     clear_values();
 }
 
@@ -96,7 +107,7 @@ void SymmetricSystem::set_groups(const std::vector<CouplingGroup>& groups, int k
         for (int a = 0; a < g.size; ++a)
             for (int b = 0; b <= a; ++b) {
                 const int i = g.equation[a], j = g.equation[b];
-                slots_.push_back(i < 0 || j < 0 ? -1 : slot_of(i, j));
+                slots_.push_back(i < 0 || j < 0 ? -1 : 2 * slot_of(i, j) + (i < j ? 1 : 0));
             }
         group_slot_offset_.push_back(static_cast<int>(slots_.size()));
     }
@@ -104,6 +115,7 @@ void SymmetricSystem::set_groups(const std::vector<CouplingGroup>& groups, int k
 
 void SymmetricSystem::clear_values() {
     std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
+    if (unsymmetric_) upper_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
 }
 
 void SymmetricSystem::save_values(std::vector<double>& out) const {
@@ -118,9 +130,22 @@ void SymmetricSystem::add(int g, const double* k) {
     const int n = group_size_[g];
     const int* slot = slots_.data() + group_slot_offset_[g];
     double* values = matrix_.valuePtr();
+    if (!unsymmetric_) {
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b <= a; ++b, ++slot)
+                if (*slot >= 0) values[*slot >> 1] += k[a + b * n];
+        return;
+    }
+    // The lower triangle's entry is the block's (a, b) unless equation a lies above equation b.
+    double* upper = upper_.data();
     for (int a = 0; a < n; ++a)
-        for (int b = 0; b <= a; ++b, ++slot)
-            if (*slot >= 0) values[*slot] += k[a + b * n];
+        for (int b = 0; b <= a; ++b, ++slot) {
+            if (*slot < 0) continue;
+            const int at = *slot >> 1;
+            const bool swapped = *slot & 1;
+            values[at] += swapped ? k[b + a * n] : k[a + b * n];
+            if (a != b) upper[at] += swapped ? k[a + b * n] : k[b + a * n];
+        }
 }
 
 void SymmetricSystem::add_diagonal(int e, double value) { matrix_.valuePtr()[diagonal_slot_[e]] += value; }
@@ -140,9 +165,15 @@ constexpr double solve_flop_cost_simplicial = 1.5;
 }  // namespace
 
 void SymmetricSystem::factorize(bool may_reuse) {
+    if (unsymmetric_) {
+        factorize_lu();
+        return;
+    }
     // Keep the held factor while iterating with it has cost less than a factorisation.
-    if (may_reuse && has_factor_ && analysed_ && refinement_flops_ < factor_->llt.cholmod().fl) {
+    if (may_reuse && llt_valid_ && analysed_ && refinement_flops_ < factor_->llt.cholmod().fl) {
         stale_ = true;
+        lu_current_ = false;
+        has_factor_ = true;
         last_refinement_iterations_ = 0;
         ++reused_factors_;
         return;
@@ -158,18 +189,72 @@ void SymmetricSystem::factorize_now() {
         ++analyses_;
     }
     has_factor_ = false;
+    lu_current_ = false;
     stale_ = false;
     refinement_flops_ = 0.0;
     factor_->llt.factorize(matrix_);
     ++factorizations_;
     factorization_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    has_factor_ = factor_->llt.info() == Eigen::Success;
+    has_factor_ = llt_valid_ = factor_->llt.info() == Eigen::Success;
     if (!has_factor_)
         throw SingularSystem("the stiffness matrix is not positive definite (a block is free to move: "
                                  "check supports, or use a dynamic analysis)");
 }
 
+void SymmetricSystem::factorize_lu() {
+    const auto start = std::chrono::steady_clock::now();
+    if (full_.rows() != equations_) {
+        // The whole pattern, column by column: above the diagonal the transposed lower entries.
+        std::vector<std::vector<std::pair<int, int>>> columns(equations_);  // (row, source)
+        const StorageIndex* outer = matrix_.outerIndexPtr();
+        const StorageIndex* inner = matrix_.innerIndexPtr();
+        for (int c = 0; c < equations_; ++c)
+            for (StorageIndex p = outer[c]; p < outer[c + 1]; ++p) {
+                const int r = inner[p];
+                columns[c].emplace_back(r, 2 * static_cast<int>(p));
+                if (r != c) columns[r].emplace_back(c, 2 * static_cast<int>(p) + 1);
+            }
+        std::vector<StorageIndex> full_outer(equations_ + 1, 0);
+        for (int c = 0; c < equations_; ++c) {
+            std::sort(columns[c].begin(), columns[c].end());
+            full_outer[c + 1] = full_outer[c] + static_cast<StorageIndex>(columns[c].size());
+        }
+        full_.resize(equations_, equations_);
+        full_.resizeNonZeros(full_outer.back());
+        std::copy(full_outer.begin(), full_outer.end(), full_.outerIndexPtr());
+        full_source_.resize(full_outer.back());
+        for (int c = 0; c < equations_; ++c)
+            for (std::size_t k = 0; k < columns[c].size(); ++k) {
+                full_.innerIndexPtr()[full_outer[c] + k] = columns[c][k].first;
+                full_source_[full_outer[c] + k] = columns[c][k].second;
+            }
+        lu_analysed_ = false;
+    }
+    const double* lower = matrix_.valuePtr();
+    double* values = full_.valuePtr();
+    for (std::size_t p = 0; p < full_source_.size(); ++p) {
+        const int source = full_source_[p];
+        values[p] = source & 1 ? upper_[source >> 1] : lower[source >> 1];
+    }
+    if (!lu_analysed_) {
+        lu_->lu.analyzePattern(full_);
+        lu_analysed_ = true;
+        ++analyses_;
+    }
+    has_factor_ = false;
+    stale_ = false;
+    lu_->lu.factorize(full_);
+    ++factorizations_;
+    factorization_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    lu_current_ = true;
+    has_factor_ = lu_->lu.info() == Eigen::Success;
+    if (!has_factor_)
+        throw SingularSystem("the tangent stiffness matrix is singular (a mechanism: the material can carry "
+                             "no more, or a block is free to move)");
+}
+
 Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs) {
+    if (lu_current_) return lu_->lu.solve(rhs);
     const cholmod_common& c = factor_->llt.cholmod();
     // CHOLMOD chooses the supernodal method from the flops per factor entry (supernodal_switch).
     const double cost = c.fl >= c.supernodal_switch * c.lnz ? solve_flop_cost_supernodal : solve_flop_cost_simplicial;

@@ -6,6 +6,11 @@
 /// symbolic analysis is kept while the pattern is unchanged, the numeric factor for any number of
 /// right-hand sides (the plastic iterations) and, on request, for later matrices close to its own
 /// (solved by conjugate gradients preconditioned by it).
+///
+/// An unsymmetric matrix (the consistent tangent of non-associated Mohr–Coulomb flow) uses the
+/// same pattern: in unsymmetric mode add() also keeps the upper triangle, and factorize() forms
+/// the whole matrix and factorises it by LU (UMFPACK), keeping UMFPACK's symbolic analysis
+/// while the pattern is unchanged.
 
 #include <Eigen/Sparse>
 
@@ -16,6 +21,7 @@
 namespace mcdda {
 
 class CholmodFactor;
+class LuFactor;
 
 /// The matrix could not be factorised: it is not positive definite (a mechanism).
 struct SingularSystem : std::runtime_error {
@@ -54,7 +60,13 @@ public:
     /// Zeroes the matrix values (the pattern stays).
     void clear_values();
 
-    /// Adds the dense symmetric block `k` (size×size, column-major, lower part read) of group `g`.
+    /// Unsymmetric mode for the matrix assembled next (set before clear_values and add): add()
+    /// reads the whole block, factorize() uses LU. Off: the lower part is read, Cholesky.
+    void set_unsymmetric(bool on) { unsymmetric_ = on; }
+    bool unsymmetric() const { return unsymmetric_; }
+
+    /// Adds the dense block `k` (size×size, column-major) of group `g`: its lower part when the
+    /// system is symmetric, all of it in unsymmetric mode.
     void add(int g, const double* k);
 
     /// Saves and restores the matrix values (e.g. the element part kept across iterations).
@@ -64,7 +76,8 @@ public:
     /// Adds `value` on the diagonal of equation `e` (e ≥ 0).
     void add_diagonal(int e, double value);
 
-    /// Factorises the current matrix; throws SingularSystem when it is not positive definite.
+    /// Factorises the current matrix; throws SingularSystem when it is not positive definite
+    /// (unsymmetric mode: when LU finds it singular).
     ///
     /// With `may_reuse` the factor held (of an earlier matrix of the same kind: the elastic
     /// matrix on a slightly moved geometry, a few contacts changed) is kept while that pays:
@@ -95,13 +108,16 @@ private:
     Eigen::SparseMatrix<double> matrix_;   ///< lower triangle, CSC
     std::vector<int> group_size_;
     std::vector<int> group_slot_offset_{0};
-    std::vector<int> slots_;               ///< per group: lower-triangle pairs (a ≥ b), −1 if fixed
+    /// Per group: lower-triangle pairs (a ≥ b), −1 if fixed; else the value's position times two,
+    /// plus one when equation a < equation b (the block's (a, b) entry is then above the diagonal).
+    std::vector<int> slots_;
     std::vector<int> diagonal_slot_;
 
     int slot_of(int i, int j) const;  ///< position of entry (i, j) in the values, or −1
     std::unique_ptr<CholmodFactor> factor_;
     bool analysed_ = false;
     bool has_factor_ = false;
+    bool llt_valid_ = false;       ///< the Cholesky factor held is of some earlier matrix of this pattern
     bool stale_ = false;           ///< the factor is of an earlier matrix: solves iterate
     double refinement_flops_ = 0;  ///< spent iterating since the last factorisation
     int last_refinement_iterations_ = 0;  ///< of the last solve with the current (stale) matrix
@@ -111,6 +127,17 @@ private:
     int refinement_iterations_ = 0;
     double factorization_seconds_ = 0.0;
     void factorize_now();
+
+    bool unsymmetric_ = false;
+    std::vector<double> upper_;  ///< unsymmetric mode: per lower slot (i > j), the entry (j, i)
+    /// Unsymmetric mode: the whole matrix (CSC) and, per entry, its source: lower slot × 2, plus
+    /// one for an entry above the diagonal (read from upper_). Built once per pattern.
+    Eigen::SparseMatrix<double> full_;
+    std::vector<int> full_source_;
+    std::unique_ptr<LuFactor> lu_;
+    bool lu_analysed_ = false;
+    bool lu_current_ = false;  ///< the factor held is the LU one
+    void factorize_lu();
 };
 
 }  // namespace mcdda

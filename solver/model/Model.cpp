@@ -7,6 +7,11 @@
 
 namespace mcdda {
 
+const char* analysis_type_name(const AnalysisSettings& a) {
+    if (a.strength_reduction) return "strength_reduction";
+    return a.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static";
+}
+
 double distance_to_segment(Point2 p, Point2 a, Point2 b) {
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double len2 = dx * dx + dy * dy;

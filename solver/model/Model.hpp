@@ -40,6 +40,7 @@ struct Material {
     double dilation_angle = 0.0;    ///< ψ (rad), in [0, φ]
     double tensile_strength = 0.0;  ///< tension cut-off (Pa), ≥ 0; 0 = no cut-off beyond MC apex
     bool plastic = true;            ///< false: stays elastic whatever the stress
+    bool reduce = true;             ///< strength reduction divides its strength (false: a footing, a lining)
 };
 
 /// Strength and stiffness of the contacts along a joint (or a region interface).
@@ -50,6 +51,7 @@ struct JointMaterial {
     double tensile_strength = 0.0;  ///< tj (Pa)
     double normal_stiffness = 0.0;  ///< kn (N/m per m thickness); 0 = analysis penalty
     double shear_stiffness = 0.0;   ///< ks (N/m); 0 = analysis penalty / 2.5 … set by solver
+    bool reduce = true;             ///< strength reduction divides its strength
 };
 
 /// A region of one material: an outer ring with optional holes (openings).
@@ -201,7 +203,18 @@ struct AnalysisSettings {
     /// as not in equilibrium.
     double equilibrium_ratio = 1e-2;
     bool plasticity = true;               ///< false: every material stays elastic
+    /// Strength reduction ("type": "strength_reduction"): a static, small-strain analysis
+    /// repeated with c, tan φ and the tensile strengths divided by trial factors F; the largest F
+    /// at which the model still stands is its factor of safety (run/StrengthReduction.hpp).
+    bool strength_reduction = false;
+    /// The search stops once the bracket [stands, does not stand] is narrower than this fraction
+    /// of the factor.
+    double factor_tolerance = 0.005;
+    int max_trials = 40;                  ///< trials the search may take
 };
+
+/// "static", "dynamic" or "strength_reduction": the analysis "type" in the model file.
+const char* analysis_type_name(const AnalysisSettings& a);
 
 /// A rock bolt or cable (Shi's bolt, UDEC's cable): an axial spring between two points, each
 /// anchored in the element it lies in (moving with that element's corner nodes).
@@ -236,6 +249,9 @@ struct Stage {
     /// Static stages: the stage ends early once the unbalanced-force ratio falls below this
     /// (0 = run all its steps).
     double target_ratio = 0.0;
+    /// Displacements are reported from this stage's start (RS2's and PLAXIS's reset): the
+    /// settlement of switching gravity on no longer shows in later stages' pictures.
+    bool reset_displacements = false;
 
     /// Fraction of the stage's out-of-balance force released after `s` (fractional) stage steps.
     double released(double s, const std::vector<LoadTable>& tables) const;

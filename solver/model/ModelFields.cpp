@@ -116,6 +116,10 @@ const std::vector<RecordField<AnalysisSettings>>& analysis_fields()
           Quantity::Ratio, defaults.equilibrium_ratio, above(0.0), std::nullopt, 0.0, nullptr,
           MCDDA_TRANSLATABLE("ModelFields", "A run whose unbalanced-force ratio ends above this is reported as not in equilibrium")},
          &AnalysisSettings::equilibrium_ratio},
+        {{"factor_tolerance", "factor tolerance", MCDDA_TRANSLATABLE("ModelFields", "Factor of safety tolerance"),
+          Quantity::Ratio, defaults.factor_tolerance, above(0.0), Bound{0.1, true}, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Strength reduction: the search for the factor of safety stops once the factors that stand and that do not differ by less than this fraction")},
+         &AnalysisSettings::factor_tolerance},
     };
     return fields;
 }

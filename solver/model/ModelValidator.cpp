@@ -273,6 +273,11 @@ void check_stages(Checker& c, const Model& m) {
         const Stage& st = m.stages[i];
         const std::string path = "/stages/" + std::to_string(i);
         check_analysis(c, st.analysis, path + "/analysis");
+        // A safety stage starts from the stresses of the stages before it and ends the analysis.
+        if (st.analysis.strength_reduction && i + 1 != m.stages.size())
+            c.error(path + "/analysis/type", "a strength reduction stage (\"" + st.name +
+                                                 "\") must be the last stage: it ends with the factor of safety, "
+                                                 "not with a state later stages could start from");
         if (!(st.target_ratio >= 0.0)) c.error(path + "/target_ratio", "must not be negative (0 = run all steps)");
         for (std::size_t k = 0; k < st.excavate.size(); ++k) {
             const int r = st.excavate[k];
@@ -316,6 +321,9 @@ void check_analysis(Checker& c, const AnalysisSettings& a, const std::string& at
     if (a.max_open_close_iterations < 1) c.error(path + "/open_close_iterations", "must be at least 1");
     if (a.max_plastic_iterations < 1) c.error(path + "/plastic_iterations", "must be at least 1");
     if (a.output_every < 1) c.error(path + "/output_every", "must be at least 1");
+    if (a.strength_reduction && a.max_trials < 3)
+        c.error(path + "/max_trials", "a strength reduction search needs at least 3 trials (got " +
+                                          std::to_string(a.max_trials) + ")");
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 namespace mcdda {
 
 RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<bool()>& should_stop,
-                 const std::function<void(const StepReport&)>& on_step) {
+                 const std::function<void(const StepReport&)>& on_step, int until_stage) {
     RunEnd end{RunStatus::Completed, "completed"};
     int last_saved = -1;
     if (output) {
@@ -16,6 +16,7 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         last_saved = 0;
     }
     while (!simulation.finished()) {
+        if (until_stage >= 0 && simulation.stage_complete() && simulation.current_stage() + 1 >= until_stage) break;
         if (should_stop && should_stop()) {
             end = {RunStatus::Cancelled, "cancelled by the user after step " + std::to_string(simulation.state().step)};
             break;

@@ -22,7 +22,8 @@ struct RunEnd {
 /// last into `output` (may be null), calls `on_step` after each accepted step, and checks
 /// `should_stop` before each step (it may block, e.g. while paused). Never throws for solver
 /// failures: they become the returned status and message; RunOutput write errors propagate.
+/// With `until_stage` ≥ 0 it stops (completed) once the stage before that one has run.
 RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<bool()>& should_stop,
-                 const std::function<void(const StepReport&)>& on_step);
+                 const std::function<void(const StepReport&)>& on_step, int until_stage = -1);
 
 }  // namespace mcdda

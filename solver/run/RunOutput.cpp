@@ -125,15 +125,18 @@ std::string RunOutput::kept_results() const {
     return fs::is_directory(keep, ec) ? keep.string() : std::string();
 }
 
-void RunOutput::save_step(const Simulation& sim) {
-    const SimulationState& s = sim.state();
+void RunOutput::save_step(const Simulation& sim) { save_state(sim, sim.state(), sim.state().step, sim.state().time); }
+
+void RunOutput::save_state(const Simulation& sim, const SimulationState& s, int number, double time,
+                           const VtuFields& extra) {
     const Mesh& mesh = sim.mesh();
     VtuFields fields;
     VtuField displacement{"displacement", 3, {}}, velocity{"velocity", 3, {}};
     displacement.values.reserve(3 * mesh.nodes.size());
     velocity.values.reserve(3 * mesh.nodes.size());
+    const Eigen::VectorXd u = s.reported_displacement();
     for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
-        displacement.values.insert(displacement.values.end(), {s.displacement[2 * i], s.displacement[2 * i + 1], 0.0});
+        displacement.values.insert(displacement.values.end(), {u[2 * i], u[2 * i + 1], 0.0});
         velocity.values.insert(velocity.values.end(), {s.velocity[2 * i], s.velocity[2 * i + 1], 0.0});
     }
     // VTK's symmetric tensor order: xx, yy, zz, xy, yz, xz.
@@ -149,8 +152,11 @@ void RunOutput::save_step(const Simulation& sim) {
                          {"stage", 1, {static_cast<double>(s.stage + 1)}},
                          {"time", 1, {s.time}}};
 
+    for (const VtuField& f : extra.point_data) fields.point_data.push_back(f);
+    for (const VtuField& f : extra.cell_data) fields.cell_data.push_back(f);
+    for (const VtuField& f : extra.field_data) fields.field_data.push_back(f);
     std::ostringstream name;
-    name << stem_ << "_" << std::setw(6) << std::setfill('0') << s.step << ".vtu";
+    name << stem_ << "_" << std::setw(6) << std::setfill('0') << number << ".vtu";
     const std::string path = (fs::path(directory_) / name.str()).string();
     // Staged runs: whether each element is present (excavated and not yet built ones are not);
     // ParaView's Threshold on it, and the desktop program, leave the absent ones out.
@@ -161,14 +167,13 @@ void RunOutput::save_step(const Simulation& sim) {
         fields.cell_data.push_back(std::move(present));
     }
     write_vtu(path, mesh, fields);
-    saved_.emplace_back(s.time, name.str());
+    saved_.emplace_back(time, name.str());
 
     write_collection((fs::path(directory_) / (stem_ + ".pvd")).string(), saved_);
-    save_contacts(sim);
+    save_contacts(sim, s, number, time);
 }
 
-void RunOutput::save_contacts(const Simulation& sim) {
-    const SimulationState& s = sim.state();
+void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, int number, double time) {
     const MeshTopology& topology = sim.topology();
     PolyData data;
     VtuField normal_force{"normal_force", 1, {}}, shear_force{"shear_force", 1, {}}, force{"force", 3, {}},
@@ -218,13 +223,14 @@ void RunOutput::save_contacts(const Simulation& sim) {
                               {"stage", 1, {static_cast<double>(s.stage + 1)}},
                               {"time", 1, {s.time}}};
     std::ostringstream name;
-    name << stem_ << "_contacts_" << std::setw(6) << std::setfill('0') << s.step << ".vtp";
+    name << stem_ << "_contacts_" << std::setw(6) << std::setfill('0') << number << ".vtp";
     write_vtp((fs::path(directory_) / name.str()).string(), data);
-    saved_contacts_.emplace_back(s.time, name.str());
+    saved_contacts_.emplace_back(time, name.str());
     write_collection((fs::path(directory_) / (stem_ + "_contacts.pvd")).string(), saved_contacts_);
 }
 
 void RunOutput::record_history(const Simulation& sim) {
+    if (!step_history_) return;
     const SimulationState& s = sim.state();
     const auto loads = sim.load_magnitudes();
     const Model& model = sim.model();
@@ -243,8 +249,8 @@ void RunOutput::record_history(const Simulation& sim) {
     }
     row << s.step + s.step_fraction << "," << s.time << "," << s.stage + 1 << "," << s.unbalanced_ratio;
     for (const auto& [name, value] : loads) row << "," << value;
-    for (int node : sim.boundary_conditions().measurement_nodes)
-        row << "," << s.displacement[2 * node] << "," << s.displacement[2 * node + 1];
+    const Eigen::VectorXd u = s.reported_displacement();
+    for (int node : sim.boundary_conditions().measurement_nodes) row << "," << u[2 * node] << "," << u[2 * node + 1];
     for (std::size_t i = 0; i < model.rollers.size(); ++i) {
         const Roller& r = model.rollers[i];
         if (!r.moves()) continue;
@@ -259,7 +265,25 @@ void RunOutput::record_history(const Simulation& sim) {
     history_ << row.str() << std::flush;
 }
 
-void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std::string& message) {
+void RunOutput::record_trial(const Simulation& sim, const StrengthTrial& t, const SimulationState& s) {
+    std::ostringstream row;
+    row << std::setprecision(10);
+    if (!header_written_) {
+        row << "trial,factor,status,stands,steps,iterations,max_displacement";
+        for (const MeasurementPoint& m : sim.full_model().measurement_points) row << "," << m.name << ":ux," << m.name << ":uy";
+        row << "\n";
+        header_written_ = true;
+    }
+    row << t.number << "," << t.factor << "," << t.status << "," << (t.stands ? 1 : 0) << "," << t.steps << ","
+        << t.iterations << "," << t.max_displacement;
+    const Eigen::VectorXd u = s.reported_displacement();
+    for (int node : sim.boundary_conditions().measurement_nodes) row << "," << u[2 * node] << "," << u[2 * node + 1];
+    row << "\n";
+    history_ << row.str() << std::flush;
+}
+
+void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std::string& message,
+                              const FactorOfSafety* factor) {
     nlohmann::json j;
     j["status"] = status_name(status);
     j["message"] = message;
@@ -319,13 +343,25 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
                          &c = mesh.nodes[static_cast<std::size_t>(t[2])];
             plastic_area += 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
         }
-        const Eigen::VectorXd& u = sim->state().displacement;
+        const Eigen::VectorXd u = sim->state().reported_displacement();
         for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
         j["plastic_area"] = plastic_area;  // m², elements that have yielded at some time
         j["max_displacement"] = largest;   // m
         j["element"] = sim->mesh().quadratic() ? "t6" : "t3";
         j["model"] = {{"name", sim->model().name}, {"nodes", sim->mesh().nodes.size()},
                       {"elements", sim->mesh().triangles.size()}, {"blocks", sim->mesh().block_count()}};
+    }
+    if (factor) {
+        // Names read by scripts outside the program: docs/running.md.
+        nlohmann::json f{{"value", factor->value}, {"converged", factor->converged},
+                         {"not_converged", factor->not_converged}, {"trials", factor->trials}, {"found", factor->found}};
+        nlohmann::json trials = nlohmann::json::array();
+        for (const StrengthTrial& t : factor->table)
+            trials.push_back({{"trial", t.number}, {"factor", t.factor}, {"status", t.status}, {"stands", t.stands},
+                              {"steps", t.steps}, {"iterations", t.iterations},
+                              {"max_displacement", t.max_displacement}, {"message", t.message}});
+        f["table"] = trials;
+        j["factor_of_safety"] = f;
     }
     write_file_atomically((fs::path(directory_) / "summary.json").string(),
                           [&](std::ostream& out) { out << j.dump(2) << "\n"; });

@@ -19,6 +19,8 @@
 /// completes or collapses, and stay when it fails, is cancelled or killed: a rerun never loses
 /// the last good results.
 
+#include "io/VtuWriter.hpp"
+#include "run/FactorOfSafety.hpp"
 #include "run/Simulation.hpp"
 
 #include <fstream>
@@ -46,12 +48,26 @@ public:
 
     /// Writes the state as a saved step and adds it to the .pvd collection.
     void save_step(const Simulation& simulation);
+    /// Writes `state` (of `simulation`'s mesh) as saved step `number`, at `time` in the .pvd
+    /// (a strength reduction search saves its critical trials at their factors), with `extra`
+    /// fields added.
+    void save_state(const Simulation& simulation, const SimulationState& state, int number, double time,
+                    const VtuFields& extra = {});
 
-    /// Appends the history row of the current step (writes the header first).
+    /// Strength reduction: appends the history row of a trial (the history then has one row per
+    /// trial: trial, factor, status, stands, steps, iterations, max_displacement, and the
+    /// measurement points' ux, uy at the trial's end). `state` is the trial's last state.
+    void record_trial(const Simulation& simulation, const StrengthTrial& trial, const SimulationState& state);
+
+    /// Appends the history row of the current step (writes the header first), unless step rows
+    /// are off (a staged strength reduction run keeps the history for its trials).
     void record_history(const Simulation& simulation);
+    void set_step_history(bool on) { step_history_ = on; }
 
     /// Writes summary.json; a completed or collapsed run then deletes DIR/previous/.
-    void write_summary(const Simulation* simulation, RunStatus status, const std::string& message);
+    /// With `factor` (a strength reduction analysis) also its factor_of_safety and trials.
+    void write_summary(const Simulation* simulation, RunStatus status, const std::string& message,
+                       const FactorOfSafety* factor = nullptr);
 
     /// The folder holding an earlier run's results while they are kept ("" when none).
     std::string kept_results() const;
@@ -60,7 +76,8 @@ public:
     int saved_steps() const { return static_cast<int>(saved_.size()); }
 
 private:
-    void save_contacts(const Simulation& simulation);  ///< the contacts and bolts of the saved step
+    /// The contacts and bolts of the saved step
+    void save_contacts(const Simulation& simulation, const SimulationState& state, int number, double time);
 
     std::string directory_;
     std::string stem_;
@@ -68,6 +85,7 @@ private:
     std::vector<std::pair<double, std::string>> saved_contacts_;
     std::ofstream history_;
     bool header_written_ = false;
+    bool step_history_ = true;
 };
 
 }  // namespace mcdda

@@ -4,9 +4,11 @@
 #include "contact/ContactLaw.hpp"
 #include "fem/PlaneStrain.hpp"
 #include "linalg/AndersonMixing.hpp"
+#include "model/StrengthReduction.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -96,8 +98,14 @@ void element_averages(const PointStates& points, int per_element, SimulationStat
 
 }  // namespace
 
-Simulation::Simulation(const Preprocessed& p) : model_(p.model), mesh_(p.mesh), base_model_(p.model) {
+Simulation::Simulation(const Preprocessed& p, double strength_factor)
+    : model_(p.model), mesh_(p.mesh), base_model_(p.model), strength_factor_(strength_factor) {
     if (mesh_.triangles.empty()) throw std::runtime_error("the model has no mesh");
+    if (base_model_.stages.empty() && model_.analysis.strength_reduction) {
+        // A strength reduction trial: reduced strengths, a small-strain equilibrium problem.
+        reduce_strength(model_, strength_factor_);
+        model_.analysis.geometry = AnalysisSettings::Geometry::Initial;
+    }
     topology_ = build_topology(mesh_, p.blocks);
     for (const Block& b : p.blocks) block_region_.push_back(b.region);
     std::vector<Diagnostic> diagnostics;
@@ -249,6 +257,9 @@ constexpr double keep_factor_contraction = 0.25;
 /// model can carry, its line search creeps along the mechanism).
 constexpr int stall_window = 30;
 constexpr int newton_stall_window = 10;
+/// Newton iterations with the unsymmetric tangent after the elastic iteration of a non-associated
+/// model stalled or reached its cap (see equilibrate).
+constexpr int polish_iterations = 30;
 /// Corrections Anderson acceleration mixes (see equilibrate).
 constexpr int anderson_depth = 5;
 /// A displacement increment this many times the per-step limit, with material yielding, is a
@@ -271,6 +282,8 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
     double best_norm = std::numeric_limits<double>::infinity(), best_correction = best_norm;
     int best_at = 0, best_correction_at = 0;
     bool tangent_usable = uses_newton();
+    bool polishing = false;  // Newton with the unsymmetric tangent after the elastic iteration (below)
+    int polish_from = 0;
     // The matrix in force is the elastic one (a tangent where nothing yields is one too); a held
     // tangent factor is not.
     bool elastic_matrix = factor_valid && !held_.tangent;
@@ -283,7 +296,11 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         const ElementMatrix matrix =
             refactor ? (tangent_usable ? ElementMatrix::Tangent : ElementMatrix::Elastic) : ElementMatrix::None;
         auto t0 = Clock::now();
-        if (refactor) system_.clear_values();
+        if (refactor) {
+            // Non-associated flow: the exact tangent is unsymmetric (LU); everything else is symmetric.
+            system_.set_unsymmetric(matrix == ElementMatrix::Tangent && !elements_.symmetric_tangent());
+            system_.clear_values();
+        }
         const ElementAssembly::Evaluation eval = elements_.evaluate(d, state_.points, returned_, internal, matrix, &system_);
         timings_.plasticity += seconds_since(t0);
         attempt.yielding = eval.yielding;
@@ -291,11 +308,12 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         residual = base - internal;
         add_contact_forces(contacts, kinematics, properties, d, residual);
         for (const BoltLink& b : bolts) b.add_forces(d, residual);
-        double norm = 0.0;
+        double norm = 0.0, norm2 = 0.0;
         for (Eigen::Index dof = 0; dof < dofs; ++dof)
             if (bc_.equation[dof] >= 0) {
                 rhs[bc_.equation[dof]] = residual[dof];
                 norm = std::max(norm, std::fabs(residual[dof]));
+                norm2 += residual[dof] * residual[dof];
             }
         timings_.assembly += seconds_since(t0);
         const double scale = std::max({eval.force_scale, load_scale, 1e-30});
@@ -349,18 +367,47 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
         // step may take. The load increment is past what the material can carry.
         const double largest = d.cwiseAbs().maxCoeff();
         const bool mechanism = eval.yielding > 0 && largest > mechanism_displacements * displacement_limit_;
-        if (diverging || stalled || mechanism || k >= model_.analysis.max_plastic_iterations) {
-            const std::string where = " (out-of-balance force " + std::to_string(norm / scale) +
-                                      " of the force scale, " + std::to_string(eval.yielding) +
-                                      " integration points yielding)";
-            if (diverging) attempt.why = "the equilibrium iterations diverged";
+        const bool capped = polishing ? k - polish_from >= polish_iterations
+                                      : k >= model_.analysis.max_plastic_iterations;
+        if ((stalled || capped) && !diverging && !mechanism && !polishing && eval.yielding > 0 &&
+            uses_unsymmetric_newton()) {
+            // Non-associated flow: the elastic iteration has done what it can. Newton with the
+            // exact (unsymmetric) tangent from here: close to equilibrium, where the active
+            // yield planes no longer change, it converges quadratically, so an increment that
+            // can be carried is not declared uncarried for a force just above the tolerance.
+            polishing = true;
+            polish_from = k;
+            tangent_usable = true;
+            factor_valid = false;
+            anderson.reset();
+            best_norm = norm;
+            best_at = best_correction_at = k;
+            best_correction = std::numeric_limits<double>::infinity();
+            --k;
+            continue;
+        }
+        if (diverging || stalled || mechanism || capped) {
+            const std::string where = " (" + std::to_string(eval.yielding) + " integration points yielding)";
+            char numbers[200];
+            std::snprintf(numbers, sizeof numbers, "the out-of-balance force, %.3g of the force scale, ", norm / scale);
+            if (diverging) attempt.why = "the equilibrium iterations diverged: " + std::string(numbers) + "grew without bound";
             else if (mechanism)
                 attempt.why = "a mechanism formed: the displacement increment reached " + std::to_string(largest) +
-                              " m with material yielding";
-            else if (stalled)
-                attempt.why = "the equilibrium iterations stalled after " + std::to_string(k) + where;
-            else
-                attempt.why = "the equilibrium iterations did not converge within " + std::to_string(k) + where;
+                              " m (limit " + std::to_string(mechanism_displacements * displacement_limit_) +
+                              " m) with material yielding";
+            else if (stalled) {
+                std::snprintf(numbers, sizeof numbers,
+                              "the out-of-balance force, %.3g of the force scale, stayed above the tolerance %.3g "
+                              "and stopped decreasing (not halved in %d iterations) after %d iterations",
+                              norm / scale, tolerance, tangent_usable ? newton_stall_window : stall_window, k);
+                attempt.why = "the equilibrium iterations stalled: " + std::string(numbers) + where;
+            } else {
+                std::snprintf(numbers, sizeof numbers,
+                              "after %d iterations the out-of-balance force was %.3g of the force scale, above the "
+                              "tolerance %.3g",
+                              k, norm / scale, tolerance);
+                attempt.why = "the equilibrium iterations reached their limit: " + std::string(numbers) + where;
+            }
             return false;
         }
         if (refactor) {
@@ -425,10 +472,14 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, co
                 Eigen::VectorXd r = base - internal;
                 add_contact_forces(contacts, kinematics, properties, trial, r);
                 for (const BoltLink& b : bolts) b.add_forces(trial, r);
-                double trial_norm = 0.0;
+                double trial_norm = 0.0, trial_norm2 = 0.0;
                 for (Eigen::Index dof = 0; dof < dofs; ++dof)
-                    if (bc_.equation[dof] >= 0) trial_norm = std::max(trial_norm, std::fabs(r[dof]));
-                if (trial_norm <= norm || trial_norm <= tolerance * scale) break;
+                    if (bc_.equation[dof] >= 0) {
+                        trial_norm = std::max(trial_norm, std::fabs(r[dof]));
+                        trial_norm2 += r[dof] * r[dof];
+                    }
+                if (trial_norm <= tolerance * scale) break;
+                if (polishing ? trial_norm2 <= norm2 : trial_norm <= norm) break;
                 step *= 0.5;
             }
         }
@@ -834,6 +885,12 @@ void Simulation::begin_stage(int s) {
     // cleared in place, so that indices (history columns, reactions) stay those of the file.
     model_ = base_model_;
     model_.analysis = stage.analysis;
+    if (stage.analysis.strength_reduction) {
+        // A safety stage: reduced strengths, solved as a small-strain equilibrium problem.
+        reduce_strength(model_, strength_factor_);
+        model_.analysis.geometry = AnalysisSettings::Geometry::Initial;
+    }
+    if (stage.reset_displacements || stage.analysis.strength_reduction) state_.displacement_reference = state_.displacement;
     for (std::size_t r = 0; r < regions; ++r) model_.regions[r].material = material[r];
     model_.fixed_points.clear();
     for (const FixedPoint& f : base_model_.fixed_points)
@@ -1002,6 +1059,29 @@ std::array<Point2, 2> Simulation::bolt_ends(int i) const {
 bool Simulation::stage_complete() const {
     const StageRecord& r = stages_[stage_];
     return r.reached_target || state_.step - stage_start_step_ >= model_.analysis.steps;
+}
+
+SimulationCheckpoint Simulation::checkpoint() const {
+    return {state_, model_, element_active_, block_active_, bolt_present_, mesh_.triangle_material, stages_, stage_,
+            stage_start_step_};
+}
+
+void Simulation::restore(const SimulationCheckpoint& c) {
+    state_ = c.state;
+    model_ = c.model;
+    element_active_ = c.element_active;
+    block_active_ = c.block_active;
+    bolt_present_ = c.bolt_present;
+    mesh_.triangle_material = c.triangle_material;
+    stages_ = c.stages;
+    stage_ = c.stage;
+    stage_start_step_ = c.stage_start_step;
+    collapse_.reset();
+    held_ = HeldFactor{};
+    pattern_stale_ = true;
+    pending_events_.clear();
+    elements_ = ElementAssembly(model_, mesh_);
+    elements_.set_active(element_active_);
 }
 
 bool Simulation::finished() const { return stage_ + 1 >= static_cast<int>(stages_.size()) && stage_complete(); }

@@ -8,7 +8,8 @@
 ///          return mapping, out-of-balance force R = F − ∫Bᵀσ − contacts − inertia, and a
 ///          correction K δ = R: Newton with the algorithmic tangent for associated flow
 ///          (refactorised only while convergence is slow), the elastic matrix with Anderson
-///          acceleration for non-associated flow, until R and δ are within tolerance
+///          acceleration for non-associated flow, finished by Newton with the exact unsymmetric
+///          tangent (LU) where that stalls, until R and δ are within tolerance
 ///        check every contact; stop when no state changed
 ///      In a small-strain static analysis the factor of the last converged increment starts the
 ///      next one when the closed contacts are the same: it is that increment's tangent (a far
@@ -59,6 +60,14 @@ struct SimulationState {
     double time_step = 0.0;  ///< Δt to try next (s)
     std::vector<Point2> nodes;          ///< current coordinates (m)
     Eigen::VectorXd displacement;       ///< total since the start (m), 2 per node
+    /// The displacement at the last reset (a stage with reset_displacements, a safety stage):
+    /// results report displacement − displacement_reference. Empty: none.
+    Eigen::VectorXd displacement_reference;
+    /// The displacement results report: since the last reset.
+    Eigen::VectorXd reported_displacement() const {
+        return displacement_reference.size() == displacement.size() ? Eigen::VectorXd(displacement - displacement_reference)
+                                                                     : displacement;
+    }
     Eigen::VectorXd velocity;           ///< (m/s), 2 per node
     Eigen::VectorXd acceleration;       ///< (m/s²), 2 per node (dynamic analysis)
     /// Static analysis: the part of the next step's load increment already applied, in [0, 1).
@@ -129,11 +138,24 @@ struct StageRecord {
     double unbalanced_ratio = 0.0;      ///< after its last step
 };
 
+/// What a run needs to go back to a state: the strength reduction search starts every trial of a
+/// safety stage from the state the stages before it left (Simulation::checkpoint).
+struct SimulationCheckpoint {
+    SimulationState state;
+    Model model;
+    std::vector<char> element_active, block_active, bolt_present;
+    std::vector<int> triangle_material;
+    std::vector<StageRecord> stages;
+    int stage = 0, stage_start_step = 0;
+};
+
 class Simulation {
 public:
     /// Sets up a run of a preprocessed (meshed) model. Throws std::runtime_error naming the
     /// problem when the model cannot be solved (supports that catch no node, …).
-    explicit Simulation(const Preprocessed& model);
+    /// `strength_factor`: the factor a strength reduction analysis (or safety stage) divides
+    /// the strengths by (see set_strength_factor).
+    explicit Simulation(const Preprocessed& model, double strength_factor = 1.0);
     Simulation(const Simulation&) = delete;  // elements_ points into model_ and mesh_
     Simulation& operator=(const Simulation&) = delete;
 
@@ -148,6 +170,15 @@ public:
     void set_iteration_observer(std::function<void(const IterationInfo&)> observer) {
         iteration_observer_ = std::move(observer);
     }
+
+    /// The state at this moment, and a return to it (the next advance() then begins the stage
+    /// after the checkpoint's, with the strength factor in force then).
+    SimulationCheckpoint checkpoint() const;
+    void restore(const SimulationCheckpoint& c);
+    /// The factor a strength reduction stage divides the strengths by (1 until set).
+    void set_strength_factor(double factor) { strength_factor_ = factor; }
+    /// Index of the stage running now (0 without stages).
+    int current_stage() const { return stage_; }
 
     /// True once the last stage has run its steps (or reached its target ratio).
     bool finished() const;
@@ -232,8 +263,13 @@ private:
         return model_.analysis.kind == AnalysisSettings::Kind::Static &&
                model_.analysis.geometry == AnalysisSettings::Geometry::Initial;
     }
-    /// Associated plasticity somewhere: Newton with the algorithmic tangent (see equilibrate).
-    bool uses_newton() const { return may_yield_ && elements_.has_tangent(); }
+    /// Plasticity somewhere: Newton with the algorithmic tangent (see equilibrate).
+    bool uses_newton() const { return may_yield_ && elements_.has_tangent() && elements_.symmetric_tangent(); }
+    /// Non-associated plasticity somewhere: the elastic iteration, finished by Newton with the
+    /// unsymmetric tangent when it stalls (see equilibrate).
+    bool uses_unsymmetric_newton() const {
+        return may_yield_ && elements_.has_tangent() && !elements_.symmetric_tangent();
+    }
     /// Sets up stage `s`: presence of regions, supports, loads and bolts, materials, settings,
     /// and the out-of-balance force its start leaves, which it releases over its steps.
     void begin_stage(int s);
@@ -290,6 +326,7 @@ private:
     Eigen::VectorXd holding_;           ///< out-of-balance force at the stage's start, negated
     int stage_ = 0;
     int stage_start_step_ = 0;
+    double strength_factor_ = 1.0;      ///< see set_strength_factor
     bool pattern_stale_ = false;        ///< the equation numbering changed (a stage began)
     std::vector<StageRecord> stages_;
     std::vector<std::string> pending_events_;

@@ -1,0 +1,221 @@
+#include "run/StrengthReduction.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+
+namespace mcdda {
+
+namespace {
+
+/// The bracket grows (or shrinks) by this factor from 1 until one trial stands and one does not.
+constexpr double bracket_growth = 1.5;
+/// Factors beyond these are not searched: "stands at 100" or "does not stand at 0.01" is the answer.
+constexpr double largest_factor = 100.0, smallest_factor = 0.01;
+
+double largest_displacement(const SimulationState& s) {
+    const Eigen::VectorXd u = s.reported_displacement();
+    double largest = 0.0;
+    for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
+    return largest;
+}
+
+/// t − before, field by field (the counts and seconds of one trial).
+RunTimings difference(const RunTimings& t, const RunTimings& before) {
+    RunTimings d;
+    d.assembly = t.assembly - before.assembly;
+    d.factorization = t.factorization - before.factorization;
+    d.solve = t.solve - before.solve;
+    d.contact = t.contact - before.contact;
+    d.plasticity = t.plasticity - before.plasticity;
+    d.total = t.total - before.total;
+    d.factorizations = t.factorizations - before.factorizations;
+    d.symbolic_analyses = t.symbolic_analyses - before.symbolic_analyses;
+    d.reused_factors = t.reused_factors - before.reused_factors;
+    d.refinement_iterations = t.refinement_iterations - before.refinement_iterations;
+    d.iterations = t.iterations - before.iterations;
+    d.max_iterations = t.max_iterations;
+    d.load_cuts = t.load_cuts - before.load_cuts;
+    return d;
+}
+
+std::string factor_text(double f) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", f);
+    return text;
+}
+
+}  // namespace
+
+bool is_strength_reduction(const Model& model) {
+    if (model.stages.empty()) return model.analysis.strength_reduction;
+    return model.stages.back().analysis.strength_reduction;
+}
+
+struct StrengthReductionSearch::Trial {
+    StrengthTrial record;
+    SimulationState state;
+    bool cancelled = false;
+};
+
+StrengthReductionSearch::StrengthReductionSearch(const Preprocessed& p) : model_(p) {
+    if (!is_strength_reduction(p.model))
+        throw std::runtime_error("the model's analysis (or its last stage's) is not a strength reduction");
+    if (!p.model.stages.empty()) safety_stage_ = static_cast<int>(p.model.stages.size()) - 1;
+    // Built once here so that a model that cannot be solved is refused before anything runs.
+    simulation_ = std::make_unique<Simulation>(p);
+}
+
+StrengthReductionSearch::~StrengthReductionSearch() = default;
+
+void StrengthReductionSearch::add_timings(const RunTimings& t) {
+    timings_.assembly += t.assembly;
+    timings_.factorization += t.factorization;
+    timings_.solve += t.solve;
+    timings_.contact += t.contact;
+    timings_.plasticity += t.plasticity;
+    timings_.total += t.total;
+    timings_.factorizations += t.factorizations;
+    timings_.symbolic_analyses += t.symbolic_analyses;
+    timings_.reused_factors += t.reused_factors;
+    timings_.refinement_iterations += t.refinement_iterations;
+    timings_.iterations += t.iterations;
+    timings_.max_iterations = std::max(timings_.max_iterations, t.max_iterations);
+    timings_.load_cuts += t.load_cuts;
+}
+
+StrengthReductionSearch::Trial StrengthReductionSearch::run_trial(double factor, const Callbacks& callbacks) {
+    if (callbacks.on_trial_start) callbacks.on_trial_start(factor);
+    const auto start = std::chrono::steady_clock::now();
+    // A strength reduction of the whole model, or of its first stage: every trial from the start.
+    if (safety_stage_ <= 0) simulation_ = std::make_unique<Simulation>(model_, factor);
+    else {
+        simulation_->restore(*start_);
+        simulation_->set_strength_factor(factor);
+    }
+    if (callbacks.on_iteration) simulation_->set_iteration_observer(callbacks.on_iteration);
+    const RunTimings before = simulation_->timings();
+    const int first_step = simulation_->state().step;
+    const RunEnd end = run_steps(*simulation_, nullptr, callbacks.should_stop, nullptr);
+    add_timings(difference(simulation_->timings(), before));
+
+    Trial trial;
+    trial.cancelled = end.status == RunStatus::Cancelled;
+    trial.state = simulation_->state();
+    StrengthTrial& r = trial.record;
+    r.number = static_cast<int>(factor_.table.size()) + 1;
+    r.factor = factor;
+    r.stands = end.status == RunStatus::Completed;
+    r.status = r.stands ? "stands" : status_name(end.status);
+    if (!r.stands) r.message = end.message;
+    r.steps = trial.state.step - first_step;
+    r.iterations = simulation_->timings().iterations - before.iterations;
+    r.max_displacement = largest_displacement(trial.state);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return trial;
+}
+
+RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callbacks) {
+    factor_ = FactorOfSafety{};
+    double last_time = 0.0;
+    if (safety_stage_ > 0) {
+        // The construction stages, once, with their own strengths; the history keeps the trials.
+        if (output) output->set_step_history(false);
+        const RunEnd stages = run_steps(*simulation_, output, callbacks.should_stop, callbacks.on_step, safety_stage_);
+        add_timings(simulation_->timings());
+        if (stages.status != RunStatus::Completed) {
+            RunEnd end = stages;
+            end.message = "the stages before the strength reduction did not complete: " + stages.message;
+            return end;
+        }
+        start_ = std::make_unique<SimulationCheckpoint>(simulation_->checkpoint());
+        last_time = simulation_->state().time;
+    }
+    const AnalysisSettings& settings =
+        safety_stage_ >= 0 ? model_.model.stages[safety_stage_].analysis : model_.model.analysis;
+
+    std::optional<Trial> stood, fell;  // the highest factor that stood, the lowest that did not
+    auto try_factor = [&](double f) -> bool {
+        Trial t = run_trial(f, callbacks);
+        if (t.cancelled) return false;
+        factor_.table.push_back(t.record);
+        if (output) output->record_trial(*simulation_, t.record, t.state);
+        if (callbacks.on_trial) callbacks.on_trial(t.record);
+        if (t.record.stands) {
+            if (!stood || f > stood->record.factor) stood = std::move(t);
+        } else if (!fell || f < fell->record.factor) {
+            fell = std::move(t);
+        }
+        return true;
+    };
+    auto trials_left = [&] { return static_cast<int>(factor_.table.size()) < settings.max_trials; };
+    bool cancelled = !try_factor(1.0);
+    // Bracket: up from a factor that stands, down from one that does not.
+    while (!cancelled && (!stood || !fell) && trials_left()) {
+        if (stood && stood->record.factor >= largest_factor) break;
+        if (fell && fell->record.factor <= smallest_factor) break;
+        cancelled = !try_factor(stood ? stood->record.factor * bracket_growth : fell->record.factor / bracket_growth);
+    }
+    // Bisect.
+    while (!cancelled && stood && fell && trials_left() &&
+           fell->record.factor - stood->record.factor > settings.factor_tolerance * stood->record.factor)
+        cancelled = !try_factor(0.5 * (stood->record.factor + fell->record.factor));
+
+    factor_.trials = static_cast<int>(factor_.table.size());
+    if (stood) factor_.value = factor_.converged = stood->record.factor;
+    if (fell) factor_.not_converged = fell->record.factor;
+    factor_.found = stood && fell &&
+                    fell->record.factor - stood->record.factor <= settings.factor_tolerance * stood->record.factor * (1 + 1e-12);
+
+    // The critical pair: the last state that stood and the first that did not, with the
+    // increments between them on the latter (the mechanism engineers look at).
+    if (output) {
+        int number = simulation_->state().step;
+        if (stood) {
+            VtuFields extra;
+            extra.field_data.push_back({"strength_factor", 1, {stood->record.factor}});
+            output->save_state(*simulation_, stood->state, ++number, last_time + stood->record.factor, extra);
+        }
+        if (fell) {
+            VtuFields extra;
+            extra.field_data.push_back({"strength_factor", 1, {fell->record.factor}});
+            if (stood) {
+                const Eigen::VectorXd du = fell->state.reported_displacement() - stood->state.reported_displacement();
+                VtuField increment{"displacement_increment", 3, {}};
+                for (Eigen::Index i = 0; i + 1 < du.size(); i += 2)
+                    increment.values.insert(increment.values.end(), {du[i], du[i + 1], 0.0});
+                VtuField strain{"plastic_strain_increment", 1, {}};
+                for (std::size_t e = 0; e < fell->state.plastic_strain.size(); ++e)
+                    strain.values.push_back(fell->state.plastic_strain[e] - stood->state.plastic_strain[e]);
+                extra.point_data.push_back(std::move(increment));
+                extra.cell_data.push_back(std::move(strain));
+            }
+            output->save_state(*simulation_, fell->state, ++number, last_time + fell->record.factor, extra);
+        }
+    }
+
+    RunEnd end;
+    if (cancelled) {
+        end = {RunStatus::Cancelled, "cancelled by the user after " + std::to_string(factor_.table.size()) + " trials"};
+    } else if (factor_.found) {
+        end = {RunStatus::Completed, "factor of safety " + factor_text(factor_.value) + " (stands at " +
+                                         factor_text(factor_.converged) + ", not at " +
+                                         factor_text(factor_.not_converged) + "; " +
+                                         std::to_string(factor_.trials) + " trials)"};
+    } else if (stood && !fell) {
+        end = {RunStatus::Failed, "the model still stands with its strengths divided by " +
+                                      factor_text(stood->record.factor) + ": no factor of safety within the search"};
+    } else if (fell && !stood) {
+        end = {RunStatus::Failed, "the model does not stand even with its strengths divided by " +
+                                      factor_text(fell->record.factor) + " (" + fell->record.message + ")"};
+    } else {
+        end = {RunStatus::Failed, "the search used its " + std::to_string(settings.max_trials) +
+                                      " trials before the bracket [" + factor_text(factor_.converged) + ", " +
+                                      factor_text(factor_.not_converged) + "] was within the tolerance"};
+    }
+    return end;
+}
+
+}  // namespace mcdda

@@ -1,0 +1,97 @@
+// The factor of safety by strength reduction (run/StrengthReduction.hpp) against closed forms,
+// and its independence of the numerical settings.
+//
+// Weightless undrained clay (cu = 100 kPa, φ = ψ = 0) under a flexible smooth strip footing
+// pressure held at q = 400 kPa: the clay stands while cu/F ≥ q/(2 + π), so
+// F = (2 + π) cu / q = 1.2854 (Prandtl). examples/prandtl-flexible-footing.json, 498 six-node
+// elements near the footing.
+
+#include "RunModel.hpp"
+
+#include "Preprocess.hpp"
+#include "model/StrengthReduction.hpp"
+#include "run/StrengthReduction.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace mcdda;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+FactorOfSafety search(const std::string& file, std::vector<std::string> overrides) {
+    const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/" + file, overrides);
+    EXPECT_TRUE(p.ok) << file << " rejected";
+    if (!p.ok) return {};
+    StrengthReductionSearch s(p);
+    const RunEnd end = s.run(nullptr, {});
+    EXPECT_EQ(end.status, RunStatus::Completed) << end.message;
+    return s.factor();
+}
+
+/// The Prandtl footing as a strength reduction analysis under a held 400 kPa.
+std::vector<std::string> prandtl_held(std::vector<std::string> more = {}) {
+    std::vector<std::string> o = {"/analysis/type=\"strength_reduction\"", "/analysis/steps=1",
+                                  "/edge_pressures/0/pressure=400000", "/load_tables/0/extrapolate=false"};
+    o.insert(o.end(), more.begin(), more.end());
+    return o;
+}
+
+const double prandtl_factor = (2.0 + pi) * 100e3 / 400e3;
+
+}  // namespace
+
+TEST(StrengthReduction, PrandtlFootingUnderAHeldLoad) {
+    const FactorOfSafety f = search("prandtl-flexible-footing.json", prandtl_held());
+    ASSERT_TRUE(f.found);
+    // The bracket is within the default tolerance (0.5 %) and the factor within 1 % of Prandtl's.
+    EXPECT_LE(f.not_converged - f.converged, 0.005 * f.converged * (1 + 1e-9));
+    EXPECT_NEAR(f.value, prandtl_factor, 0.01 * prandtl_factor);
+    EXPECT_EQ(f.trials, static_cast<int>(f.table.size()));
+    for (const StrengthTrial& t : f.table) {
+        if (t.factor <= f.converged) EXPECT_TRUE(t.stands) << "F = " << t.factor << " below the factor did not stand";
+        if (t.factor >= f.not_converged) EXPECT_FALSE(t.stands) << "F = " << t.factor << " above the factor stood";
+    }
+}
+
+TEST(StrengthReduction, PrandtlFactorDoesNotDependOnTheSettings) {
+    const double reference = search("prandtl-flexible-footing.json", prandtl_held()).value;
+    ASSERT_GT(reference, 0.0);
+    const std::vector<std::pair<std::string, std::vector<std::string>>> variants = {
+        {"load in 10 steps", {"/analysis/steps=10", "/load_tables/0/points=[[0,0],[10,1]]"}},
+        {"iteration cap x4", {"/analysis/plastic_iterations=2000"}},
+        {"search tolerance / 4", {"/analysis/factor_tolerance=0.00125"}},
+        {"equilibrium tolerance / 10", {"/analysis/plastic_tolerance=1e-5"}},
+    };
+    for (const auto& [name, more] : variants) {
+        const FactorOfSafety f = search("prandtl-flexible-footing.json", prandtl_held(more));
+        EXPECT_TRUE(f.found) << name;
+        EXPECT_NEAR(f.value, reference, 0.01 * reference) << name;
+    }
+}
+
+TEST(StrengthReduction, ReducesCohesionFrictionAndTensionOfWhatIsReduced) {
+    Material m;
+    m.cohesion = 10e3;
+    m.friction_angle = 30 * pi / 180;
+    m.dilation_angle = 30 * pi / 180;
+    m.tensile_strength = 5e3;
+    const Material r = reduced_strength(m, 2.0);
+    EXPECT_DOUBLE_EQ(r.cohesion, 5e3);
+    EXPECT_NEAR(std::tan(r.friction_angle), std::tan(m.friction_angle) / 2.0, 1e-14);
+    EXPECT_DOUBLE_EQ(r.tensile_strength, 2.5e3);
+    EXPECT_DOUBLE_EQ(r.dilation_angle, r.friction_angle);  // ψ ≤ reduced φ
+    m.reduce = false;
+    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0).cohesion, 10e3);
+    JointMaterial j;
+    j.cohesion = 1e3;
+    j.friction_angle = 20 * pi / 180;
+    const JointMaterial rj = reduced_strength(j, 0.5);  // factors below 1 strengthen
+    EXPECT_DOUBLE_EQ(rj.cohesion, 2e3);
+    EXPECT_NEAR(std::tan(rj.friction_angle), 2.0 * std::tan(j.friction_angle), 1e-14);
+}
