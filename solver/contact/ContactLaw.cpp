@@ -81,10 +81,15 @@ void contact_terms(const Contact& c, const ContactKinematics& k, const ContactPr
 }
 
 StateChange update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d,
-                                 double force_tolerance) {
+                                 double force_tolerance, double* change_force) {
     c.gap = k.gap + k.normal.dot(d);
     const double slip_increment = k.shear.dot(d);
-    auto change = [&](bool marginal) { return marginal ? StateChange::Marginal : StateChange::Significant; };
+    // The force by which the old state was wrong decides whether the change matters.
+    auto change = [&](double force) {
+        if (change_force) *change_force = force;
+        return force < force_tolerance ? StateChange::Marginal : StateChange::Significant;
+    };
+    if (change_force) *change_force = 0.0;
     if (c.state == ContactState::Open) {
         c.normal_force = 0.0;
         c.shear_force = 0.0;
@@ -103,13 +108,18 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
         } else {
             c.state = ContactState::Locked;
         }
-        return change(-c.gap * p.normal_stiffness < force_tolerance);
+        return change(-c.gap * p.normal_stiffness);
     }
     c.normal_force = -p.normal_stiffness * c.gap;
     if (c.normal_force < -p.tensile_force) {  // pulled apart beyond the tensile strength
+        // Opening also drops the shear force the contact carried: a locked contact that holds a
+        // block against sliding is no negligible change however small its gap.
+        const double shear_carried = c.state == ContactState::Locked
+                                         ? std::fabs(p.shear_stiffness * (c.shear_spring + slip_increment))
+                                         : p.cohesion_force;
         c.state = ContactState::Open;
         c.normal_force = c.shear_force = 0.0;
-        return change(c.gap * p.normal_stiffness < force_tolerance);
+        return change(std::max(c.gap * p.normal_stiffness, shear_carried));
     }
     const double limit = std::max(0.0, c.normal_force) * p.tan_friction + p.cohesion_force;
     if (c.state == ContactState::Locked) {
@@ -119,6 +129,7 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
         c.slip = c.shear_force > 0.0 ? 1 : -1;
         // Judged by force, not displacement: the stiff shear spring turns any excess into a tiny
         // displacement, yet the solution with it locked is wrong by the whole excess force.
+        if (change_force) *change_force = std::fabs(c.shear_force) - limit;
         return StateChange::Significant;
     }
     c.shear_force = c.slip * limit;
@@ -130,7 +141,7 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
     // The slip reversed: the contact sticks.
     c.state = ContactState::Locked;
     c.shear_spring = 0.0;
-    return change(std::fabs(slip_increment) * p.shear_stiffness < force_tolerance);
+    return change(std::fabs(slip_increment) * p.shear_stiffness);
 }
 
 void commit_contact(Contact& c, const ContactKinematics& k, const Vector6& d) {

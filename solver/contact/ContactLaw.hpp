@@ -63,9 +63,10 @@ enum class StateChange {
 /// Coulomb → slide, slip reversal → lock). Opening, closing or sticking whose spring force
 /// (stiffness × gap, penetration or slip) is below `force_tolerance` (N/m) is marginal: without
 /// this the iteration chatters on contacts that carry almost nothing, whose gaps flip sign at
-/// round-off level. Starting to slide is always significant.
+/// round-off level. Starting to slide is always significant. `change_force`, when given, receives
+/// the force (N/m) by which the old state was wrong (0 without a change).
 StateChange update_contact_state(Contact& c, const ContactKinematics& k, const ContactProperties& p, const Vector6& d,
-                                 double force_tolerance);
+                                 double force_tolerance, double* change_force = nullptr);
 
 /// Commits an accepted step: the locked spring's shear displacement is kept, strength lost once
 /// the contact opened or slid.

@@ -592,6 +592,16 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
         } catch (const SingularSystem& e) {
             attempt.outcome = Outcome::Singular;
             attempt.why = e.what();
+            // Without a mass term, a block held only by sliding contacts is a mechanism: the load
+            // is not carried (a smaller Δt would change nothing).
+            const auto sliding = std::count_if(contacts.begin(), contacts.end(), [](const Contact& c) {
+                return c.state == ContactState::Sliding;
+            });
+            if (equilibrium_only && sliding > 0) {
+                attempt.outcome = Outcome::NotConverged;
+                attempt.why = "blocks slide freely: friction and cohesion of the " + std::to_string(sliding) +
+                              " sliding contacts cannot hold them (the stiffness matrix is singular)";
+            }
             return attempt;
         }
         attempt.d = d;
@@ -617,6 +627,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
         const auto t3 = Clock::now();
         int changes = 0;
         double friction_used = 0.0, friction_change = 0.0;
+        double cycling_force = 0.0;  // the largest change of a cycling contact that was let pass
         std::vector<std::pair<std::size_t, Contact>> marginal;  // negligible changes: index, state before
         // Negligible: a thousandth of the largest contact force of the last solve.
         double largest_force = 0.0;
@@ -628,12 +639,28 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
                 for (int dir = 0; dir < 2; ++dir) local[2 * a + dir] = d[2 * kinematics[i].nodes[a] + dir];
             const Contact before = contacts[i];
             const double normal_used = std::max(0.0, before.normal_force);
+            double change_force = 0.0;
             StateChange change =
-                update_contact_state(contacts[i], kinematics[i], properties[i], local, force_tolerance);
+                update_contact_state(contacts[i], kinematics[i], properties[i], local, force_tolerance, &change_force);
             // A contact that already changed twice in this step is cycling (stick–slip or
             // open–close at its limit): it no longer holds the iteration open; its last change
-            // is kept only if the step ends without other changes.
-            if (change == StateChange::Significant && ++flips[i] > 2) change = StateChange::Marginal;
+            // is kept only if the step ends without other changes. In a static equilibrium
+            // analysis a contact cycling between sticking and sliding rests at its strength
+            // (sliding, the friction force at its limit): that state is statically admissible,
+            // while one held locked would carry more shear than friction can (a wedge that must
+            // slide would stand on such contacts).
+            if (change == StateChange::Significant && ++flips[i] > 2) {
+                const bool stick_slip = before.state != ContactState::Open && contacts[i].state != ContactState::Open;
+                if (equilibrium_only && stick_slip && contacts[i].state == ContactState::Locked) {
+                    contacts[i].state = ContactState::Sliding;
+                    contacts[i].slip = before.slip;
+                    contacts[i].shear_spring = before.shear_spring;
+                    change = StateChange::None;
+                } else if (!(equilibrium_only && stick_slip)) {
+                    change = StateChange::Marginal;
+                    cycling_force = std::max(cycling_force, change_force);
+                }
+            }
             if (change == StateChange::Significant) ++changes;
             if (change == StateChange::Marginal) marginal.emplace_back(i, before);
             if (before.state == ContactState::Sliding && contacts[i].state == ContactState::Sliding) {
@@ -667,6 +694,18 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
         // Friction of sliding contacts was taken from the normal forces of the previous solve;
         // repeat until they agree (with the same factor).
         if (friction_change <= 1e-3 * friction_used || ++friction_rounds > max_friction_rounds) {
+            // With no mass term nothing but the contacts' states can hold a block: a contact let
+            // pass while it keeps opening and closing with a large force in play (one that opens
+            // while it holds a block) means no consistent set of states balances the load here.
+            if (equilibrium_only && cycling_force > force_tolerance) {
+                attempt.outcome = Outcome::NotConverged;
+                std::ostringstream why;
+                why << "no equilibrium of the contacts: contacts keep opening and closing with up to "
+                    << cycling_force / 1e3 << " kN/m in play against a limit of " << force_tolerance / 1e3
+                    << " kN/m (blocks move apart: friction and cohesion cannot hold them)";
+                attempt.why = why.str();
+                return attempt;
+            }
             held_.usable = true;
             return attempt;
         }

@@ -141,6 +141,27 @@ TEST(ContactLaw, ChangesCarryingAlmostNothingAreMarginal) {
     EXPECT_NE(c.state, ContactState::Open);
 }
 
+TEST(ContactLaw, OpeningALockedContactThatHoldsShearIsNoMarginalChange) {
+    // A contact pulled open by a hair while its shear spring holds 4e3 N/m: the opening drops
+    // that force, so it matters however small the gap (a wedge would otherwise stand on it).
+    ContactProperties p = properties();
+    p.tensile_force = 0.0;
+    Contact c;
+    c.state = ContactState::Locked;
+    c.shear_spring = 1e-5;  // 4e8 × 1e-5 = 4e3 N/m
+    double force = -1.0;
+    EXPECT_EQ(update_contact_state(c, horizontal(0.0), p, vertex_moves(0, 1e-12), 10.0, &force),
+              StateChange::Significant);
+    EXPECT_EQ(c.state, ContactState::Open);
+    EXPECT_NEAR(force, 4e3, 1e-6);
+    // A change's force is reported: sliding beyond the limit by the excess.
+    Contact d;
+    d.state = ContactState::Locked;
+    update_contact_state(d, horizontal(-1e-5), p, vertex_moves(2e-5, 0), 1.0, &force);  // 8e3 against 6e3
+    EXPECT_EQ(d.state, ContactState::Sliding);
+    EXPECT_NEAR(force, 2e3, 1e-6);
+}
+
 TEST(ContactLaw, CommittingAStepKeepsTheLockedSpringAndLosesStrengthOnceSlid) {
     const ContactKinematics k = horizontal(0.0);
     Contact c;

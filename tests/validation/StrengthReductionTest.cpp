@@ -75,6 +75,53 @@ TEST(StrengthReduction, PrandtlFactorDoesNotDependOnTheSettings) {
     }
 }
 
+// A rigid wedge on a planar joint (examples/slope-wedge.json, rock elastic and not reduced):
+// the joint from (12, 3) on the face to (32.78, 15) on the crest dips α = 30°, L = 24.0 m; the
+// wedge above it, (12, 3)–(32.78, 15)–(20, 15), has 76.71 m² and W = 25 kN/m³ × 76.71 m² =
+// 1.918 MN/m. Limit equilibrium: F = (c L + W cos α tan φ) / (W sin α).
+namespace {
+
+double wedge_factor(double cohesion, double friction_degrees) {
+    const double w = 25e3 * 76.70765815, length = 24.0, alpha = pi / 6;
+    return (cohesion * length + w * std::cos(alpha) * std::tan(friction_degrees * pi / 180)) / (w * std::sin(alpha));
+}
+
+std::vector<std::string> wedge_search(std::vector<std::string> more = {}) {
+    std::vector<std::string> o = {"/analysis/type=\"strength_reduction\"", "/analysis/steps=1"};
+    o.insert(o.end(), more.begin(), more.end());
+    return o;
+}
+
+}  // namespace
+
+TEST(StrengthReduction, PlanarWedgeSlidesAtTheLimitEquilibriumFactor) {
+    // Without cohesion F = tan 20° / tan 30° = 0.630: a factor below 1 is found, not an error.
+    const FactorOfSafety dry = search("slope-wedge.json", wedge_search());
+    ASSERT_TRUE(dry.found);
+    EXPECT_NEAR(dry.value, wedge_factor(0, 20), 0.01 * wedge_factor(0, 20));
+    EXPECT_LT(dry.value, 1.0);
+    // With a joint cohesion of 10 kPa: (240 kN + 604.5 kN) / 958.8 kN = 0.881.
+    const FactorOfSafety cohesive = search("slope-wedge.json", wedge_search({"/joint_materials/0/cohesion=10000"}));
+    ASSERT_TRUE(cohesive.found);
+    EXPECT_NEAR(cohesive.value, wedge_factor(10e3, 20), 0.01 * wedge_factor(10e3, 20));
+}
+
+TEST(StrengthReduction, WedgeFactorDoesNotDependOnTheSettings) {
+    const double expected = wedge_factor(0, 20);
+    const std::vector<std::pair<std::string, std::vector<std::string>>> variants = {
+        {"10 steps", {"/analysis/steps=10"}},
+        {"contact iteration cap x4", {"/analysis/open_close_iterations=40"}},
+        {"search tolerance / 4", {"/analysis/factor_tolerance=0.00125"}},
+        {"equilibrium tolerance / 10", {"/analysis/plastic_tolerance=1e-5"}},
+        {"finer mesh", {"/mesh/size=0.75"}},
+    };
+    for (const auto& [name, more] : variants) {
+        const FactorOfSafety f = search("slope-wedge.json", wedge_search(more));
+        EXPECT_TRUE(f.found) << name;
+        EXPECT_NEAR(f.value, expected, 0.01 * expected) << name;
+    }
+}
+
 TEST(StrengthReduction, ReducesCohesionFrictionAndTensionOfWhatIsReduced) {
     Material m;
     m.cohesion = 10e3;
