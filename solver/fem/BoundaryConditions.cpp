@@ -194,6 +194,7 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
         }
     }
     if (model.gravity.x != 0.0 || model.gravity.y != 0.0) {
+        const double factor = load_factor(model, model.gravity_table, step, time);
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             if (!active_elements.empty() && !active_elements[t]) continue;
             const auto& tri = mesh.triangles[t];
@@ -201,8 +202,8 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
             const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
             const double mass = model.materials[mesh.triangle_material[t]].density * area / 3.0;
             for (int node : mesh.quadratic() ? mesh.midside[t] : tri) {
-                f[2 * node] += mass * model.gravity.x;
-                f[2 * node + 1] += mass * model.gravity.y;
+                f[2 * node] += factor * mass * model.gravity.x;
+                f[2 * node + 1] += factor * mass * model.gravity.y;
             }
         }
     }

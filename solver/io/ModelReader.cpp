@@ -553,6 +553,7 @@ void parse_supports_and_loads(Parser& p, const json& root, Model& m, const std::
         m.edge_pressures.push_back(e);
     }
     if (root.contains("gravity")) m.gravity = p.point(root, "", "gravity");
+    m.gravity_table = optional_reference(p, root, "", "gravity_table", table_names, "load table");
 
     if (root.contains("initial_stress")) {
         const json& o = root.at("initial_stress");
@@ -815,7 +816,7 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
     p.check_keys(root, "", {"format", "version", "name", "description", "materials", "joint_materials",
                             "default_joint_material", "regions", "joints", "joint_sets", "load_tables",
                             "fixed_points", "rollers", "point_loads", "edge_pressures", "gravity",
-                            "initial_stress", "measurement_points", "mesh", "analysis", "bolts", "stages"});
+                            "gravity_table", "initial_stress", "measurement_points", "mesh", "analysis", "bolts", "stages"});
     const std::string format = p.string(root, "", "format", std::nullopt);
     if (!format.empty() && format != model_format_name)
         p.error("/format", "must be \"" + std::string(model_format_name) + "\", got \"" + format + "\"");

@@ -209,6 +209,7 @@ json to_json(const Model& m) {
         root["edge_pressures"] = std::move(list);
     }
     root["gravity"] = point(m.gravity);
+    if (m.gravity_table >= 0) root["gravity_table"] = name_of(m.load_tables, m.gravity_table, "load table");
 
     const InitialStress& s = m.initial_stress;
     if (s.kind == InitialStress::Kind::Uniform) {

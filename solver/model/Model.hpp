@@ -273,6 +273,8 @@ struct Model {
     std::vector<PointLoad> point_loads;
     std::vector<EdgePressure> edge_pressures;
     Point2 gravity{0.0, 0.0};         ///< acceleration (m/s²)
+    /// Gravity times this load table's factor (a ramp over the first steps); -1: gravity acts in full.
+    int gravity_table = -1;
     InitialStress initial_stress;
     std::vector<MeasurementPoint> measurement_points;
     MeshControls mesh;

@@ -40,7 +40,13 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
                                         : "; collapse load between " + carried + " (carried) and " + not_carried +
                                               " (not carried)"),
                    e.carried, e.not_carried};
-            if (output && simulation.state().step_fraction > 0.0) output->record_history(simulation);
+            if (output && simulation.state().step_fraction > 0.0) {
+                // Part of the step was carried: that state is saved (as the step it belongs to),
+                // so the files show what summary.json reports.
+                output->record_history(simulation);
+                output->save_state(simulation, simulation.state(), simulation.state().step + 1, simulation.state().time);
+                last_saved = simulation.state().step;
+            }
             break;
         } catch (const std::exception& e) {
             end = {RunStatus::Failed,

@@ -1201,6 +1201,9 @@ StepReport Simulation::advance_static() {
                 ++timings_.load_cuts;
                 continue;
             }
+            // The iterations spent count, whether or not the step was carried.
+            timings_.iterations += report.plastic_iterations;
+            timings_.max_iterations = std::max(timings_.max_iterations, report.plastic_iterations);
             throw PlasticCollapse("the load could not be carried beyond " + describe_position(from) + " (" +
                                       attempt.why + " for a load increment of " + std::to_string(increment) +
                                       " of a step)",
