@@ -103,6 +103,10 @@ TEST(SlopeStability, HomogeneousSlopeIndependentOfSettingsNonAssociated) {
     expect_independent_of_settings("homogeneous-slope.json", non_associated);
 }
 
+TEST(SlopeStability, GriffithsLaneSlopeIndependentOfSettingsAssociated) {
+    expect_independent_of_settings("slope-griffiths-lane.json", associated);
+}
+
 TEST(SlopeStability, MeshConvergenceAssociated) {
     // Three meshes, element count ×4 each (element size halved): the two finer agree within 1 %.
     std::vector<double> f;
