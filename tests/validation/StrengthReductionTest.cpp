@@ -122,6 +122,20 @@ TEST(StrengthReduction, WedgeFactorDoesNotDependOnTheSettings) {
     }
 }
 
+TEST(StrengthReduction, SafetyStageOfAStagedTunnelReportsItsFactor) {
+    // examples/jointed-tunnel-safety.json: the jointed tunnel built in four stages, then a safety
+    // stage. The finished tunnel stands with its strengths (F = 1 stands), and dividing them by
+    // 5 is too much for the jointed granite around a 6 m opening.
+    const FactorOfSafety f = search("jointed-tunnel-safety.json", {});
+    ASSERT_TRUE(f.found);
+    EXPECT_GT(f.value, 1.0);
+    EXPECT_LT(f.value, 5.0);
+    EXPECT_LE(f.not_converged - f.converged, 0.005 * f.converged * (1 + 1e-9));
+    ASSERT_FALSE(f.table.empty());
+    EXPECT_DOUBLE_EQ(f.table.front().factor, 1.0);
+    EXPECT_TRUE(f.table.front().stands);
+}
+
 TEST(StrengthReduction, ReducesCohesionFrictionAndTensionOfWhatIsReduced) {
     Material m;
     m.cohesion = 10e3;
