@@ -153,6 +153,29 @@ py::object run(Analysis& analysis, const std::optional<std::string>& output_fold
     py::list saved;
     for (const StepFields& f : r.saved) saved.append(fields_dict(f));
     out["fields"] = saved;
+    if (r.strength_reduction) {
+        py::dict f;
+        f["value"] = r.factor_of_safety;
+        f["converged"] = r.factor_converged;
+        f["not_converged"] = r.factor_not_converged;
+        f["trials"] = static_cast<int>(r.trials.size());
+        f["found"] = r.factor_found;
+        py::list table;
+        for (const RunResult::StrengthTrial& t : r.trials) {
+            py::dict row;
+            row["trial"] = t.number;
+            row["factor"] = t.factor;
+            row["stands"] = t.stands;
+            row["status"] = t.status;
+            row["steps"] = t.steps;
+            row["iterations"] = t.iterations;
+            row["max_displacement"] = t.max_displacement;
+            row["message"] = t.message;
+            table.append(row);
+        }
+        f["table"] = table;
+        out["factor_of_safety"] = f;
+    }
     return std::move(out);
 }
 
@@ -213,6 +236,8 @@ PYBIND11_MODULE(mcdda, m)
              py::arg("progress") = py::none(), py::arg("threads") = 0,
              "Runs the analysis with the GIL released. progress(info) is called after every step; "
              "returning False stops the run. Returns a dict: status, message, exit_code, steps, time, "
-             "history (dict of arrays), fields (list of dicts of arrays, every keep_every-th step and the last)")
+             "history (dict of arrays), fields (list of dicts of arrays, every keep_every-th step and the last); "
+             "a strength reduction analysis also factor_of_safety: value, converged, not_converged, trials, "
+             "found, table (a dict per trial)")
         .def("cancel", &Analysis::cancel, "Stops a run in progress (from another thread) after its current step");
 }

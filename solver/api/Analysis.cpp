@@ -8,6 +8,7 @@
 #include "run/RunLoop.hpp"
 #include "run/RunOutput.hpp"
 #include "run/Simulation.hpp"
+#include "run/StrengthReduction.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -178,6 +179,7 @@ RunResult Analysis::run(const RunOptions& options)
     if (!p.ok) throw ModelError(message_of("the model has errors", impl_->diagnostics), impl_->diagnostics);
     if (options.threads > 0) set_thread_count(options.threads);
     impl_->cancel = false;
+    if (is_strength_reduction(p.model)) return run_strength_reduction(options);
 
     std::unique_ptr<Simulation> owned;
     try {
@@ -225,6 +227,62 @@ RunResult Analysis::run(const RunOptions& options)
     result.unbalanced_ratio = s.unbalanced_ratio;
     result.collapse_carried = end.collapse_carried;
     result.collapse_not_carried = end.collapse_not_carried;
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+RunResult Analysis::run_strength_reduction(const RunOptions& options)
+{
+    const auto started = std::chrono::steady_clock::now();
+    const Preprocessed& p = impl_->prepare(PreprocessStage::Mesh);
+    std::unique_ptr<StrengthReductionSearch> search;
+    try {
+        search = std::make_unique<StrengthReductionSearch>(p);
+    } catch (const std::exception& e) {
+        throw ModelError(e.what(), {});
+    }
+    std::unique_ptr<RunOutput> output;
+    if (!options.output_folder.empty())
+        output = std::make_unique<RunOutput>(options.output_folder, options.name.empty() ? "model" : options.name);
+    RunResult result;
+    bool stopped_by_callback = false;
+    StrengthReductionSearch::Callbacks callbacks;
+    callbacks.should_stop = [&] { return stopped_by_callback || impl_->cancel.load(); };
+    callbacks.on_step = [&](const StepReport& report) {  // the construction stages
+        HistoryRow row;
+        row.step = report.step;
+        row.stage = report.stage + 1;
+        row.time = report.time;
+        row.unbalanced_ratio = report.unbalanced_ratio;
+        row.max_displacement = largest_displacement(search->simulation().state());
+        row.yielding = report.yielding;
+        row.iterations = report.plastic_iterations;
+        result.history.push_back(row);
+        if (options.on_step) {
+            StepProgress progress{report.step, search->simulation().planned_steps(), row.stage, report.time,
+                                  report.unbalanced_ratio, row.max_displacement, report.yielding};
+            if (!options.on_step(progress)) stopped_by_callback = true;
+        }
+    };
+    const RunEnd end = search->run(output.get(), callbacks);
+    const FactorOfSafety& f = search->factor();
+    if (output) output->write_summary(&search->simulation(), end.status, end.message, &f);
+
+    result.status = status_name(end.status);
+    result.message = end.message;
+    result.exit_code = exit_status(end.status);
+    result.steps = search->simulation().state().step;
+    result.time = search->simulation().state().time;
+    result.unbalanced_ratio = search->simulation().state().unbalanced_ratio;
+    result.saved.push_back(fields_of(search->simulation()));
+    result.strength_reduction = true;
+    result.factor_found = f.found;
+    result.factor_of_safety = f.value;
+    result.factor_converged = f.converged;
+    result.factor_not_converged = f.not_converged;
+    for (const StrengthTrial& t : f.table)
+        result.trials.push_back({t.number, t.factor, t.stands, t.status, t.message, t.steps, t.iterations,
+                                 t.max_displacement});
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;
 }

@@ -30,6 +30,23 @@ def square_block():
     }
 
 
+class StrengthReductionTest(unittest.TestCase):
+    def test_wedge_factor_of_safety_and_trials(self):
+        # The planar wedge: F = tan 20° / tan 30° = 0.630 (docs/plasticity.md).
+        a = mcdda.Analysis.from_file(os.path.join(EXAMPLES, "slope-wedge.json"))
+        a.set({"/analysis/type": "strength_reduction", "/analysis/steps": 1})
+        r = a.run()
+        f = r["factor_of_safety"]
+        self.assertTrue(f["found"])
+        self.assertAlmostEqual(f["value"], 0.6304, delta=0.01 * 0.6304)
+        self.assertEqual(f["value"], f["converged"])
+        self.assertGreater(f["not_converged"], f["converged"])
+        self.assertEqual(f["trials"], len(f["table"]))
+        self.assertEqual(f["table"][0]["factor"], 1.0)
+        self.assertFalse(f["table"][0]["stands"])
+        self.assertEqual(r["status"], "completed")
+
+
 class ModelTest(unittest.TestCase):
     def test_version(self):
         self.assertRegex(mcdda.__version__, r"^\d+\.\d+\.\d+$")

@@ -107,6 +107,26 @@ struct RunResult {
     std::vector<HistoryRow> history;
     std::vector<StepFields> saved;  ///< fields kept (RunOptions::keep_every), the last step last
     double seconds = 0.0;           ///< wall-clock time of the run
+
+    /// A strength reduction analysis (the model's or its last stage's): the factor of safety,
+    /// as summary.json's `factor_of_safety` (docs/running.md). `history` then holds the steps of
+    /// the construction stages; the trials are here.
+    struct StrengthTrial {
+        int number = 0;
+        double factor = 0.0;
+        bool stands = false;
+        std::string status;   ///< "stands", "collapsed", "unbalanced", "failed"
+        std::string message;  ///< why it does not stand
+        int steps = 0;
+        int iterations = 0;
+        double max_displacement = 0.0;  ///< m
+    };
+    bool strength_reduction = false;
+    bool factor_found = false;          ///< the bracket reached the tolerance
+    double factor_of_safety = 0.0;      ///< the largest factor that stood (= factor_converged)
+    double factor_converged = 0.0;
+    double factor_not_converged = 0.0;  ///< the smallest factor that did not stand
+    std::vector<StrengthTrial> trials;
 };
 
 /// One analysis: a model, its blocks and mesh once made, and its runs.
@@ -144,12 +164,14 @@ public:
     MeshArrays mesh_arrays();
 
     /// Runs the analysis to its end (or a stop). Throws ModelError when the model has errors;
-    /// solver failures and collapse are results, not exceptions.
+    /// solver failures and collapse are results, not exceptions. A strength reduction analysis
+    /// runs its search: RunResult's factor_of_safety and trials.
     RunResult run(const RunOptions& options = {});
     /// Asks a run in progress (on another thread) to stop after its current step.
     void cancel();
 
 private:
+    RunResult run_strength_reduction(const RunOptions& options);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
