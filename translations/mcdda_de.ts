@@ -3367,6 +3367,16 @@
         <translation>plastische Dehnung</translation>
     </message>
     <message>
+        <location filename="../gui/view/ResultScene.cpp" line="91"/>
+        <source>displacement increment</source>
+        <translation>Verschiebungsinkrement</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="93"/>
+        <source>plastic strain increment</source>
+        <translation>plastisches Dehnungsinkrement</translation>
+    </message>
+    <message>
         <location filename="../gui/view/ResultScene.cpp" line="80"/>
         <source>displacement</source>
         <translation>Verschiebung</translation>

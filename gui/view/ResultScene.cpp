@@ -85,6 +85,12 @@ const FieldInfo field_table[] = {
     {"stress_xy", "stress", false, 3, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "shear stress xy")},
     {"stress_1", "stress", false, principal_1, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "principal stress 1")},
     {"stress_3", "stress", false, principal_3, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "principal stress 3")},
+    // The mechanism of a strength reduction: the increments between the last factor that stood
+    // and the first that did not (in the last saved step only).
+    {"displacement_increment", "displacement_increment", true, magnitude, "m",
+     QT_TRANSLATE_NOOP("mcdda::view", "displacement increment")},
+    {"plastic_strain_increment", "plastic_strain_increment", false, 0, "-",
+     QT_TRANSLATE_NOOP("mcdda::view", "plastic strain increment")},
 };
 
 /// The points of cell c in order around its boundary: a six-node triangle (VTK's quadratic

@@ -137,6 +137,7 @@ RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callback
         safety_stage_ >= 0 ? model_.model.stages[safety_stage_].analysis : model_.model.analysis;
 
     std::optional<Trial> stood, fell;  // the highest factor that stood, the lowest that did not
+    std::optional<Trial> below;        // the factor that stood before `stood`: the next lower one
     auto try_factor = [&](double f) -> bool {
         Trial t = run_trial(f, callbacks);
         if (t.cancelled) return false;
@@ -144,7 +145,10 @@ RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callback
         if (output) output->record_trial(*simulation_, t.record, t.state);
         if (callbacks.on_trial) callbacks.on_trial(t.record);
         if (t.record.stands) {
-            if (!stood || f > stood->record.factor) stood = std::move(t);
+            if (!stood || f > stood->record.factor) {
+                if (stood) below = std::move(stood);
+                stood = std::move(t);
+            }
         } else if (!fell || f < fell->record.factor) {
             fell = std::move(t);
         }
@@ -169,8 +173,12 @@ RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callback
     factor_.found = stood && fell &&
                     fell->record.factor - stood->record.factor <= settings.factor_tolerance * stood->record.factor * (1 + 1e-12);
 
-    // The critical pair: the last state that stood and the first that did not, with the
-    // increments between them on the latter (the mechanism engineers look at).
+    // The critical pair: the last state that stood and the first that did not. The latter
+    // carries the mechanism engineers look at: the increments of displacement and plastic strain
+    // from the next lower factor that stood to the last one — both in equilibrium under the full
+    // load, so the increments concentrate on the slip surface. (The trial that did not stand
+    // stopped at part of its load, so its difference to the last that stood mixes load and
+    // strength.) Without a lower factor that stood, the increments from the construction's end.
     if (output) {
         int number = simulation_->state().step;
         if (stood) {
@@ -182,13 +190,19 @@ RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callback
             VtuFields extra;
             extra.field_data.push_back({"strength_factor", 1, {fell->record.factor}});
             if (stood) {
-                const Eigen::VectorXd du = fell->state.reported_displacement() - stood->state.reported_displacement();
+                // (A trial's displacements are reported from its start: the construction's end.)
+                Eigen::VectorXd du = stood->state.reported_displacement();
+                std::vector<double> plastic = stood->state.plastic_strain;
+                const SimulationState* from = below ? &below->state : start_ ? &start_->state : nullptr;
+                if (below) du -= below->state.reported_displacement();
+                if (from)
+                    for (std::size_t e = 0; e < plastic.size() && e < from->plastic_strain.size(); ++e)
+                        plastic[e] -= from->plastic_strain[e];
                 VtuField increment{"displacement_increment", 3, {}};
                 for (Eigen::Index i = 0; i + 1 < du.size(); i += 2)
                     increment.values.insert(increment.values.end(), {du[i], du[i + 1], 0.0});
                 VtuField strain{"plastic_strain_increment", 1, {}};
-                for (std::size_t e = 0; e < fell->state.plastic_strain.size(); ++e)
-                    strain.values.push_back(fell->state.plastic_strain[e] - stood->state.plastic_strain[e]);
+                strain.values = plastic;
                 extra.point_data.push_back(std::move(increment));
                 extra.cell_data.push_back(std::move(strain));
             }
