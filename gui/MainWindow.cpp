@@ -337,7 +337,7 @@ QString MainWindow::resultsHistoryPath() const { return session_->resultsHistory
 void MainWindow::showStep(const QString& vtu_path)
 {
     // While running, an earlier saved step is looked at until the slider is back on the last
-    // one, when the picture follows the run again (issue 13, item 15).
+    // one, when the picture follows the run again.
     if (isRunning()) looking_back_ = steps_->currentIndex() + 1 < steps_->count();
     shown_step_ = isRunning() && !looking_back_ ? QString() : vtu_path;
     showResult();

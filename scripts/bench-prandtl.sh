@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Plasticity benchmark (issue 9): the Prandtl footing on the load sequence of Smith & Griffiths'
+# Plasticity benchmark: the Prandtl footing on the load sequence of Smith & Griffiths'
 # program 6.1 — 200, 300, 350, 400, 450, 480 kPa, then +1 kPa per step until collapse — with
 # three- and six-node elements on several meshes, for the flexible footing (a pressure on the
 # soil, as the reference program loads it: examples/prandtl-flexible-footing.json) and the rigid
@@ -7,7 +7,7 @@
 # the last increment bisected to 1/64 (the default) and without bisection (min_load_fraction 1,
 # the reference's 1 kPa resolution). Prints, per case, the collapse bracket as q/cu, the error of
 # the load carried against 2 + π and the CPU time of the whole process (user + sys), and
-# side by side the reference program's figures as measured for issue 9.
+# side by side the reference program's figures as measured on this kind of machine.
 # Usage: bash scripts/bench-prandtl.sh [quick]   (quick: the flexible footing only)
 #        OLD=path/to/other/mcdda bash scripts/bench-prandtl.sh   runs every case with that build too,
 #        in the same session, one row each ("build" column), for a side-by-side CPU comparison.
@@ -68,4 +68,4 @@ if [ "${1:-}" != quick ]; then
   done
 fi
 echo "reference (Smith & Griffiths program 6.1, flexible footing, 32 eight-node quadrilaterals): 5.15 (+0.16 %) in 0.22 s CPU;"
-echo "          2,048 quadrilaterals: 5.12 in 43 s (issue 9's measurement on this kind of machine)"
+echo "          2,048 quadrilaterals: 5.12 in 43 s (measured on this kind of machine)"

@@ -55,7 +55,7 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
     name_ = new QLineEdit(tr("set %1").arg(model.joint_sets.size() + 1), this);
     name_->setObjectName(QStringLiteral("nameEdit"));
     name_->setToolTip(tr("Name of the set (tree, messages, results)"));
-    // The convention stated where it is typed (issue 13, item 14): engineers think in apparent dip.
+    // The convention stated where it is typed: engineers think in apparent dip.
     auto* convention = new QLabel(tr("Apparent dip in the section: the angle of the traces from the horizontal, "
                                      "counter-clockwise. 0° is horizontal, 90° vertical, 30° rises to the "
                                      "right, 150° (or −30°) dips 30° to the right."),

@@ -71,7 +71,7 @@ void JointSetPreview::paintEvent(QPaintEvent*)
     painter.fillPath(rock, rockColor());
     painter.setPen(QPen(Qt::darkGray, 1.0));
     painter.drawPath(rock);
-    // Only where the traces cut rock: beyond it they cut nothing (issue 13, item 14).
+    // Only where the traces cut rock: beyond it they cut nothing.
     painter.setClipPath(rock);
     painter.setPen(QPen(traceColor(), 1.5));
     for (const Joint& j : traces_)

@@ -61,7 +61,7 @@ signals:
     void progress(const mcdda::gui::RunProgress& progress);
     void snapshot(std::shared_ptr<const mcdda::ResultSnapshot> snapshot);
     /// Inside a step: its equilibrium iterations so far (throttled like progress), so that a
-    /// long step is not silent (issue 13, item 2).
+    /// long step is not silent.
     void iterating(const mcdda::IterationInfo& info);
     /// The run ended; `message` says why unless it completed. Results up to the last
     /// accepted step are kept (last snapshot sent, files written).

@@ -1,5 +1,5 @@
 #!/bin/sh
-# `mcdda render` into a folder the user may not write to says so in words (issue 10: VTK's
+# `mcdda render` into a folder the user may not write to says so in words (VTK's
 # "Ran out of disk space" and a wrong errno before), with no file left behind.
 # Usage: render-unwritable.sh MCDDA RUN_DIR EXAMPLES_DIR
 set -u

@@ -1,5 +1,5 @@
 #!/bin/sh
-# A rerun into a folder with results (issue 10): killed or failed, it leaves the earlier results
+# A rerun into a folder with results: killed or failed, it leaves the earlier results
 # in DIR/previous; completed, it replaces them.
 # Usage: rerun-keeps-results.sh MCDDA RUN_DIR EXAMPLES_DIR CLI_MODELS_DIR
 set -u

@@ -86,7 +86,7 @@ void EditingTest::drawUndoRedoSaveOpen()
     gui::ModelDocument* doc = window.document();
     QCOMPARE(doc->model().materials.size(), std::size_t(1));
     QCOMPARE(doc->model().joint_materials.size(), std::size_t(1));
-    // Issue 13, item 13: a round unit weight (25.5 kN/m³, it read 25.506).
+    // A round unit weight (25.5 kN/m³, it read 25.506).
     QVERIFY(std::fabs(doc->model().materials[0].density * 9.81 - 25.5e3) < 1e-9);
     QVERIFY(doc->model().regions.empty());
     QVERIFY(!doc->isModified());
@@ -388,7 +388,7 @@ void EditingTest::stagesAndBoltsShownInTheTree()
     QCOMPARE(bolts->child(0)->text(0), QStringLiteral("roof bolt 1"));
 }
 
-// Issue 13, item 11: Ctrl+Z with the focus in the coordinate field undoes the last model edit
+// Ctrl+Z with the focus in the coordinate field undoes the last model edit
 // (the field had nothing of its own to undo and swallowed the key).
 void EditingTest::undoFromTheCoordinateField()
 {
@@ -422,7 +422,7 @@ void EditingTest::undoFromTheCoordinateField()
     QCOMPARE(doc->model().regions.size(), std::size_t(1));
 }
 
-// Issue 13, items 6 and 15: the Properties dock is in the View menu; the Messages dock shows ten
+// The Properties dock is in the View menu; the Messages dock shows ten
 // lines and keeps its newest line in sight; the step label names the step.
 void EditingTest::viewMenuMessagesAndStepLabel()
 {
@@ -468,7 +468,7 @@ void EditingTest::viewMenuMessagesAndStepLabel()
     QVERIFY2(label->text().startsWith(QStringLiteral("step 10 (2 of 2, t = 2.5 s)")), qPrintable(label->text()));
 }
 
-// Issue 13, item 12: F1 opens the user guide (compiled into the program), What's This is in
+// F1 opens the user guide (compiled into the program), What's This is in
 // the Help menu.
 void EditingTest::helpShowsTheUserGuide()
 {
@@ -493,7 +493,7 @@ void EditingTest::helpShowsTheUserGuide()
     QVERIFY(format_shown);
 }
 
-// Issue 13, item 13: an empty new model asks for a region (not "nothing is fixed"), and the
+// An empty new model asks for a region (not "nothing is fixed"), and the
 // first region, typed far outside the default view, is brought into view.
 void EditingTest::newModelTalksOfRegionsAndFitsTheFirst()
 {
@@ -526,7 +526,7 @@ void EditingTest::newModelTalksOfRegionsAndFitsTheFirst()
     QVERIFY2(window.messages().contains(QStringLiteral("nothing is fixed")), qPrintable(window.messages()));
 }
 
-// Issue 13, stages in the window: the Stages dock lists the staged jointed tunnel's stages; the
+// Stages in the window: the Stages dock lists the staged jointed tunnel's stages; the
 // picture shows the model as it stands in the stage chosen (the top heading gone from the stage
 // that excavates it on); stages are added, renamed, edited and removed as undoable edits.
 void EditingTest::stageListShowsAndEditsStages()
@@ -629,7 +629,7 @@ void EditingTest::stageListShowsAndEditsStages()
     QCOMPARE(window.document()->model().stages.size(), std::size_t(4));
 }
 
-// Issue 13, bolts: Edit ▸ Bolt adds a rock bolt between two clicked anchors (undoable); the
+// Bolts: Edit ▸ Bolt adds a rock bolt between two clicked anchors (undoable); the
 // picture draws it and the legend names it.
 void EditingTest::boltToolDrawsABolt()
 {
@@ -657,7 +657,7 @@ void EditingTest::boltToolDrawsABolt()
     QCOMPARE(guitest::count_around(*window.modelView(), 5.0, 5.0, view::palette::bolt, 3), 0);
 }
 
-// Issue 13, item 4: a joint set whose trace passes a hair's breadth from a corner (as with the old
+// A joint set whose trace passes a hair's breadth from a corner (as with the old
 // default origin on the model corner) cuts no sliver block: the cutter snaps it onto the corner.
 // Where a sliver cannot be avoided — a region drawn with a vertex 1e-8 m from an edge — the
 // Messages dock says so, naming the block, its region and the place.
@@ -685,7 +685,7 @@ void EditingTest::tinyBlocksAreReported()
     QVERIFY2(text.contains(QStringLiteral("block")) && text.contains(QStringLiteral("near (25")), qPrintable(text));
 }
 
-// Issue 14: File ▸ Import DXF makes a new, untitled model of a drawing (a 10 m square in
+// File ▸ Import DXF makes a new, untitled model of a drawing (a 10 m square in
 // millimetres on layer "granite" and a joint across it), says what it did, and draws it.
 void EditingTest::importDxfMakesAModel()
 {

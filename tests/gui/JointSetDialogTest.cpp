@@ -151,7 +151,7 @@ void JointSetDialogTest::refusesZeroPersistenceAndMissingTraceLength()
     QCOMPARE(no_length.result(), int(QDialog::Accepted));
 }
 
-// Issue 13, item 14: the box and the origin come from the model (not 0–10 m and a corner), the
+// The box and the origin come from the model (not 0–10 m and a corner), the
 // set has a name, and the angle convention is written beside the angle.
 void JointSetDialogTest::defaultsFollowTheModelAndTheConventionIsStated()
 {

@@ -419,7 +419,7 @@ void ModelViewTest::legendSpeaksTheWindowLanguage()
     QVERIFY(labels().contains(QStringLiteral("Joint")));
 }
 
-// Issue 13, item 14: a joint set's traces are drawn where they cut rock, not across the tunnel
+// A joint set's traces are drawn where they cut rock, not across the tunnel
 // opening or empty space (an explicit joint's stray parts still are, lightly).
 void ModelViewTest::jointSetTracesStopAtTheOpening()
 {

@@ -293,7 +293,7 @@ void PropertyEditorTest::viewFollowsEditsOffTheGuiThread()
     QTRY_VERIFY(!window->isPreprocessing());
 }
 
-// Issue 13, item 12: every field of the Properties dock says what it means, in its tooltip and in
+// Every field of the Properties dock says what it means, in its tooltip and in
 // What's This, and the fields where 0 means "automatic" read so.
 void PropertyEditorTest::everyFieldExplainsItself()
 {
@@ -346,7 +346,7 @@ void check_declared(PropertyEditor* editor, const std::vector<RecordField<Record
 
 }  // namespace
 
-// Issue 13: the Material, Joint material and Bolts forms are built from the field declarations
+// The Material, Joint material and Bolts forms are built from the field declarations
 // the reader, writer and validator use (model/ModelFields.hpp).
 void PropertyEditorTest::formsFollowTheFieldDeclarations()
 {
@@ -368,7 +368,7 @@ void PropertyEditorTest::formsFollowTheFieldDeclarations()
     QCOMPARE(window->document()->model().materials[0].density, 20.0e3 / 9.81);
 }
 
-// Issue 13: the Bolts tab edits the staged tunnel's roof bolts: strength in kN/m, refusals with
+// The Bolts tab edits the staged tunnel's roof bolts: strength in kN/m, refusals with
 // the validator's reason, a rename that the stages follow, each change one undoable edit.
 void PropertyEditorTest::boltFormEditsBolts()
 {
@@ -412,7 +412,7 @@ void PropertyEditorTest::boltFormEditsBolts()
     QCOMPARE(window.document()->model().bolts[2].name, std::string("roof bolt 3"));
 }
 
-// Issue 13, item 7: the units chosen in the Results toolbar (Units ▸ MPa / kPa) reach the forms
+// The units chosen in the Results toolbar (Units ▸ MPa / kPa) reach the forms
 // (moduli, strengths, in-situ stresses, pressures) and the Model tree; values typed in them mean
 // the unit shown.
 void PropertyEditorTest::unitsChosenReachFormsAndTree()

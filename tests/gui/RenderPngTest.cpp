@@ -581,7 +581,7 @@ TEST_F(RenderPng, ResultJointSlip)
     EXPECT_EQ(picture.count_around(base[0], base[1], 6, is_slip), 0);
 }
 
-// Issue 13, item 8: rulers and a scale bar in the bottom-left corner (and none when switched
+// Rulers and a scale bar in the bottom-left corner (and none when switched
 // off), a title naming the field and what is known of the step over the picture.
 TEST_F(RenderPng, ResultRulersScaleBarAndTitle)
 {
@@ -613,7 +613,7 @@ TEST_F(RenderPng, ResultRulersScaleBarAndTitle)
     EXPECT_GT(without.count_in(0, height - 22, width / 2, height, is_dark), 40);
 }
 
-// Issue 13, item 9: round legend values, a uniform field shown as one value (not −1…1), a range
+// Round legend values, a uniform field shown as one value (not −1…1), a range
 // chosen by hand, colour bands and other colour maps.
 TEST_F(RenderPng, ResultLegendRoundsAndUniformFields)
 {
@@ -670,7 +670,7 @@ TEST_F(RenderPng, ResultLegendRoundsAndUniformFields)
     EXPECT_EQ(saturated, 0);
 }
 
-// Issue 13, item 10: the automatic deformation scale draws the largest displacement as 5 % of
+// The automatic deformation scale draws the largest displacement as 5 % of
 // the model's size, and a scale that turns elements inside out is reported.
 TEST_F(RenderPng, ResultAutoDeformationAndInvertedElements)
 {
@@ -691,7 +691,7 @@ TEST_F(RenderPng, ResultAutoDeformationAndInvertedElements)
     EXPECT_EQ(mirrored.inverted_elements, static_cast<int>(p.mesh.triangles.size()));
 }
 
-// Issue 13, item 5: the geotechnical sign convention: stresses negated, σ1 the major compressive
+// The geotechnical sign convention: stresses negated, σ1 the major compressive
 // stress (σ1 ≥ σ3), the convention named in the legend and the probe.
 TEST_F(RenderPng, ResultStressSignConvention)
 {
@@ -728,7 +728,7 @@ TEST_F(RenderPng, ResultStressSignConvention)
 }
 
 
-// Issue 13: the live picture of a staged run names the stage as the saved steps' pictures do
+// The live picture of a staged run names the stage as the saved steps' pictures do
 // (the snapshot carries it).
 TEST_F(RenderPng, LiveResultTitleNamesTheStage)
 {

@@ -227,7 +227,7 @@ void ResultsTest::plotShowsTheHistory()
     QCOMPARE(plot->series()->at(rows - 1).y(), plot->table().rows.back()[column]);
 }
 
-// Issue 13: the unbalanced-force ratio per step under the history plot, with the equilibrium
+// The unbalanced-force ratio per step under the history plot, with the equilibrium
 // limit as a dashed line; both drawn.
 void ResultsTest::unbalancedRatioBesideTheHistory()
 {
@@ -265,7 +265,7 @@ void ResultsTest::unbalancedRatioBesideTheHistory()
     QVERIFY2(count(gui::UnbalancedPlot::limitColor()) > 10, qPrintable(QString::number(count(gui::UnbalancedPlot::limitColor())) + QStringLiteral(" size %1x%2 axis %3..%4").arg(image.width()).arg(image.height()).arg(unbalanced->limitSeries()->at(0).y()).arg(unbalanced->limitSeries()->at(1).x())));
 }
 
-// Issue 13, item 10: the automatic deformation scale is used and shown beside the field; a
+// The automatic deformation scale is used and shown beside the field; a
 // scale that turns elements inside out is warned about.
 void ResultsTest::deformationScaleIsShownAndWarned()
 {
@@ -292,7 +292,7 @@ void ResultsTest::deformationScaleIsShownAndWarned()
     QVERIFY(bar->infoText().isEmpty());
 }
 
-// Issue 13, item 7: one choice of units for stresses and displacements, used by the legend, the
+// One choice of units for stresses and displacements, used by the legend, the
 // cursor read-out and query lines (the probe), and kept for the next session.
 void ResultsTest::unitsAreChosenOnce()
 {

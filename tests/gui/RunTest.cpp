@@ -328,7 +328,7 @@ void RunTest::salenconOpenMeshRunShowsPlasticZone()
     const double sigma3 = text.section(QStringLiteral("= "), -1).section(QLatin1Char(' '), 0, 0).toDouble();
     QVERIFY2(sigma3 > 9.0 && sigma3 < 12.0, qPrintable(text));
     // The files' convention on request: the same stress, tension positive; and σ1 (compression)
-    // is minus the tension-positive σ3 (issue 13, item 5).
+    // is minus the tension-positive σ3.
     window.findChild<QComboBox*>(QStringLiteral("stressSignBox"))->setCurrentIndex(1);
     QTest::mouseMove(view, view->toWidget(QPointF(15.2, 15.0)).toPoint());
     QTest::mouseMove(view, view->toWidget(QPointF(15.0, 15.0)).toPoint());
@@ -345,7 +345,7 @@ void RunTest::salenconOpenMeshRunShowsPlasticZone()
     QVERIFY2(std::abs(compression1 + tension3) < 0.01, qPrintable(QStringLiteral("%1 %2").arg(compression1).arg(tension3)));
 }
 
-// Issue 13, item 2: inside a long step (Salençon's excavation, dozens of equilibrium
+// Inside a long step (Salençon's excavation, dozens of equilibrium
 // iterations) the status bar tells the iterations and the out-of-balance force.
 void RunTest::longStepShowsItsIterations()
 {
@@ -376,7 +376,7 @@ void RunTest::longStepShowsItsIterations()
     QVERIFY(last.out_of_balance > 0.0);
 }
 
-// Issue 13, item 15: during a run the Steps dock lists the steps saved so far; choosing an
+// During a run the Steps dock lists the steps saved so far; choosing an
 // earlier one shows it and keeps it shown while the run goes on; the last one follows the run.
 void RunTest::lookBackWhileRunning()
 {
@@ -405,7 +405,7 @@ void RunTest::lookBackWhileRunning()
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
 }
 
-// Issue 13, contacts on screen and query lines: after a run of the staged jointed tunnel
+// Contacts on screen and query lines: after a run of the staged jointed tunnel
 // (shortened: one step for the bolts and the bench) the last saved step is shown with its contact
 // forces and bolts, which the Contacts toggle takes away; a query line across the tunnel plots
 // the field with a gap in the opening and exports it.

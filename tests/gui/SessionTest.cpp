@@ -275,7 +275,7 @@ void SessionTest::newModelDefaults()
     QCOMPARE(m.analysis.time_step, 1.0);  // load steps counted in seconds, not 0.01 s
 }
 
-// Issue 13, item 7: one choice of units for the whole program: stored in the settings, told to
+// One choice of units for the whole program: stored in the settings, told to
 // everyone once when it changes, and giving the forms their stress and modulus units.
 void SessionTest::unitChoiceIsSharedAndKept()
 {

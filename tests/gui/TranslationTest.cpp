@@ -130,13 +130,13 @@ private slots:
             edit << tr_editing(source);
         QVERIFY(distinct_mnemonics(edit));
         QVERIFY(distinct_mnemonics(QStringList{tr_run("&Run"), tr_run("Res&ume"), tr_run("&Stop"), tr_run("Results &Folder...")}));
-        // The mesh statistics in Messages (issue 13, item 16).
+        // The mesh statistics in Messages.
         QVERIFY(tr_messages("%1 blocks, %2 nodes, %3 triangles").contains(QStringLiteral("Blöcke")));
     }
 
     void germanShortcutsNumbersAndButtons() {
         // Qt's own German texts (Debian's qt6-translations-l10n) and the German locale: Strg and
-        // Entf in shortcuts, Abbrechen on dialog buttons, a decimal comma (issue 13, item 16).
+        // Entf in shortcuts, Abbrechen on dialog buttons, a decimal comma.
         mcdda::i18n::Installed installed;
         const QLocale before;
         const auto owner = install(QStringLiteral("de"), &installed);

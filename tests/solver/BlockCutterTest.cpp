@@ -179,7 +179,7 @@ TEST(BlockCutter, SupportsAndPressuresOffEveryBlockBoundaryAreRefusedBeforeMeshi
 }
 
 // Features far below the model's size cannot be meshed (CGAL's refinement crashed or spun on
-// them, issue 10): `check` already refuses them, naming the block, region and place.
+// them): `check` already refuses them, naming the block, region and place.
 TEST(BlockCutter, SliversAndNearlyCoincidentVerticesAreRefusedWithTheirPlace) {
     const Preprocessed sliver = preprocess_text(square_model_json(), {"/regions/0/boundary=[[0,0],[10,0],[10,1e-9]]"},
                                                 PreprocessStage::Cut);

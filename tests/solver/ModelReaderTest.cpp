@@ -58,7 +58,7 @@ TEST(ModelReader, MalformedJsonReportsLineAndColumn) {
     EXPECT_NE(r.diagnostics[0].message.find("malformed JSON"), std::string::npos);
 }
 
-// A 10 MB key was printed in full twice (pointer and message, issue 10); '/' and '~' in a key
+// A 10 MB key was printed in full twice (pointer and message); '/' and '~' in a key
 // must be escaped in its pointer.
 TEST(ModelReader, AVeryLongOrOddUnknownKeyIsShownShortAndEscaped) {
     std::string text = square_model_json();

@@ -56,7 +56,7 @@ TEST(ModelValidation, NothingFixed) {
 }
 
 TEST(ModelValidation, AnEmptyModelOnlyLacksARegion) {
-    // A new model in the desktop program, before anything is drawn (issue 13, item 13): the
+    // A new model in the desktop program, before anything is drawn: the
     // missing region is the one thing to say, not "nothing is fixed".
     Model empty;
     empty.materials.push_back(Material{});
@@ -183,7 +183,7 @@ TEST(ModelValidation, LoadTablesNeedNamesPointsAndExistingReferences) {
 }
 
 // Absurd magnitudes (a typo, a unit error) used to be accepted and then ran for minutes or
-// reported nonsense collapses (issue 10): they are refused with the value and the limit.
+// reported nonsense collapses: they are refused with the value and the limit.
 TEST(ModelValidation, AbsurdMagnitudesAreRefused) {
     expect_error({"/gravity=[0, -9.2e18]"}, "/gravity", "beyond any physical value");
     expect_error({"/materials/0/young_modulus=1e20"}, "/materials/0/young_modulus", "check the units");

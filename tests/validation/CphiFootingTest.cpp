@@ -37,7 +37,7 @@ TEST(CphiFooting, WeightlessCollapseWithinThreePercentOfPrandtlReissner) {
     std::cout << "c-φ footing, weightless: collapse between " << r.carried / 1e3 << " and " << r.not_carried / 1e3
               << " kPa (Prandtl–Reissner " << exact / 1e3 << " kPa, error " << 100 * (r.carried / exact - 1)
               << " %)\n";
-    EXPECT_NEAR(r.carried, exact, 0.03 * exact);  // issue 9 acceptance: 3 %
+    EXPECT_NEAR(r.carried, exact, 0.03 * exact);  // acceptance: 3 %
 }
 
 TEST(CphiFooting, WithSoilWeightCollapsesWithinTerzaghiRange) {

@@ -37,7 +37,7 @@ void expect_prandtl(const CollapseRun& r, const std::string& label) {
               << 1000.0 * r.settlement.back() << " mm\n";
     EXPECT_LE(r.carried, r.not_carried) << label;
     EXPECT_LT(r.not_carried - r.carried, 0.002 * prandtl) << label << ": the bracket is not narrow";
-    EXPECT_NEAR(r.carried, prandtl, 0.01 * prandtl) << label;  // issue 9 acceptance: 1 %
+    EXPECT_NEAR(r.carried, prandtl, 0.01 * prandtl) << label;  // acceptance: 1 %
     // The load–settlement curve turns over: settlement per unit load near failure is many times
     // the initial (elastic) rate, and it never decreases while the load rises.
     const std::size_t n = r.load.size();

@@ -2,8 +2,8 @@
 // results are compared with data recorded in tests/validation/baseline/<case>.json, so that a
 // restructuring of the engine can be shown to change nothing (or to change deliberately).
 //
-// First recorded on the initial-stress engine (commit 2df2356), re-recorded on the equilibrium-
-// iteration engine of issue 9 (Newton with the consistent tangent for ψ = φ, Anderson-accelerated
+// First recorded on the initial-stress engine (commit 2df2356), re-recorded on the present
+// equilibrium-iteration engine (Newton with the consistent tangent for ψ = φ, Anderson-accelerated
 // elastic iterations otherwise, load bisection, stricter contact detection), three-node triangles;
 // the Prandtl case again when Newton began its increments with the last converged tangent (its
 // stresses moved by less than the equilibrium tolerance); Lavarak (moved by ~1e-5 relative) when
@@ -114,7 +114,7 @@ json record(const BaselineCase& c, const mcdda::test::Run& run) {
     j["file"] = c.file;
     j["overrides"] = c.overrides;
     j["steps"] = s.step;
-    j["recorded_on"] = "equilibrium-iteration engine (issue 9), three-node triangles";
+    j["recorded_on"] = "equilibrium-iteration engine, three-node triangles";
 
     json h;
     h["time"] = run.history.time;

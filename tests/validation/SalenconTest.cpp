@@ -104,7 +104,7 @@ TEST(Salencon, PlasticRadiusWallDisplacementAndStresses) {
               << far * 1000 << " at b = 40 m to " << near * 1000 << " at b = 20 m; Salençon 11.65)"
               << "; largest ring error for r ≥ 1.2a: radial " << 100 * worst_radial << " %, hoop "
               << 100 * worst_hoop << " %\n";
-    EXPECT_NEAR(plastic_radius, R0, 0.01 * R0);  // issue 9 acceptance: 1 %
+    EXPECT_NEAR(plastic_radius, R0, 0.01 * R0);  // acceptance: 1 %
     EXPECT_GT(wall, 0.99 * far);
     EXPECT_LT(wall, 1.01 * near);
     EXPECT_LT(worst_radial, 0.05);
