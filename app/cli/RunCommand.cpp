@@ -15,6 +15,7 @@
 #include <atomic>
 #include <csignal>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 
 namespace mcdda::cli {
@@ -41,32 +42,64 @@ void print_timings(const RunTimings& t, int steps) {
                   << " s; step / factorization = " << (t.total / steps) / (t.factorization / t.factorizations) << "\n";
 }
 
-}  // namespace
+/// Ctrl-C and SIGTERM (a batch system's stop) end the run after the current step while this lives.
+class StopOnSignals {
+public:
+    StopOnSignals() {
+        stop_requested = false;
+        interrupt_ = std::signal(SIGINT, request_stop);
+        terminate_ = std::signal(SIGTERM, request_stop);
+    }
+    ~StopOnSignals() {
+        std::signal(SIGINT, interrupt_);
+        std::signal(SIGTERM, terminate_);
+    }
+    StopOnSignals(const StopOnSignals&) = delete;
+    StopOnSignals& operator=(const StopOnSignals&) = delete;
 
-namespace {
+private:
+    void (*interrupt_)(int);
+    void (*terminate_)(int);
+};
+
+/// The run's output folder; nullptr, said on stderr, when it cannot be made or written.
+std::unique_ptr<RunOutput> open_output(const Request& r, const std::string& stem) {
+    try {
+        return std::make_unique<RunOutput>(r.out, stem);
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return nullptr;
+    }
+}
+
+/// summary.json; false, said on stderr, when the folder became unwritable or full during the run.
+bool write_summary(RunOutput& output, const Simulation& simulation, const RunEnd& end,
+                   const FactorOfSafety* factor = nullptr) {
+    try {
+        output.write_summary(&simulation, end.status, end.message, factor);
+        return true;
+    } catch (const std::exception& e) {
+        std::cerr << "error: cannot write the run's summary: " << e.what() << "\n";
+        return false;
+    }
+}
 
 /// `mcdda run` of a strength reduction analysis: the trials one line each, then the factor.
-int run_strength_reduction(const Request& r, const Preprocessed& p, const std::string& stem) {
+int run_strength_reduction(const Request& r, const Preprocessed& p, const std::string& stem,
+                           const std::function<void()>& note_kept_results) {
     std::unique_ptr<StrengthReductionSearch> search;
     try {
         search = std::make_unique<StrengthReductionSearch>(p);
     } catch (const std::exception& e) {
         std::cerr << r.model << ": error: " << e.what() << "\n";
+        note_kept_results();
         return exit_model_error;
     }
-    std::unique_ptr<RunOutput> output;
-    try {
-        output = std::make_unique<RunOutput>(r.out, stem);
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return exit_output_error;
-    }
+    const std::unique_ptr<RunOutput> output = open_output(r, stem);
+    if (!output) return exit_output_error;
     if (!r.quiet)
         std::cout << "running " << r.model << ": " << p.statistics.elements << " elements, " << p.statistics.blocks
                   << " blocks, strength reduction -> " << r.out << std::endl;
-    stop_requested = false;
-    auto previous_handler = std::signal(SIGINT, request_stop);
-    auto previous_term_handler = std::signal(SIGTERM, request_stop);
     StrengthReductionSearch::Callbacks callbacks;
     callbacks.should_stop = [] { return stop_requested.load(); };
     callbacks.on_trial = [&](const StrengthTrial& t) {
@@ -79,21 +112,13 @@ int run_strength_reduction(const Request& r, const Preprocessed& p, const std::s
     };
     RunEnd end;
     try {
+        const StopOnSignals stop;
         end = search->run(output.get(), callbacks);
-    } catch (const std::exception& e) {
-        std::signal(SIGINT, previous_handler);
-        std::signal(SIGTERM, previous_term_handler);
+    } catch (const std::exception& e) {  // writing results failed
         std::cerr << "error: " << e.what() << "\n";
         return exit_output_error;
     }
-    std::signal(SIGINT, previous_handler);
-    std::signal(SIGTERM, previous_term_handler);
-    try {
-        output->write_summary(&search->simulation(), end.status, end.message, &search->factor());
-    } catch (const std::exception& e) {
-        std::cerr << "error: cannot write the run's summary: " << e.what() << "\n";
-        return exit_output_error;
-    }
+    if (!write_summary(*output, search->simulation(), end, &search->factor())) return exit_output_error;
     if (end.status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(end.status) << ": " << end.message << "\n";
     if (!r.quiet) {
         const FactorOfSafety& f = search->factor();
@@ -125,7 +150,7 @@ int run_run(const Request& r) {
 
     std::string stem = std::filesystem::path(r.model).stem().string();
     if (stem.empty()) stem = "model";
-    if (is_strength_reduction(p.model)) return run_strength_reduction(r, p, stem);
+    if (is_strength_reduction(p.model)) return run_strength_reduction(r, p, stem, note_kept_results);
     // Set up before the output folder is touched: a run refused here leaves earlier results in
     // the folder as they were.
     std::unique_ptr<Simulation> simulation;
@@ -136,48 +161,30 @@ int run_run(const Request& r) {
         note_kept_results();
         return exit_model_error;
     }
-    std::unique_ptr<RunOutput> output;
-    try {
-        output = std::make_unique<RunOutput>(r.out, stem);
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return exit_output_error;
-    }
+    const std::unique_ptr<RunOutput> output = open_output(r, stem);
+    if (!output) return exit_output_error;
     if (!r.quiet)
         std::cout << "running " << r.model << ": " << p.statistics.elements << " elements, " << p.statistics.blocks
                   << " blocks, " << simulation->planned_steps() << " steps"
                   << (p.model.stages.empty() ? std::string() : " in " + std::to_string(p.model.stages.size()) + " stages")
                   << " -> " << r.out << "\n";
 
-    stop_requested = false;
-    // Ctrl-C and SIGTERM (a batch system's stop) both end the run after the current step.
-    auto previous_handler = std::signal(SIGINT, request_stop);
-    auto previous_term_handler = std::signal(SIGTERM, request_stop);
     Progress progress(simulation->planned_steps(), !r.quiet);
     simulation->set_iteration_observer([&progress](const IterationInfo& info) { progress.iteration(info); });
     RunEnd end;
     try {
+        const StopOnSignals stop;
         end = run_steps(*simulation, output.get(), [] { return stop_requested.load(); },
                         [&](const StepReport& report) { progress.update(report); });
     } catch (const std::exception& e) {  // writing results failed
         progress.finish();
-        std::signal(SIGINT, previous_handler);
-        std::signal(SIGTERM, previous_term_handler);
         std::cerr << "error: " << e.what() << "\n";
         return exit_output_error;
     }
-    const RunStatus status = end.status;
-    const std::string& message = end.message;
     progress.finish();
-    std::signal(SIGINT, previous_handler);
-    std::signal(SIGTERM, previous_term_handler);
-    try {
-        output->write_summary(simulation.get(), status, message);
-    } catch (const std::exception& e) {  // the folder became unwritable or full during the run
-        std::cerr << "error: cannot write the run's summary: " << e.what() << "\n";
-        return exit_output_error;
-    }
-    if (status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(status) << ": " << message << "\n";
+    if (!write_summary(*output, *simulation, end)) return exit_output_error;
+    const RunStatus status = end.status;
+    if (status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(status) << ": " << end.message << "\n";
     if (status != RunStatus::Completed && status != RunStatus::Collapsed && !output->kept_results().empty())
         std::cerr << "the earlier results are kept in " << output->kept_results() << "\n";
     if (!r.quiet)

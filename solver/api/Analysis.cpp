@@ -43,6 +43,25 @@ double largest_displacement(const SimulationState& s)
     return largest;
 }
 
+HistoryRow history_row(const StepReport& report, const SimulationState& s)
+{
+    HistoryRow row;
+    row.step = report.step;
+    row.stage = report.stage + 1;
+    row.time = report.time;
+    row.unbalanced_ratio = report.unbalanced_ratio;
+    row.max_displacement = largest_displacement(s);
+    row.yielding = report.yielding;
+    row.iterations = report.plastic_iterations;
+    return row;
+}
+
+StepProgress progress_of(const HistoryRow& row, const Simulation& simulation)
+{
+    return {row.step, simulation.planned_steps(), row.stage, row.time, row.unbalanced_ratio, row.max_displacement,
+            row.yielding};
+}
+
 StepFields fields_of(const Simulation& simulation)
 {
     const SimulationState& s = simulation.state();
@@ -196,22 +215,10 @@ RunResult Analysis::run(const RunOptions& options)
     const int keep_every = options.keep_every != 0 ? options.keep_every : std::max(1, p.model.analysis.output_every);
     bool stopped_by_callback = false;
     auto on_step = [&](const StepReport& report) {
-        const SimulationState& s = simulation.state();
-        HistoryRow row;
-        row.step = report.step;
-        row.stage = report.stage + 1;
-        row.time = report.time;
-        row.unbalanced_ratio = report.unbalanced_ratio;
-        row.max_displacement = largest_displacement(s);
-        row.yielding = report.yielding;
-        row.iterations = report.plastic_iterations;
-        result.history.push_back(row);
+        result.history.push_back(history_row(report, simulation.state()));
         if (keep_every > 0 && report.step % keep_every == 0) result.saved.push_back(fields_of(simulation));
-        if (options.on_step) {
-            StepProgress progress{report.step, simulation.planned_steps(), row.stage, report.time,
-                                  report.unbalanced_ratio, row.max_displacement, report.yielding};
-            if (!options.on_step(progress)) stopped_by_callback = true;
-        }
+        if (options.on_step && !options.on_step(progress_of(result.history.back(), simulation)))
+            stopped_by_callback = true;
     };
     const RunEnd end = run_steps(simulation, output.get(),
                                  [&] { return stopped_by_callback || impl_->cancel.load(); }, on_step);
@@ -249,20 +256,9 @@ RunResult Analysis::run_strength_reduction(const RunOptions& options)
     StrengthReductionSearch::Callbacks callbacks;
     callbacks.should_stop = [&] { return stopped_by_callback || impl_->cancel.load(); };
     callbacks.on_step = [&](const StepReport& report) {  // the construction stages
-        HistoryRow row;
-        row.step = report.step;
-        row.stage = report.stage + 1;
-        row.time = report.time;
-        row.unbalanced_ratio = report.unbalanced_ratio;
-        row.max_displacement = largest_displacement(search->simulation().state());
-        row.yielding = report.yielding;
-        row.iterations = report.plastic_iterations;
-        result.history.push_back(row);
-        if (options.on_step) {
-            StepProgress progress{report.step, search->simulation().planned_steps(), row.stage, report.time,
-                                  report.unbalanced_ratio, row.max_displacement, report.yielding};
-            if (!options.on_step(progress)) stopped_by_callback = true;
-        }
+        result.history.push_back(history_row(report, search->simulation().state()));
+        if (options.on_step && !options.on_step(progress_of(result.history.back(), search->simulation())))
+            stopped_by_callback = true;
     };
     const RunEnd end = search->run(output.get(), callbacks);
     const FactorOfSafety& f = search->factor();

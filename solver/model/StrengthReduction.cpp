@@ -5,24 +5,29 @@
 
 namespace mcdda {
 
+namespace {
+
+/// c/F, atan(tan φ / F) and σt/F, the reduction block and joint materials share (unless the
+/// material keeps its strength).
+template <class Strength>
+Strength divided(Strength s, double factor) {
+    if (!s.reduce) return s;
+    s.cohesion /= factor;
+    s.friction_angle = std::atan(std::tan(s.friction_angle) / factor);
+    s.tensile_strength /= factor;
+    return s;
+}
+
+}  // namespace
+
 Material reduced_strength(const Material& m, double factor) {
     if (!m.reduce) return m;
-    Material r = m;
-    r.cohesion = m.cohesion / factor;
-    r.friction_angle = std::atan(std::tan(m.friction_angle) / factor);
-    r.tensile_strength = m.tensile_strength / factor;
-    r.dilation_angle = std::min(m.dilation_angle, r.friction_angle);
+    Material r = divided(m, factor);
+    r.dilation_angle = std::min(m.dilation_angle, r.friction_angle);  // ψ ≤ reduced φ
     return r;
 }
 
-JointMaterial reduced_strength(const JointMaterial& j, double factor) {
-    if (!j.reduce) return j;
-    JointMaterial r = j;
-    r.cohesion = j.cohesion / factor;
-    r.friction_angle = std::atan(std::tan(j.friction_angle) / factor);
-    r.tensile_strength = j.tensile_strength / factor;
-    return r;
-}
+JointMaterial reduced_strength(const JointMaterial& j, double factor) { return divided(j, factor); }
 
 void reduce_strength(Model& model, double factor) {
     for (Material& m : model.materials) m = reduced_strength(m, factor);

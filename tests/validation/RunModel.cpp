@@ -1,6 +1,7 @@
 #include "RunModel.hpp"
 
 #include "io/ModelReader.hpp"
+#include "run/StrengthReduction.hpp"
 
 #include <gtest/gtest.h>
 
@@ -93,6 +94,17 @@ Point2 centroid(const Simulation& s, int e) {
     const auto& t = s.mesh().triangles[e];
     const auto& n = s.state().nodes;
     return {(n[t[0]].x + n[t[1]].x + n[t[2]].x) / 3.0, (n[t[0]].y + n[t[1]].y + n[t[2]].y) / 3.0};
+}
+
+FactorOfSafety strength_reduction_of(const std::string& file, const std::vector<std::string>& overrides) {
+    const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/" + file, overrides);
+    EXPECT_TRUE(p.ok) << file << " rejected";
+    if (!p.ok) return {};
+    StrengthReductionSearch search(p);
+    const RunEnd end = search.run(nullptr, {});
+    EXPECT_EQ(end.status, RunStatus::Completed) << file << ": " << end.message;
+    EXPECT_TRUE(search.factor().found) << file;
+    return search.factor();
 }
 
 }  // namespace mcdda::test

@@ -2,6 +2,7 @@
 // Running example models through the solver for validation tests.
 
 #include "Preprocess.hpp"
+#include "run/FactorOfSafety.hpp"
 #include "run/Simulation.hpp"
 
 #include <memory>
@@ -42,6 +43,10 @@ struct CollapseRun {
 
 /// Runs examples/<file> with overrides step by step until PlasticCollapse or its last step.
 CollapseRun run_to_collapse(const std::string& file, const std::vector<std::string>& overrides = {});
+
+/// The strength reduction search of examples/<file> with overrides: its factor of safety. Fails
+/// the calling test when the model is rejected, the search does not complete or finds no factor.
+FactorOfSafety strength_reduction_of(const std::string& file, const std::vector<std::string>& overrides = {});
 
 /// Centroid of element `e` in the current configuration.
 Point2 centroid(const Simulation& s, int e);

@@ -15,7 +15,6 @@
 
 #include "Preprocess.hpp"
 #include "parallel/ParallelFor.hpp"
-#include "run/StrengthReduction.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,18 +25,6 @@
 using namespace mcdda;
 
 namespace {
-
-FactorOfSafety factor_of(const std::string& file, const std::vector<std::string>& overrides) {
-    const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/" + file, overrides);
-    EXPECT_TRUE(p.ok) << file << " rejected";
-    if (!p.ok) return {};
-    StrengthReductionSearch s(p);
-    const RunEnd end = s.run(nullptr, {});
-    EXPECT_EQ(end.status, RunStatus::Completed) << end.message;
-    const FactorOfSafety f = s.factor();
-    EXPECT_TRUE(f.found) << file;
-    return f;
-}
 
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
     a.insert(a.end(), b.begin(), b.end());
@@ -50,7 +37,7 @@ const std::vector<std::string> non_associated = {"/materials/0/dilation_angle=0"
 /// The factor moves by at most 1 % when any numerical setting changes.
 void expect_independent_of_settings(const std::string& file, const std::vector<std::string>& flow) {
     set_thread_count(2);
-    const double reference = factor_of(file, flow).value;
+    const double reference = test::strength_reduction_of(file, flow).value;
     ASSERT_GT(reference, 0.0);
     const std::vector<std::pair<std::string, std::vector<std::string>>> variants = {
         {"gravity ramped over 10 steps",
@@ -61,12 +48,12 @@ void expect_independent_of_settings(const std::string& file, const std::vector<s
         {"equilibrium tolerance / 10", {"/analysis/plastic_tolerance=1e-5"}},
     };
     for (const auto& [name, more] : variants) {
-        const double f = factor_of(file, with(flow, more)).value;
+        const double f = test::strength_reduction_of(file, with(flow, more)).value;
         EXPECT_NEAR(f, reference, 0.01 * reference) << name;
         std::printf("%s %s: %.4f (one step, defaults: %.4f)\n", file.c_str(), name.c_str(), f, reference);
     }
     set_thread_count(1);
-    const double one_thread = factor_of(file, flow).value;
+    const double one_thread = test::strength_reduction_of(file, flow).value;
     set_thread_count(2);
     EXPECT_NEAR(one_thread, reference, 0.01 * reference) << "one thread";
 }
@@ -75,11 +62,11 @@ void expect_independent_of_settings(const std::string& file, const std::vector<s
 
 TEST(SlopeStability, HomogeneousSlopeAgreesWithBishop) {
     const double bishop = 1.534;
-    const FactorOfSafety f = factor_of("homogeneous-slope.json", {});
+    const FactorOfSafety f = test::strength_reduction_of("homogeneous-slope.json", {});
     EXPECT_NEAR(f.value, bishop, 0.03 * bishop);
     // Non-associated flow stands less, but not less than Davis's reduced strength would
     // (about 6 % at φ = 20°, allowing 2 % more for the mesh).
-    const FactorOfSafety psi0 = factor_of("homogeneous-slope.json", non_associated);
+    const FactorOfSafety psi0 = test::strength_reduction_of("homogeneous-slope.json", non_associated);
     EXPECT_LE(psi0.value, f.value * (1 + 0.005));
     EXPECT_GE(psi0.value, f.value * (0.940 - 0.02));
     std::printf("homogeneous slope: psi = phi %.4f, psi = 0 %.4f, Bishop %.3f\n", f.value, psi0.value, bishop);
@@ -90,7 +77,7 @@ TEST(SlopeStability, GriffithsLaneSlopeAgreesWithBishopAndMorgenstern) {
     // one step yields much of the foundation, and the equilibrium iterations stall there:
     // docs/plasticity.md, "Open problem").
     const double charts = 1.38;
-    const FactorOfSafety f = factor_of("slope-griffiths-lane.json", {});
+    const FactorOfSafety f = test::strength_reduction_of("slope-griffiths-lane.json", {});
     EXPECT_NEAR(f.value, charts, 0.03 * charts);
     std::printf("Griffiths-Lane slope: psi = phi %.4f, charts %.3f\n", f.value, charts);
 }
@@ -111,7 +98,7 @@ TEST(SlopeStability, MeshConvergenceAssociated) {
     // Three meshes, element count ×4 each (element size halved): the two finer agree within 1 %.
     std::vector<double> f;
     for (const char* size : {"1.0", "0.5", "0.25"}) {
-        f.push_back(factor_of("homogeneous-slope.json", with(associated, {std::string("/mesh/size=") + size})).value);
+        f.push_back(test::strength_reduction_of("homogeneous-slope.json", with(associated, {std::string("/mesh/size=") + size})).value);
         std::printf("mesh size %s: psi = phi %.4f\n", size, f.back());
     }
     EXPECT_NEAR(f[2], f[1], 0.01 * f[1]);

@@ -10,7 +10,6 @@
 
 #include "Preprocess.hpp"
 #include "model/StrengthReduction.hpp"
-#include "run/StrengthReduction.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,16 +22,6 @@ using namespace mcdda;
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-FactorOfSafety search(const std::string& file, std::vector<std::string> overrides) {
-    const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/" + file, overrides);
-    EXPECT_TRUE(p.ok) << file << " rejected";
-    if (!p.ok) return {};
-    StrengthReductionSearch s(p);
-    const RunEnd end = s.run(nullptr, {});
-    EXPECT_EQ(end.status, RunStatus::Completed) << end.message;
-    return s.factor();
-}
 
 /// The Prandtl footing as a strength reduction analysis under a held 400 kPa.
 std::vector<std::string> prandtl_held(std::vector<std::string> more = {}) {
@@ -47,7 +36,7 @@ const double prandtl_factor = (2.0 + pi) * 100e3 / 400e3;
 }  // namespace
 
 TEST(StrengthReduction, PrandtlFootingUnderAHeldLoad) {
-    const FactorOfSafety f = search("prandtl-flexible-footing.json", prandtl_held());
+    const FactorOfSafety f = test::strength_reduction_of("prandtl-flexible-footing.json", prandtl_held());
     ASSERT_TRUE(f.found);
     // The bracket is within the default tolerance (0.5 %) and the factor within 1 % of Prandtl's.
     EXPECT_LE(f.not_converged - f.converged, 0.005 * f.converged * (1 + 1e-9));
@@ -60,7 +49,7 @@ TEST(StrengthReduction, PrandtlFootingUnderAHeldLoad) {
 }
 
 TEST(StrengthReduction, PrandtlFactorDoesNotDependOnTheSettings) {
-    const double reference = search("prandtl-flexible-footing.json", prandtl_held()).value;
+    const double reference = test::strength_reduction_of("prandtl-flexible-footing.json", prandtl_held()).value;
     ASSERT_GT(reference, 0.0);
     const std::vector<std::pair<std::string, std::vector<std::string>>> variants = {
         {"load in 10 steps", {"/analysis/steps=10", "/load_tables/0/points=[[0,0],[10,1]]"}},
@@ -69,7 +58,7 @@ TEST(StrengthReduction, PrandtlFactorDoesNotDependOnTheSettings) {
         {"equilibrium tolerance / 10", {"/analysis/plastic_tolerance=1e-5"}},
     };
     for (const auto& [name, more] : variants) {
-        const FactorOfSafety f = search("prandtl-flexible-footing.json", prandtl_held(more));
+        const FactorOfSafety f = test::strength_reduction_of("prandtl-flexible-footing.json", prandtl_held(more));
         EXPECT_TRUE(f.found) << name;
         EXPECT_NEAR(f.value, reference, 0.01 * reference) << name;
     }
@@ -96,12 +85,12 @@ std::vector<std::string> wedge_search(std::vector<std::string> more = {}) {
 
 TEST(StrengthReduction, PlanarWedgeSlidesAtTheLimitEquilibriumFactor) {
     // Without cohesion F = tan 20° / tan 30° = 0.630: a factor below 1 is found, not an error.
-    const FactorOfSafety dry = search("slope-wedge.json", wedge_search());
+    const FactorOfSafety dry = test::strength_reduction_of("slope-wedge.json", wedge_search());
     ASSERT_TRUE(dry.found);
     EXPECT_NEAR(dry.value, wedge_factor(0, 20), 0.01 * wedge_factor(0, 20));
     EXPECT_LT(dry.value, 1.0);
     // With a joint cohesion of 10 kPa: (240 kN + 604.5 kN) / 958.8 kN = 0.881.
-    const FactorOfSafety cohesive = search("slope-wedge.json", wedge_search({"/joint_materials/0/cohesion=10000"}));
+    const FactorOfSafety cohesive = test::strength_reduction_of("slope-wedge.json", wedge_search({"/joint_materials/0/cohesion=10000"}));
     ASSERT_TRUE(cohesive.found);
     EXPECT_NEAR(cohesive.value, wedge_factor(10e3, 20), 0.01 * wedge_factor(10e3, 20));
 }
@@ -116,7 +105,7 @@ TEST(StrengthReduction, WedgeFactorDoesNotDependOnTheSettings) {
         {"finer mesh", {"/mesh/size=0.75"}},
     };
     for (const auto& [name, more] : variants) {
-        const FactorOfSafety f = search("slope-wedge.json", wedge_search(more));
+        const FactorOfSafety f = test::strength_reduction_of("slope-wedge.json", wedge_search(more));
         EXPECT_TRUE(f.found) << name;
         EXPECT_NEAR(f.value, expected, 0.01 * expected) << name;
     }
@@ -126,7 +115,7 @@ TEST(StrengthReduction, SafetyStageOfAStagedTunnelReportsItsFactor) {
     // examples/jointed-tunnel-safety.json: the jointed tunnel built in four stages, then a safety
     // stage. The finished tunnel stands with its strengths (F = 1 stands), and dividing them by
     // 5 is too much for the jointed granite around a 6 m opening.
-    const FactorOfSafety f = search("jointed-tunnel-safety.json", {});
+    const FactorOfSafety f = test::strength_reduction_of("jointed-tunnel-safety.json", {});
     ASSERT_TRUE(f.found);
     EXPECT_GT(f.value, 1.0);
     EXPECT_LT(f.value, 5.0);
