@@ -15,6 +15,7 @@
 #include "session/PreprocessScheduler.hpp"
 #include "session/RunMessages.hpp"
 #include "session/RunSession.hpp"
+#include "run/StrengthReduction.hpp"
 #include "tools/EditingTools.hpp"
 #include "widgets/ModelTree.hpp"
 #include "widgets/ModelView.hpp"
@@ -27,6 +28,7 @@
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -409,6 +411,7 @@ void MainWindow::showScene(std::shared_ptr<const Preprocessed> p, const QString&
                         : tr("The run was stopped: the model was edited."));
     }
     session_->clearResults();
+    status_bar_->setFactorOfSafety(QString());
     shown_step_.clear();
     looking_back_ = false;
     steps_->clear();
@@ -469,6 +472,7 @@ bool MainWindow::isRunning() const { return session_->isRunning(); }
 void MainWindow::setRunOutputFolder(const QString& folder) { session_->setOutputFolder(folder); }
 QString MainWindow::runOutputFolder() const { return session_->runFolder(); }
 void MainWindow::setRunThrottle(int progress_ms, int snapshot_ms) { session_->setThrottle(progress_ms, snapshot_ms); }
+QString MainWindow::factorOfSafetyText() const { return status_bar_->factorOfSafety(); }
 QString MainWindow::resultField() const { return result_bar_->field(); }
 void MainWindow::setResultField(const QString& field) { result_bar_->setField(field); }
 double MainWindow::deformFactor() const { return result_bar_->deformFactor(); }
@@ -499,7 +503,13 @@ void MainWindow::connectRunSession()
         shown_step_.clear();
         looking_back_ = false;
         steps_->clear();
-        status_bar_->showProgress(std::max(1, planned));
+        trials_ = 0;
+        factor_found_ = false;
+        status_bar_->setFactorOfSafety(QString());
+        plot_->setTitle(QString());
+        // A strength reduction's trials are as many as its search needs: a busy bar.
+        const bool search = is_strength_reduction(view_->scene()->model);
+        status_bar_->showProgress(search ? 0 : std::max(1, planned));
         plot_->unbalancedPlot()->setLimit(view_->scene()->model.analysis.equilibrium_ratio);
         log(tr("Run started: %n step(s); results in %1", "", planned).arg(folder));
         updateRunActions();
@@ -513,6 +523,18 @@ void MainWindow::connectRunSession()
         // Between steps the progress bar moves; inside a long step this line does.
         statusBar()->showMessage(iteration_line(info), 5000);
         emit runIterating(info);
+    });
+    connect(session_, &RunSession::trialStarted, this, [this](double factor) {
+        statusBar()->showMessage(trial_start_line(++trials_, factor));
+    });
+    connect(session_, &RunSession::trialFinished, this, [this](const StrengthTrial& trial) {
+        log(trial_line(trial));
+        plot_->load(QDir(session_->runFolder()).absoluteFilePath(QStringLiteral("history.csv")));  // the SSR graph grows
+    });
+    connect(session_, &RunSession::factorOfSafety, this, [this](const FactorOfSafety& factor) {
+        factor_found_ = factor.found;
+        status_bar_->setFactorOfSafety(factor_text(factor), factor_line(factor));
+        log(factor_line(factor));
     });
     connect(session_, &RunSession::snapshot, this, [this] {
         if (looking_back_) return;
@@ -549,11 +571,24 @@ void MainWindow::onRunFinished(RunStatus status, const QString& message)
     looking_back_ = false;  // the picture goes to the last saved step below
     status_bar_->hideProgress();
     const auto last = session_->lastSnapshot();
-    const QString text = end_line(status, last ? last->step : 0, message);
+    const QString text = status == RunStatus::Completed && factor_found_
+                             ? tr("Strength reduction completed: %1.").arg(status_bar_->factorOfSafety())
+                             : end_line(status, last ? last->step : 0, message);
     log(text);
     log(tr("Results in %1").arg(session_->resultsFolder()));
     plot_->load(resultsHistoryPath());
+    if (!status_bar_->factorOfSafety().isEmpty()) plot_->setTitle(status_bar_->factorOfSafety());
     if (steps_->load(resultsPvdPath()) > 0) showStep(steps_->entries().back().file);  // with its contacts
+    // A strength reduction that found its factor ends on the mechanism (its last saved step):
+    // the plastic strain increment where material yields, the displacement increment where
+    // only blocks slide.
+    if (factor_found_) {
+        const Model& m = view_->scene()->model;
+        const bool yields = m.analysis.plasticity && std::any_of(m.materials.begin(), m.materials.end(),
+                                                                 [](const Material& x) { return x.plastic; });
+        result_bar_->setField(yields ? QStringLiteral("plastic_strain_increment")
+                                     : QStringLiteral("displacement_increment"));
+    }
     statusBar()->showMessage(text, 10000);
     updateRunActions();
     // (Not in equilibrium is said in the status bar and the log: the results are complete.)

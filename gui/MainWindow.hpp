@@ -123,6 +123,9 @@ public:
     /// The saved step the picture shows (empty: the model, or the run's latest state).
     QString shownStep() const { return shown_step_; }
     HistoryPlot* historyPlot() const { return plot_; }
+    /// The factor of safety of the last strength reduction run as the status bar shows it
+    /// ("Factor of safety 1.547"); empty after any other run or before one.
+    QString factorOfSafetyText() const;
     /// The Query dock: the field along a line drawn with Edit ▸ Query Line.
     QueryPlot* queryPlot() const { return query_; }
     /// The run and its files, and the background pre-processing (the window's logic).
@@ -236,6 +239,8 @@ private:
     ResultToolBar* result_bar_ = nullptr;
     QString shown_step_;         ///< saved step chosen in the slider; empty = the last snapshot
     bool looking_back_ = false;  ///< during a run: an earlier saved step is shown, not the live state
+    int trials_ = 0;             ///< strength reduction trials started in the current run
+    bool factor_found_ = false;  ///< the current or last run found a factor of safety
     QString path_;
     QString last_folder_;
     bool syncing_ = false;  ///< the document is being set from an already pre-processed model

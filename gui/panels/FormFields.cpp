@@ -3,6 +3,7 @@
 #include "panels/DeclaredFields.hpp"
 #include "session/DisplayUnits.hpp"
 
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -176,6 +177,39 @@ void display_stress(QDoubleSpinBox* box, double pascal)
 double stress_value(const QDoubleSpinBox* box, double original, double sign)
 {
     return si(box, original, sign * form_unit(Quantity::Stress).factor);
+}
+
+namespace {
+/// The chooser's item of a strength reduction (the others carry AnalysisSettings::Kind).
+constexpr int strength_reduction_item = 100;
+}  // namespace
+
+QComboBox* analysis_type_box(const QString& name, QWidget* parent)
+{
+    auto* box = new QComboBox(parent);
+    box->setObjectName(name);
+    box->addItem(QCoreApplication::translate("mcdda::gui::form", "Static"), static_cast<int>(AnalysisSettings::Kind::Static));
+    box->addItem(QCoreApplication::translate("mcdda::gui::form", "Dynamic"), static_cast<int>(AnalysisSettings::Kind::Dynamic));
+    box->addItem(QCoreApplication::translate("mcdda::gui::form", "Strength reduction"), strength_reduction_item);
+    explain(box, QCoreApplication::translate(
+                     "mcdda::gui::form",
+                     "Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: "
+                     "velocities carry over, for falls and sliding. Strength reduction: the factor of safety, the "
+                     "largest factor c and tan φ can be divided by while the model still stands (of the whole model, "
+                     "or as the last stage: a safety stage starting from the stresses of the stages before)"));
+    return box;
+}
+
+void show_analysis_type(QComboBox* box, const AnalysisSettings& a)
+{
+    box->setCurrentIndex(box->findData(a.strength_reduction ? strength_reduction_item : static_cast<int>(a.kind)));
+}
+
+void read_analysis_type(const QComboBox* box, AnalysisSettings& a)
+{
+    const int item = box->currentData().toInt();
+    a.strength_reduction = item == strength_reduction_item;
+    a.kind = a.strength_reduction ? AnalysisSettings::Kind::Static : static_cast<AnalysisSettings::Kind>(item);
 }
 
 }  // namespace mcdda::gui::form

@@ -4,11 +4,13 @@
 /// number fields with their unit, exact round trips of untouched values, status lines.
 
 #include "model/Defaults.hpp"
+#include "model/Model.hpp"
 
 #include <QString>
 
 #include <string>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QWidget;
@@ -56,5 +58,11 @@ QString cell_text(double value);
 /// Reads a table cell: the user's locale first (without group separators, so "1.500" is never
 /// 1500 in a German locale), then the C locale. False when the text is not a finite number.
 bool cell_value(const QString& text, double* value);
+
+/// The analysis type chooser of the model's and a stage's settings: static, dynamic, strength
+/// reduction (static with `strength_reduction` set).
+QComboBox* analysis_type_box(const QString& name, QWidget* parent);
+void show_analysis_type(QComboBox* box, const AnalysisSettings& a);
+void read_analysis_type(const QComboBox* box, AnalysisSettings& a);
 
 }  // namespace mcdda::gui::form

@@ -62,7 +62,7 @@ bool same(const JointMaterial& a, const JointMaterial& b)
 
 bool same(const AnalysisSettings& a, const AnalysisSettings& b)
 {
-    return a.kind == b.kind && a.steps == b.steps && a.time_step == b.time_step &&
+    return a.kind == b.kind && a.strength_reduction == b.strength_reduction && a.steps == b.steps && a.time_step == b.time_step &&
            a.max_displacement_ratio == b.max_displacement_ratio && a.penalty == b.penalty &&
            a.output_every == b.output_every && a.plasticity == b.plasticity;
 }
@@ -198,12 +198,9 @@ QWidget* PropertyEditor::createAnalysisForm()
 {
     auto* page = new QWidget(this);
     auto* form = new QFormLayout(page);
-    an_kind_ = new QComboBox(page);
-    an_kind_->setObjectName(QStringLiteral("analysisKind"));
-    an_kind_->addItem(tr("Static"), static_cast<int>(AnalysisSettings::Kind::Static));
-    an_kind_->addItem(tr("Dynamic"), static_cast<int>(AnalysisSettings::Kind::Dynamic));
+    an_kind_ = form::analysis_type_box(QStringLiteral("analysisKind"), page);
     form->addRow(tr("Type"), an_kind_);
-    explain(an_kind_, tr("Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding"));
+    connect(an_kind_, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyAnalysis(); });
     an_steps_ = new QSpinBox(page);
     an_steps_->setObjectName(QStringLiteral("analysisSteps"));
     an_steps_->setRange(-1, 100000000);
@@ -361,7 +358,7 @@ void PropertyEditor::loadAnalysis()
 {
     const AnalysisSettings& a = document_->model().analysis;
     loading_ = true;
-    an_kind_->setCurrentIndex(an_kind_->findData(static_cast<int>(a.kind)));
+    form::show_analysis_type(an_kind_, a);
     an_steps_->setValue(a.steps);
     an_fields_->show(a);
     an_output_->setValue(a.output_every);
@@ -551,7 +548,7 @@ bool PropertyEditor::applyAnalysis()
     const Model& m = document_->model();
     const AnalysisSettings& old = m.analysis;
     AnalysisSettings a = old;
-    a.kind = static_cast<AnalysisSettings::Kind>(an_kind_->currentData().toInt());
+    form::read_analysis_type(an_kind_, a);
     a.steps = an_steps_->value();
     an_fields_->read(old, a);
     a.output_every = an_output_->value();

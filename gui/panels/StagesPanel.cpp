@@ -2,8 +2,10 @@
 
 #include "document/ModelDocument.hpp"
 #include "panels/DeclaredFields.hpp"
+#include "panels/FormFields.hpp"
 #include "widgets/ModelView.hpp"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -126,6 +128,8 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     form->addRow(tr("Removes"), remove_items_);
     form->addRow(tr("Steps"), steps_);
     form->addRow(tr("Release"), release_);
+    type_ = form::analysis_type_box(QStringLiteral("stageAnalysisType"), settings);
+    form->addRow(tr("Analysis"), type_);
     // The stage's own analysis settings, declared once with the model's (model/ModelFields.hpp).
     analysis_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(analysis_fields(), QStringLiteral("stage_"),
                                                                          form, settings);
@@ -178,7 +182,7 @@ void StagesPanel::showStage()
     const int stage = currentStage();
     const bool editing = stage >= 0 && stage < static_cast<int>(m.stages.size());
     for (QWidget* w : std::initializer_list<QWidget*>{name_, excavate_, activate_, install_, remove_items_, steps_,
-                                                       release_, apply_, remove_})
+                                                       release_, type_, apply_, remove_})
         w->setEnabled(editing);
     for (QDoubleSpinBox* box : analysis_->boxes()) box->setEnabled(editing);
     up_->setEnabled(editing && stage > 0);
@@ -212,6 +216,7 @@ void StagesPanel::showStage()
     steps_->setValue(st ? st->analysis.steps : 1);
     release_->setValue(st ? st->release_steps : 0);
     analysis_->show(st ? st->analysis : m.analysis);
+    form::show_analysis_type(type_, st ? st->analysis : m.analysis);
     // The picture: the model as it stands in the stage.
     view::SceneOptions options = view_->sceneOptions();
     options.hidden_regions = stage >= 0 ? regions_absent(m, stage) : std::vector<int>{};
@@ -234,6 +239,7 @@ void StagesPanel::applyStage()
     st.release_steps = release_->value();
     const AnalysisSettings before = st.analysis;
     analysis_->read(before, st.analysis);
+    form::read_analysis_type(type_, st.analysis);
     document_->replaceModel(m, tr("Edit stage \"%1\"").arg(QString::fromStdString(st.name)));
 }
 

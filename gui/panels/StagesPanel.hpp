@@ -16,6 +16,7 @@
 class QLabel;
 class QLineEdit;
 class QListWidget;
+class QComboBox;
 class QSpinBox;
 class QPushButton;
 
@@ -53,6 +54,7 @@ private:
     QListWidget* remove_items_ = nullptr;
     QSpinBox* steps_ = nullptr;
     QSpinBox* release_ = nullptr;
+    QComboBox* type_ = nullptr;  ///< static, dynamic, strength reduction (a safety stage)
     std::unique_ptr<form::DeclaredFields<AnalysisSettings>> analysis_;  ///< the stage's number settings
     QPushButton* apply_ = nullptr;
     QPushButton* remove_ = nullptr;

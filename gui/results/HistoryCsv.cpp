@@ -4,6 +4,8 @@
 #include <QFile>
 #include <QTextStream>
 
+#include <limits>
+
 namespace mcdda::gui {
 
 bool read_history(const QString& path, HistoryTable& table, QString* error)
@@ -27,14 +29,18 @@ bool read_history(const QString& path, HistoryTable& table, QString* error)
             continue;
         }
         if (cells.size() != table.columns.size()) continue;
+        // A cell of words (a strength reduction trial's status) is NaN; a row with no number at
+        // all is not a row.
         std::vector<double> row;
         row.reserve(cells.size());
-        bool ok = true;
+        bool any = false;
         for (const QString& c : cells) {
-            row.push_back(c.toDouble(&ok));
-            if (!ok) break;
+            bool ok = false;
+            const double v = c.toDouble(&ok);
+            row.push_back(ok ? v : std::numeric_limits<double>::quiet_NaN());
+            any = any || ok;
         }
-        if (ok) table.rows.push_back(std::move(row));
+        if (any) table.rows.push_back(std::move(row));
     }
     if (header) {
         if (error != nullptr) *error = QCoreApplication::translate("HistoryCsv", "%1 is empty").arg(path);

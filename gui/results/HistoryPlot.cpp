@@ -10,6 +10,8 @@
 #include <QLabel>
 #include <QLineSeries>
 #include <QPainter>
+#include <QScatterSeries>
+#include <QXYSeries>
 #include <QSignalBlocker>
 #include <QValueAxis>
 #include <QVBoxLayout>
@@ -36,12 +38,23 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
     series_ = new QLineSeries(chart);
     series_->setPointsVisible(true);
     chart->addSeries(series_);
+    // A strength reduction's trials that did not stand: red crosses beside the curve of those
+    // that did (RS2's SSR graph).
+    failed_ = new QScatterSeries(chart);
+    failed_->setObjectName(QStringLiteral("failedTrials"));
+    failed_->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+    failed_->setMarkerSize(9.0);
+    failed_->setColor(QColor(210, 30, 30));
+    failed_->setBorderColor(QColor(210, 30, 30));
+    chart->addSeries(failed_);
     x_axis_ = new QValueAxis(chart);
     y_axis_ = new QValueAxis(chart);
     chart->addAxis(x_axis_, Qt::AlignBottom);
     chart->addAxis(y_axis_, Qt::AlignLeft);
-    series_->attachAxis(x_axis_);
-    series_->attachAxis(y_axis_);
+    for (QXYSeries* s : {static_cast<QXYSeries*>(series_), static_cast<QXYSeries*>(failed_)}) {
+        s->attachAxis(x_axis_);
+        s->attachAxis(y_axis_);
+    }
     view_ = new QChartView(chart, this);
     view_->setRenderHint(QPainter::Antialiasing);
     view_->setMinimumSize(240, 160);
@@ -66,9 +79,12 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
 
 QChart* HistoryPlot::chart() const { return view_->chart(); }
 
+void HistoryPlot::setTitle(const QString& title) { view_->chart()->setTitle(title); }
+
 void HistoryPlot::clear()
 {
     table_ = {};
+    setTitle(QString());
     {
         const QSignalBlocker a(y_box_), b(x_box_);
         y_box_->clear();
@@ -90,7 +106,13 @@ int HistoryPlot::load(const QString& csv_path)
         const QSignalBlocker a(y_box_), b(x_box_);
         y_box_->clear();
         x_box_->clear();
-        x_box_->addItem(tr("time (s)"), QStringLiteral("time"));
+        if (table_.isTrialTable()) {
+            // One row per trial: displacements against the strength reduction factor.
+            x_box_->addItem(tr("strength reduction factor"), QStringLiteral("factor"));
+            y_box_->addItem(tr("largest displacement (m)"), QStringLiteral("max_displacement"));
+        } else {
+            x_box_->addItem(tr("time (s)"), QStringLiteral("time"));
+        }
         for (const QString& c : table_.columns) {
             if (c.startsWith(QLatin1String("load:")))
                 x_box_->addItem(tr("load %1").arg(c.mid(5)), c);
@@ -120,19 +142,31 @@ void HistoryPlot::redraw()
 {
     unbalanced_->show(table_);
     const int xi = table_.column(xColumn()), yi = table_.column(yColumn());
-    QList<QPointF> points;
+    QList<QPointF> points, failed;
+    const bool trials = table_.isTrialTable();
+    const int stands = table_.column(QStringLiteral("stands"));
     if (xi >= 0 && yi >= 0)
-        for (const auto& row : table_.rows) points.append(QPointF(row[xi], row[yi]));
+        for (const auto& row : table_.rows) {
+            const QPointF p(row[xi], row[yi]);
+            if (!std::isfinite(p.x()) || !std::isfinite(p.y())) continue;
+            (trials && row[stands] != 1.0 ? failed : points).append(p);
+        }
+    // Trials run in the search's order, not the factor's.
+    if (trials)
+        std::sort(points.begin(), points.end(), [](const QPointF& a, const QPointF& b) { return a.x() < b.x(); });
     series_->replace(points);
+    failed_->replace(failed);
     if (table_.columns.isEmpty())
         note_->setText(tr("No history: run the model."));
     else if (yi < 0)
         note_->setText(tr("The model has no measurement points."));
+    else if (trials)
+        note_->setText(tr("%n trial(s) stood, %1 did not", "", static_cast<int>(points.size())).arg(failed.size()));
     else
         note_->setText(tr("%n step(s)", "", static_cast<int>(points.size())));
     double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     double hi[2] = {-lo[0], -lo[1]};
-    for (const QPointF& p : points) {
+    for (const QPointF& p : points + failed) {
         lo[0] = std::min(lo[0], p.x()), hi[0] = std::max(hi[0], p.x());
         lo[1] = std::min(lo[1], p.y()), hi[1] = std::max(hi[1], p.y());
     }

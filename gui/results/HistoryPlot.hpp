@@ -2,7 +2,9 @@
 /// \file HistoryPlot.hpp
 /// Plots a run's history.csv with Qt Charts: one measurement-point column (…:ux or …:uy)
 /// against time or against a load column (load:<name>, a load–settlement curve), and under it
-/// the unbalanced-force ratio per step.
+/// the unbalanced-force ratio per step. A strength reduction's history (a row per trial) is
+/// drawn as RS2's SSR graph: the largest or a point's displacement against the factor, the
+/// trials that stood joined by a line, those that did not as red squares.
 
 #include "results/HistoryCsv.hpp"
 
@@ -17,6 +19,7 @@ QT_BEGIN_NAMESPACE
 class QChart;
 class QChartView;
 class QLineSeries;
+class QScatterSeries;
 class QValueAxis;
 QT_END_NAMESPACE
 
@@ -34,8 +37,12 @@ public:
     void clear();
 
     const HistoryTable& table() const { return table_; }
-    /// The plotted curve (one point per history row).
+    /// The plotted curve (one point per history row; of a strength reduction, per trial that stood).
     QLineSeries* series() const { return series_; }
+    /// A strength reduction's trials that did not stand.
+    QScatterSeries* failedTrials() const { return failed_; }
+    /// A line over the chart (the factor of safety); empty: none. Cleared with the plot.
+    void setTitle(const QString& title);
     QChart* chart() const;
     /// Chooses the plotted column (e.g. "crest:uy") and the abscissa ("time" or "load:<name>").
     void setColumns(const QString& y_column, const QString& x_column);
@@ -53,6 +60,7 @@ private:
     UnbalancedPlot* unbalanced_ = nullptr;
     QChartView* view_ = nullptr;
     QLineSeries* series_ = nullptr;
+    QScatterSeries* failed_ = nullptr;
     QValueAxis* x_axis_ = nullptr;
     QValueAxis* y_axis_ = nullptr;
     HistoryTable table_;

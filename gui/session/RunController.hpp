@@ -4,10 +4,12 @@
 /// that owns the Simulation. Between steps it checks a stop token and a pause flag; it publishes
 /// progress (at most about 10 a second, always the latest) and immutable result snapshots (at
 /// most about 4 a second, always the last step) through queued signals, and writes the run's
-/// files with RunOutput so that results stay on disk whatever the ending.
+/// files with RunOutput so that results stay on disk whatever the ending. A strength reduction
+/// analysis runs its search (run/StrengthReduction.hpp) and reports each trial as it ends.
 
 #include "Preprocess.hpp"
 #include "view/ResultSnapshot.hpp"
+#include "run/FactorOfSafety.hpp"
 #include "run/RunOutput.hpp"
 
 #include <QMetaType>
@@ -63,6 +65,12 @@ signals:
     /// Inside a step: its equilibrium iterations so far (throttled like progress), so that a
     /// long step is not silent.
     void iterating(const mcdda::IterationInfo& info);
+    /// A strength reduction analysis: a trial with the strengths divided by `factor` starts,
+    /// and one ended (a snapshot of its state was sent before); at the end, before finished(),
+    /// the factor of safety the search found (or how far it got).
+    void trialStarted(double factor);
+    void trialFinished(const mcdda::StrengthTrial& trial);
+    void factorOfSafety(const mcdda::FactorOfSafety& factor);
     /// The run ended; `message` says why unless it completed. Results up to the last
     /// accepted step are kept (last snapshot sent, files written).
     void finished(mcdda::RunStatus status, const QString& message);
@@ -91,3 +99,5 @@ Q_DECLARE_METATYPE(mcdda::gui::RunProgress)
 Q_DECLARE_METATYPE(std::shared_ptr<const mcdda::ResultSnapshot>)
 Q_DECLARE_METATYPE(mcdda::RunStatus)
 Q_DECLARE_METATYPE(mcdda::IterationInfo)
+Q_DECLARE_METATYPE(mcdda::StrengthTrial)
+Q_DECLARE_METATYPE(mcdda::FactorOfSafety)

@@ -115,6 +115,58 @@ QString iteration_line(const IterationInfo& info)
         .arg(info.tolerance, 0, 'e', 0);
 }
 
+QString trial_start_line(int number, double factor)
+{
+    return QCoreApplication::translate("mcdda::gui::RunMessages", "Strength reduction: trial %1, strengths divided by %2...")
+        .arg(number)
+        .arg(factor, 0, 'f', 4);
+}
+
+QString trial_line(const StrengthTrial& trial)
+{
+    const QString numbers = QCoreApplication::translate("mcdda::gui::RunMessages",
+                                                        "largest displacement %1 m, %n iteration(s), %2 s", "",
+                                                        trial.iterations)
+                                .arg(trial.max_displacement, 0, 'g', 4)
+                                .arg(trial.seconds, 0, 'f', 1);
+    if (trial.stands)
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "Trial %1: F = %2 stands (%3)")
+            .arg(trial.number)
+            .arg(trial.factor, 0, 'f', 4)
+            .arg(numbers);
+    return QCoreApplication::translate("mcdda::gui::RunMessages", "Trial %1: F = %2 does not stand (%3): %4")
+        .arg(trial.number)
+        .arg(trial.factor, 0, 'f', 4)
+        .arg(numbers, QString::fromStdString(trial.message));
+}
+
+QString factor_text(const FactorOfSafety& factor)
+{
+    if (factor.found) return QString::number(factor.value, 'f', 3);
+    if (factor.converged > 0.0 && factor.not_converged == 0.0)
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "above %1").arg(factor.converged, 0, 'f', 3);
+    if (factor.not_converged > 0.0 && factor.converged == 0.0)
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "below %1").arg(factor.not_converged, 0, 'f', 3);
+    if (factor.converged > 0.0)
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "between %1 and %2")
+            .arg(factor.converged, 0, 'f', 3)
+            .arg(factor.not_converged, 0, 'f', 3);
+    return QCoreApplication::translate("mcdda::gui::RunMessages", "not found");
+}
+
+QString factor_line(const FactorOfSafety& factor)
+{
+    if (!factor.found)
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "Factor of safety %1 (%n trial(s)).", "", factor.trials)
+            .arg(factor_text(factor));
+    return QCoreApplication::translate("mcdda::gui::RunMessages",
+                                       "Factor of safety %1: the model stands with its strengths divided by %2, not by "
+                                       "%3 (%n trial(s)).", "", factor.trials)
+        .arg(factor_text(factor))
+        .arg(factor.converged, 0, 'f', 4)
+        .arg(factor.not_converged, 0, 'f', 4);
+}
+
 QString end_line(RunStatus status, int step, const QString& message)
 {
     switch (status) {

@@ -26,6 +26,15 @@ QString first_lines(const QStringList& lines, int count);
 QString progress_line(const RunProgress& p);
 /// The status-bar line inside a long step.
 QString iteration_line(const IterationInfo& info);
+/// The status-bar line while a strength reduction trial runs.
+QString trial_start_line(int number, double factor);
+/// The log line of a strength reduction trial that ended: its factor, whether the model stood
+/// and, when not, why.
+QString trial_line(const StrengthTrial& trial);
+/// The factor of safety a search found, in a few words ("1.55"), or why there is none.
+QString factor_text(const FactorOfSafety& factor);
+/// The log line of a search's result: the factor, its bracket and the number of trials.
+QString factor_line(const FactorOfSafety& factor);
 /// How a run ended, after `step` accepted steps; `message` says why unless it completed.
 QString end_line(RunStatus status, int step, const QString& message);
 

@@ -50,6 +50,15 @@ bool RunSession::start(const Preprocessed& model)
     connect(controller_, &RunController::iterating, this, [this, run](const IterationInfo& info) {
         if (controller_ == run) emit iterating(info);
     }, Qt::QueuedConnection);
+    connect(controller_, &RunController::trialStarted, this, [this, run](double factor) {
+        if (controller_ == run) emit trialStarted(factor);
+    }, Qt::QueuedConnection);
+    connect(controller_, &RunController::trialFinished, this, [this, run](const StrengthTrial& trial) {
+        if (controller_ == run) emit trialFinished(trial);
+    }, Qt::QueuedConnection);
+    connect(controller_, &RunController::factorOfSafety, this, [this, run](const FactorOfSafety& factor) {
+        if (controller_ == run) emit factorOfSafety(factor);
+    }, Qt::QueuedConnection);
     connect(controller_, &RunController::snapshot, this, [this, run](std::shared_ptr<const ResultSnapshot> s) {
         if (controller_ == run) onSnapshot(std::move(s));
     }, Qt::QueuedConnection);

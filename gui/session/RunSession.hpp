@@ -72,6 +72,11 @@ signals:
     void progress(const mcdda::gui::RunProgress& progress);
     void snapshot(std::shared_ptr<const mcdda::ResultSnapshot> snapshot);
     void iterating(const mcdda::IterationInfo& info);
+    /// A strength reduction analysis: each trial's start and end, and the search's result
+    /// (just before finished()).
+    void trialStarted(double factor);
+    void trialFinished(const mcdda::StrengthTrial& trial);
+    void factorOfSafety(const mcdda::FactorOfSafety& factor);
     /// While running, about once a second: the .pvd collection and history.csv have grown
     /// (a row per step, a step per save) and can be read again for a live plot and step list.
     void filesGrew(const QString& pvd_path, const QString& history_path);

@@ -130,6 +130,8 @@ struct Result {
     int step = -1;    ///< when known
     int stage = 0;    ///< 1-based; 0 = unknown
     double time = std::numeric_limits<double>::quiet_NaN();
+    /// A strength reduction's saved trial: the factor its strengths were divided by.
+    double strength_factor = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A number of the file's field data (RunOutput writes step, stage, time); NaN when missing.
@@ -234,6 +236,7 @@ Result load_result(const Preprocessed& model, const std::string& path, const Res
     if (const double step = field_number(reader->GetOutput(), "step"); std::isfinite(step)) r.step = static_cast<int>(step);
     if (const double stage = field_number(reader->GetOutput(), "stage"); std::isfinite(stage)) r.stage = static_cast<int>(stage);
     r.time = field_number(reader->GetOutput(), "time");
+    r.strength_factor = field_number(reader->GetOutput(), "strength_factor");
     if (!options.contacts.empty()) r.contacts = load_contacts(options.contacts);
     return r;
 }
@@ -774,14 +777,22 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     if (title.empty()) {
         title = shown.title;
         char part[96];
-        if (r.step >= 0) {
+        // A strength reduction trial is named by its factor (its step number and time only
+        // order the saved trials).
+        const bool trial = std::isfinite(r.strength_factor);
+        if (trial) {
+            std::snprintf(part, sizeof part, " — %s %.4g",
+                          picture_text(QT_TRANSLATE_NOOP("mcdda::view", "strengths divided by")).c_str(),
+                          r.strength_factor);
+            title += part;
+        } else if (r.step >= 0) {
             std::snprintf(part, sizeof part, " — %s %d", picture_text(QT_TRANSLATE_NOOP("mcdda::view", "step")).c_str(), r.step);
             title += part;
         }
         if (r.stage >= 1 && r.stage <= static_cast<int>(model.model.stages.size()))
             title += ", " + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "stage")) + " \"" +
                      model.model.stages[static_cast<std::size_t>(r.stage - 1)].name + "\"";
-        if (std::isfinite(r.time)) {
+        if (std::isfinite(r.time) && !trial) {
             std::snprintf(part, sizeof part, ", t = %g s", r.time);
             title += part;
         }

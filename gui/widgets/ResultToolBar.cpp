@@ -54,6 +54,10 @@ ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
     field_box_->addItem(tr("Principal stress σ3"), QStringLiteral("stress_3"));
     field_box_->addItem(tr("Plastic state"), QStringLiteral("plastic_state"));
     field_box_->addItem(tr("Plastic strain"), QStringLiteral("plastic_strain"));
+    // The mechanism of a strength reduction (its last saved step): what changed between the
+    // last factor that stood and the one before.
+    field_box_->addItem(tr("Mechanism: plastic strain increment"), QStringLiteral("plastic_strain_increment"));
+    field_box_->addItem(tr("Mechanism: displacement increment"), QStringLiteral("displacement_increment"));
     connect(field_box_, &QComboBox::currentIndexChanged, this, &ResultToolBar::optionsChanged);
     addWidget(field_box_);
 

@@ -1,6 +1,7 @@
 #include "widgets/WindowStatusBar.hpp"
 
 #include <QApplication>
+#include <QFont>
 #include <QLabel>
 #include <QPointF>
 #include <QProgressBar>
@@ -19,6 +20,14 @@ WindowStatusBar::WindowStatusBar(QWidget* parent) : QStatusBar(parent)
     progress_->setMaximumWidth(200);
     progress_->setTextVisible(true);
     progress_->setVisible(false);
+    factor_ = new QLabel(this);
+    factor_->setObjectName(QStringLiteral("factorOfSafety"));
+    QFont font = factor_->font();
+    font.setBold(true);
+    font.setPointSizeF(font.pointSizeF() * 1.3);
+    factor_->setFont(font);
+    factor_->setVisible(false);
+    addPermanentWidget(factor_);
     addPermanentWidget(progress_);
     addPermanentWidget(statistics_);
     addPermanentWidget(cursor_);
@@ -52,6 +61,15 @@ void WindowStatusBar::showProgress(int maximum)
 void WindowStatusBar::setProgress(int value) { progress_->setValue(std::min(value, progress_->maximum())); }
 
 void WindowStatusBar::hideProgress() { progress_->setVisible(false); }
+
+void WindowStatusBar::setFactorOfSafety(const QString& text, const QString& tooltip)
+{
+    factor_->setText(text.isEmpty() ? QString() : tr("Factor of safety %1").arg(text));
+    factor_->setToolTip(tooltip);
+    factor_->setVisible(!text.isEmpty());
+}
+
+QString WindowStatusBar::factorOfSafety() const { return factor_->text(); }
 
 void WindowStatusBar::showBusy(const QString& message)
 {

@@ -1,7 +1,8 @@
 #pragma once
 /// \file WindowStatusBar.hpp
-/// The main window's status bar: messages on the left; on the right a progress bar (runs and
-/// file loads), the mesh figures, and the cursor position with the result value under it.
+/// The main window's status bar: messages on the left; on the right the factor of safety of a
+/// strength reduction, a progress bar (runs and file loads), the mesh figures, and the cursor
+/// position with the result value under it.
 
 #include <QStatusBar>
 
@@ -32,11 +33,16 @@ public:
     /// hideBusy().
     void showBusy(const QString& message);
     void hideBusy();
+    /// The factor of safety of the last strength reduction, large and bold beside the
+    /// progress bar; an empty text hides it (another run, another model).
+    void setFactorOfSafety(const QString& text, const QString& tooltip = {});
+    QString factorOfSafety() const;
 
 private:
     QLabel* cursor_ = nullptr;
     QLabel* statistics_ = nullptr;
     QProgressBar* progress_ = nullptr;
+    QLabel* factor_ = nullptr;
 };
 
 }  // namespace mcdda::gui
