@@ -4,12 +4,12 @@
 <context>
     <name>HistoryCsv</name>
     <message>
-        <location filename="../gui/results/HistoryCsv.cpp" line="15"/>
+        <location filename="../gui/results/HistoryCsv.cpp" line="17"/>
         <source>cannot read %1: %2</source>
         <translation>%1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryCsv.cpp" line="40"/>
+        <location filename="../gui/results/HistoryCsv.cpp" line="46"/>
         <source>%1 is empty</source>
         <translation>%1 ist leer</translation>
     </message>
@@ -247,6 +247,16 @@
         <location filename="../solver/model/ModelFields.cpp" line="117"/>
         <source>A run whose unbalanced-force ratio ends above this is reported as not in equilibrium</source>
         <translation>Eine Berechnung, deren Ungleichgewichtsverhältnis am Ende darüber liegt, wird als nicht im Gleichgewicht gemeldet</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="119"/>
+        <source>Factor of safety tolerance</source>
+        <translation>Toleranz des Sicherheitsfaktors</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="121"/>
+        <source>Strength reduction: the search for the factor of safety stops once the factors that stand and that do not differ by less than this fraction</source>
+        <translation>Festigkeitsreduktion: die Suche nach dem Sicherheitsfaktor endet, sobald sich die Faktoren, bei denen das Modell steht und bei denen nicht, um weniger als diesen Bruchteil unterscheiden</translation>
     </message>
 </context>
 <context>
@@ -880,52 +890,70 @@
 <context>
     <name>mcdda::gui::HistoryPlot</name>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="27"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="29"/>
         <source>Measured displacement plotted</source>
         <translation>Dargestellte gemessene Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="30"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="32"/>
         <source>Plotted against time or a load (load-settlement curve)</source>
         <translation>Aufgetragen über der Zeit oder einer Last (Last-Setzungs-Kurve)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="50"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="63"/>
         <source>Plot</source>
         <translation>Darstellen</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="52"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="65"/>
         <source>against</source>
         <translation>über</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="93"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="111"/>
+        <source>strength reduction factor</source>
+        <translation>Festigkeitsreduktionsfaktor</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="112"/>
+        <source>largest displacement (m)</source>
+        <translation>größte Verschiebung (m)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="114"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="96"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="118"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="98"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="120"/>
         <source>%1 (m)</source>
         <translation>%1 (m)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="128"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="160"/>
         <source>No history: run the model.</source>
         <translation>Kein Verlauf: Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="130"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="162"/>
         <source>The model has no measurement points.</source>
         <translation>Das Modell hat keine Messpunkte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="132"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="164"/>
+        <source>%n trial(s) stood, %1 did not</source>
+        <translation>
+            <numerusform>%n Versuch stand, %1 nicht</numerusform>
+            <numerusform>%n Versuche standen, %1 nicht</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/results/HistoryPlot.cpp" line="166"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -1408,197 +1436,197 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="93"/>
+        <location filename="../gui/MainWindow.cpp" line="95"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="121"/>
+        <location filename="../gui/MainWindow.cpp" line="123"/>
         <source>Query</source>
         <translation>Abfrage</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="131"/>
+        <location filename="../gui/MainWindow.cpp" line="133"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="154"/>
+        <location filename="../gui/MainWindow.cpp" line="156"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="155"/>
+        <location filename="../gui/MainWindow.cpp" line="157"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="158"/>
+        <location filename="../gui/MainWindow.cpp" line="160"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="159"/>
+        <location filename="../gui/MainWindow.cpp" line="161"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="162"/>
+        <location filename="../gui/MainWindow.cpp" line="164"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="163"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="166"/>
+        <location filename="../gui/MainWindow.cpp" line="168"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="174"/>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="178"/>
+        <location filename="../gui/MainWindow.cpp" line="180"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="179"/>
+        <location filename="../gui/MainWindow.cpp" line="181"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="190"/>
+        <location filename="../gui/MainWindow.cpp" line="192"/>
         <source>&amp;Import DXF...</source>
         <translation>DXF &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="192"/>
+        <location filename="../gui/MainWindow.cpp" line="194"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="194"/>
+        <location filename="../gui/MainWindow.cpp" line="196"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="114"/>
+        <location filename="../gui/MainWindow.cpp" line="116"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="259"/>
+        <location filename="../gui/MainWindow.cpp" line="261"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="75"/>
+        <location filename="../gui/MainWindow.cpp" line="77"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="240"/>
+        <location filename="../gui/MainWindow.cpp" line="242"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="247"/>
+        <location filename="../gui/MainWindow.cpp" line="249"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="248"/>
+        <location filename="../gui/MainWindow.cpp" line="250"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="259"/>
+        <location filename="../gui/MainWindow.cpp" line="261"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="261"/>
+        <location filename="../gui/MainWindow.cpp" line="263"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="281"/>
+        <location filename="../gui/MainWindow.cpp" line="283"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="281"/>
+        <location filename="../gui/MainWindow.cpp" line="283"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="297"/>
+        <location filename="../gui/MainWindow.cpp" line="299"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="79"/>
+        <location filename="../gui/MainWindow.cpp" line="81"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="109"/>
+        <location filename="../gui/MainWindow.cpp" line="111"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="117"/>
+        <location filename="../gui/MainWindow.cpp" line="119"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="129"/>
+        <location filename="../gui/MainWindow.cpp" line="131"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="330"/>
+        <location filename="../gui/MainWindow.cpp" line="332"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="358"/>
+        <location filename="../gui/MainWindow.cpp" line="360"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="359"/>
+        <location filename="../gui/MainWindow.cpp" line="361"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="408"/>
+        <location filename="../gui/MainWindow.cpp" line="410"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="409"/>
+        <location filename="../gui/MainWindow.cpp" line="411"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="450"/>
+        <location filename="../gui/MainWindow.cpp" line="453"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="504"/>
+        <location filename="../gui/MainWindow.cpp" line="514"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1606,62 +1634,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="528"/>
+        <location filename="../gui/MainWindow.cpp" line="550"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="528"/>
+        <location filename="../gui/MainWindow.cpp" line="550"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="493"/>
+        <location filename="../gui/MainWindow.cpp" line="497"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="554"/>
+        <location filename="../gui/MainWindow.cpp" line="575"/>
+        <source>Strength reduction completed: %1.</source>
+        <translation>Festigkeitsreduktion abgeschlossen: %1.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="578"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="562"/>
+        <location filename="../gui/MainWindow.cpp" line="597"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="562"/>
+        <location filename="../gui/MainWindow.cpp" line="597"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="563"/>
+        <location filename="../gui/MainWindow.cpp" line="598"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="134"/>
+        <location filename="../gui/MainWindow.cpp" line="136"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="223"/>
+        <location filename="../gui/MainWindow.cpp" line="225"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="375"/>
+        <location filename="../gui/MainWindow.cpp" line="377"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="434"/>
+        <location filename="../gui/MainWindow.cpp" line="437"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="435"/>
+        <location filename="../gui/MainWindow.cpp" line="438"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -2202,8 +2235,8 @@
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="440"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="442"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="437"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="439"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
@@ -2224,10 +2257,10 @@
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="260"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
@@ -2244,8 +2277,8 @@
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="223"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
@@ -2270,198 +2303,183 @@
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="203"/>
-        <source>Static</source>
-        <translation>Statisch</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="204"/>
-        <source>Dynamic</source>
-        <translation>Dynamisch</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="205"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="249"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="206"/>
-        <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding</source>
-        <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="211"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="208"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
         <source>Number of time steps; the loads follow their tables over the time they cover</source>
         <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="216"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="217"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="221"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="225"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="242"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="250"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="248"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="259"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="261"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="262"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="259"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="260"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="309"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="314"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="306"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="311"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="440"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="442"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="437"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="439"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="462"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="479"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="459"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="476"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="500"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="487"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="497"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="519"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="541"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="564"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="591"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="516"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="538"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="561"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="588"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="523"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="545"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="568"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="595"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="520"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="542"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="565"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="592"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -2602,153 +2620,163 @@
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="62"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="59"/>
+        <source>Mechanism: plastic strain increment</source>
+        <translation>Mechanismus: plastisches Dehnungsinkrement</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="60"/>
+        <source>Mechanism: displacement increment</source>
+        <translation>Mechanismus: Verschiebungsinkrement</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="66"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="63"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="67"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="64"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="68"/>
         <source>Sign of the stresses shown. Compression positive (as RS2, PLAXIS and UDEC): σ1 is the major compressive stress, σ1 ≥ σ3. Tension positive: the result files&apos; convention.</source>
         <translation>Vorzeichen der gezeigten Spannungen. Druck positiv (wie RS2, PLAXIS und UDEC): σ1 ist die größte Druckspannung, σ1 ≥ σ3. Zug positiv: die Konvention der Ergebnisdateien.</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="69"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="73"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="72"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="76"/>
         <source>Scale factor of the drawn displacements: 0 = undeformed; one step below 0 = auto, the largest displacement drawn as 5 % of the model&apos;s size</source>
         <translation>Überhöhung der gezeichneten Verschiebungen: 0 = unverformt; eine Stufe unter 0 = auto, die größte Verschiebung als 5 % der Modellgröße gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="75"/>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="149"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="79"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="153"/>
         <source>auto</source>
         <translation>auto</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="86"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="90"/>
         <source>Contacts</source>
         <translation>Kontakte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="90"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="94"/>
         <source>Draw the contact forces (lines along the force, the largest 6 % of the model long), joint slip and opening, and the bolts of the saved step shown</source>
         <translation>Kontaktkräfte (Linien in Kraftrichtung, die größte 6 % der Modellgröße lang), Kluftgleiten und -öffnung und die Anker des gezeigten gespeicherten Schritts zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="97"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="101"/>
         <source>Units</source>
         <translation>Einheiten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="98"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="102"/>
         <source>Units of stresses and displacements in the legend, the cursor read-out and query lines</source>
         <translation>Einheiten der Spannungen und Verschiebungen in Legende, Cursoranzeige und Abfragelinien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="109"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="113"/>
         <source>Stresses</source>
         <translation>Spannungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="110"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="114"/>
         <source>kPa, or MPa from 1 MPa on</source>
         <translation>kPa, ab 1 MPa in MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="111"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="112"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="116"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="114"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="118"/>
         <source>Displacements</source>
         <translation>Verschiebungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="119"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="116"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="120"/>
         <source>mm</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="131"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
         <source>Rainbow</source>
         <translation>Regenbogen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="132"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="136"/>
         <source>Viridis</source>
         <translation>Viridis</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="133"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="137"/>
         <source>Grey</source>
         <translation>Grau</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="134"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="138"/>
         <source>Blue–white–red</source>
         <translation>Blau–Weiß–Rot</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="139"/>
         <source>Colour map of the scale</source>
         <translation>Farbskala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="141"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="145"/>
         <source>smooth</source>
         <translation>stufenlos</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="142"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="146"/>
         <source> bands</source>
         <translation> Stufen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="143"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="147"/>
         <source>Number of colour bands (contours); smooth = a continuous scale</source>
         <translation>Anzahl der Farbstufen (Isoflächen); stufenlos = kontinuierliche Skala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="146"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="150"/>
         <source>Range</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="157"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="161"/>
         <source>Lower end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Unteres Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="158"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="162"/>
         <source>Upper end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Oberes Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="235"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="239"/>
         <source>×%1 (auto)</source>
         <translation>×%1 (auto)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="238"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="242"/>
         <source>⚠ %n element(s) drawn inside out: lower the scale</source>
         <translation>
             <numerusform>⚠ %n Element umgestülpt gezeichnet: Überhöhung verringern</numerusform>
@@ -2897,8 +2925,67 @@
             <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkte plastifiziert</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="120"/>
+        <source>Strength reduction: trial %1, strengths divided by %2...</source>
+        <translation>Festigkeitsreduktion: Versuch %1, Festigkeiten geteilt durch %2 …</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="121"/>
+        <location filename="../gui/session/RunMessages.cpp" line="127"/>
+        <source>largest displacement %1 m, %n iteration(s), %2 s</source>
+        <translation>
+            <numerusform>größte Verschiebung %1 m, %n Iteration, %2 s</numerusform>
+            <numerusform>größte Verschiebung %1 m, %n Iterationen, %2 s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="133"/>
+        <source>Trial %1: F = %2 stands (%3)</source>
+        <translation>Versuch %1: F = %2 steht (%3)</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="137"/>
+        <source>Trial %1: F = %2 does not stand (%3): %4</source>
+        <translation>Versuch %1: F = %2 steht nicht (%3): %4</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="147"/>
+        <source>above %1</source>
+        <translation>über %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="149"/>
+        <source>below %1</source>
+        <translation>unter %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="151"/>
+        <source>between %1 and %2</source>
+        <translation>zwischen %1 und %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="154"/>
+        <source>not found</source>
+        <translation>nicht gefunden</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="160"/>
+        <source>Factor of safety %1 (%n trial(s)).</source>
+        <translation>
+            <numerusform>Sicherheitsfaktor %1 (%n Versuch).</numerusform>
+            <numerusform>Sicherheitsfaktor %1 (%n Versuche).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="162"/>
+        <source>Factor of safety %1: the model stands with its strengths divided by %2, not by %3 (%n trial(s)).</source>
+        <translation>
+            <numerusform>Sicherheitsfaktor %1: das Modell steht mit durch %2 geteilten Festigkeiten, nicht mit durch %3 geteilten (%n Versuch).</numerusform>
+            <numerusform>Sicherheitsfaktor %1: das Modell steht mit durch %2 geteilten Festigkeiten, nicht mit durch %3 geteilten (%n Versuche).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="173"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -2906,22 +2993,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="126"/>
+        <location filename="../gui/session/RunMessages.cpp" line="178"/>
         <source>Run ended but the model is not in equilibrium: %1</source>
         <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="128"/>
+        <location filename="../gui/session/RunMessages.cpp" line="180"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="129"/>
+        <location filename="../gui/session/RunMessages.cpp" line="181"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="130"/>
+        <location filename="../gui/session/RunMessages.cpp" line="182"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
@@ -2961,192 +3048,197 @@
 <context>
     <name>mcdda::gui::StagesPanel</name>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="56"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
         <source>fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="57"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="59"/>
         <source>roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
         <source>point load</source>
         <translation>Einzellast</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="59"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="61"/>
         <source>edge pressure</source>
         <translation>Randdruck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="62"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="84"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="86"/>
         <source>Choose a stage to see the model as it stands in it; the first row shows every region</source>
         <translation>Eine Bauphase wählen, um das Modell so zu sehen, wie es in ihr steht; die erste Zeile zeigt alle Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="85"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="87"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="87"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="89"/>
         <source>Add a stage at the end (10 steps, the model&apos;s analysis settings)</source>
         <translation>Eine Bauphase am Ende hinzufügen (10 Schritte, die Berechnungseinstellungen des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="88"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="90"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="90"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="92"/>
         <source>Up</source>
         <translation>Nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="92"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="94"/>
         <source>Down</source>
         <translation>Nach unten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="96"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
         <source>Name of the stage (results, tree, messages)</source>
         <translation>Name der Bauphase (Ergebnisse, Baum, Meldungen)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
         <source>Regions removed at the start of the stage (an excavation)</source>
         <translation>Bereiche, die zu Beginn der Bauphase entfernt werden (ein Ausbruch)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
         <source>Regions added at the start of the stage (backfill, a liner); absent before</source>
         <translation>Bereiche, die zu Beginn der Bauphase hinzukommen (Verfüllung, Ausbau); vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
         <source>Supports, loads and bolts added at the start of the stage; absent before</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase hinzukommen; vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="106"/>
         <source>Supports, loads and bolts taken away at the start of the stage</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase entfernt werden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="106"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="108"/>
         <source>Number of load steps of the stage</source>
         <translation>Anzahl der Laststufen der Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="109"/>
         <source>over all steps</source>
         <translation>über alle Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="108"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="110"/>
         <source> steps</source>
         <translation> Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="109"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="111"/>
         <source>Over how many steps the forces the stage leaves out of balance (an excavation&apos;s) are released, linearly; fewer steps release them faster</source>
         <translation>Über wie viele Schritte die Ungleichgewichtskräfte der Bauphase (etwa eines Ausbruchs) linear freigesetzt werden; weniger Schritte setzen sie schneller frei</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="111"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="113"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="122"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="123"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
         <source>Excavates</source>
         <translation>Bricht aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="126"/>
         <source>Builds</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="127"/>
         <source>Installs</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="126"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
         <source>Removes</source>
         <translation>Baut aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="127"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="129"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="130"/>
         <source>Release</source>
         <translation>Freisetzung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="132"/>
+        <source>Analysis</source>
+        <translation>Berechnung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="168"/>
         <source>Model as drawn (every region)</source>
         <translation>Modell wie gezeichnet (alle Bereiche)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="166"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="170"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="169"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="173"/>
         <source>No stages: the model is analysed in one go. Add one to excavate or build regions step by step.</source>
         <translation>Keine Bauphasen: das Modell wird in einem Zug berechnet. Eine hinzufügen, um Bereiche schrittweise auszubrechen oder einzubauen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="191"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="195"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="205"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="209"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="237"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="243"/>
         <source>Edit stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="244"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="250"/>
         <source>stage %1</source>
         <translation>Bauphase %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="248"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="254"/>
         <source>Add stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="259"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="265"/>
         <source>Remove stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="268"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="274"/>
         <source>Move stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ verschieben</translation>
     </message>
@@ -3298,42 +3390,67 @@
 <context>
     <name>mcdda::gui::WindowStatusBar</name>
     <message>
-        <location filename="../gui/widgets/WindowStatusBar.cpp" line="32"/>
+        <location filename="../gui/widgets/WindowStatusBar.cpp" line="41"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/WindowStatusBar.cpp" line="67"/>
+        <source>Factor of safety %1</source>
+        <translation>Sicherheitsfaktor %1</translation>
     </message>
 </context>
 <context>
     <name>mcdda::gui::form</name>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="52"/>
+        <location filename="../gui/panels/FormFields.cpp" line="53"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="119"/>
+        <location filename="../gui/panels/FormFields.cpp" line="120"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="120"/>
+        <location filename="../gui/panels/FormFields.cpp" line="121"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="121"/>
+        <location filename="../gui/panels/FormFields.cpp" line="122"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="122"/>
+        <location filename="../gui/panels/FormFields.cpp" line="123"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="123"/>
+        <location filename="../gui/panels/FormFields.cpp" line="124"/>
         <source>s</source>
         <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="191"/>
+        <source>Static</source>
+        <translation>Statisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="192"/>
+        <source>Dynamic</source>
+        <translation>Dynamisch</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="193"/>
+        <source>Strength reduction</source>
+        <translation>Festigkeitsreduktion</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="194"/>
+        <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding. Strength reduction: the factor of safety, the largest factor c and tan φ can be divided by while the model still stands (of the whole model, or as the last stage: a safety stage starting from the stresses of the stages before)</source>
+        <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten. Festigkeitsreduktion: der Sicherheitsfaktor, der größte Faktor, durch den c und tan φ geteilt werden können, während das Modell noch steht (des ganzen Modells oder als letzte Bauphase: eine Sicherheitsphase, die von den Spannungen der Bauphasen davor ausgeht)</translation>
     </message>
 </context>
 <context>
@@ -3417,62 +3534,67 @@
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="543"/>
+        <location filename="../gui/view/ResultScene.cpp" line="552"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="544"/>
+        <location filename="../gui/view/ResultScene.cpp" line="553"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="702"/>
+        <location filename="../gui/view/ResultScene.cpp" line="711"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="704"/>
+        <location filename="../gui/view/ResultScene.cpp" line="713"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="709"/>
+        <location filename="../gui/view/ResultScene.cpp" line="718"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="711"/>
+        <location filename="../gui/view/ResultScene.cpp" line="720"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="715"/>
+        <location filename="../gui/view/ResultScene.cpp" line="724"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="720"/>
+        <location filename="../gui/view/ResultScene.cpp" line="729"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="735"/>
+        <location filename="../gui/view/ResultScene.cpp" line="744"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="772"/>
+        <location filename="../gui/view/ResultScene.cpp" line="785"/>
+        <source>strengths divided by</source>
+        <translation>Festigkeiten geteilt durch</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="789"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="776"/>
+        <location filename="../gui/view/ResultScene.cpp" line="793"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="783"/>
+        <location filename="../gui/view/ResultScene.cpp" line="800"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>

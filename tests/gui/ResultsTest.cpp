@@ -19,6 +19,7 @@
 #include <QGuiApplication>
 #include <QImageReader>
 #include <QLineSeries>
+#include <QScatterSeries>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -211,8 +212,9 @@ void ResultsTest::plotShowsTheHistory()
     QVERIFY(plot->yColumn().endsWith(QStringLiteral(":ux")) || plot->yColumn().endsWith(QStringLiteral(":uy")));
     QCOMPARE(plot->xColumn(), QStringLiteral("time"));
     QVERIFY(plot->chart() != nullptr);
-    QCOMPARE(plot->chart()->series().size(), 1);
+    QCOMPARE(plot->chart()->series().size(), 2);  // the curve, and a strength reduction's failed trials
     QCOMPARE(plot->series()->count(), rows);
+    QCOMPARE(plot->failedTrials()->count(), 0);
 
     // Against a load column when there is one (load-settlement).
     for (const QString& c : plot->table().columns)
