@@ -2182,7 +2182,7 @@
     </message>
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="168"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="173"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
@@ -2223,7 +2223,7 @@
     </message>
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="170"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="175"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
@@ -2234,9 +2234,9 @@
     </message>
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="437"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="439"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="179"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
@@ -2247,7 +2247,7 @@
     </message>
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="186"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
@@ -2257,10 +2257,10 @@
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="261"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
@@ -2276,210 +2276,226 @@
     </message>
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="223"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <source>Reduced in a strength reduction</source>
+        <translation>In der Festigkeitsreduktion abgemindert</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
+        <source>Whether a strength reduction divides this material&apos;s c and tan φ; off for a footing or a lining that must not fail in the search</source>
+        <translation>Ob eine Festigkeitsreduktion c und tan φ dieses Materials teilt; aus für ein Fundament oder eine Auskleidung, die bei der Suche nicht versagen soll</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="169"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
         <source>The joint material shown below; Assign to Selection gives it to the selected joint</source>
         <translation>Das unten gezeigte Kluftmaterial; „Auswahl zuweisen“ gibt es der gewählten Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="172"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="177"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="176"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="182"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
         <source>Name of the joint material</source>
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
+        <source>Whether a strength reduction divides this joint material&apos;s cohesion, tan φj and tensile strength</source>
+        <translation>Ob eine Festigkeitsreduktion Kohäsion, tan φj und Zugfestigkeit dieses Kluftmaterials teilt</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="208"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="209"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
         <source>Number of time steps; the loads follow their tables over the time they cover</source>
         <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="216"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="217"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="222"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="242"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="248"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="262"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="255"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="259"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="260"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="273"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="306"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="311"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="316"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="321"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="437"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="439"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="459"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="476"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="471"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="488"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="487"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="497"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="499"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="509"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="516"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="538"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="561"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="588"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="529"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="552"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="575"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="602"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="520"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="542"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="565"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="592"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="533"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="579"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="606"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>

@@ -52,19 +52,19 @@ QWidget* buttons_row(QPushButton* a, QPushButton* b, QWidget* parent)
 
 bool same(const Material& a, const Material& b)
 {
-    return a.name == b.name && a.plastic == b.plastic && same_fields(a, b, material_fields());
+    return a.name == b.name && a.plastic == b.plastic && a.reduce == b.reduce && same_fields(a, b, material_fields());
 }
 
 bool same(const JointMaterial& a, const JointMaterial& b)
 {
-    return a.name == b.name && same_fields(a, b, joint_material_fields());
+    return a.name == b.name && a.reduce == b.reduce && same_fields(a, b, joint_material_fields());
 }
 
 bool same(const AnalysisSettings& a, const AnalysisSettings& b)
 {
-    return a.kind == b.kind && a.strength_reduction == b.strength_reduction && a.steps == b.steps && a.time_step == b.time_step &&
-           a.max_displacement_ratio == b.max_displacement_ratio && a.penalty == b.penalty &&
-           a.output_every == b.output_every && a.plasticity == b.plasticity;
+    // Every declared field (the equilibrium and search tolerances too), not a hand-kept list.
+    return a.kind == b.kind && a.strength_reduction == b.strength_reduction && a.steps == b.steps &&
+           a.output_every == b.output_every && a.plasticity == b.plasticity && same_fields(a, b, analysis_fields());
 }
 
 bool same(const InitialStress& a, const InitialStress& b)
@@ -144,6 +144,10 @@ QWidget* PropertyEditor::createMaterialForm()
     mat_plastic_->setObjectName(QStringLiteral("materialPlastic"));
     form->addRow(QString(), mat_plastic_);
     explain(mat_plastic_, tr("Whether the material yields (Mohr–Coulomb); off = elastic whatever the stress"));
+    mat_reduce_ = new QCheckBox(tr("Reduced in a strength reduction"), page);
+    mat_reduce_->setObjectName(QStringLiteral("materialReduce"));
+    form->addRow(QString(), mat_reduce_);
+    explain(mat_reduce_, tr("Whether a strength reduction divides this material's c and tan φ; off for a footing or a lining that must not fail in the search"));
     auto* apply = new QPushButton(tr("Apply"), page);
     apply->setObjectName(QStringLiteral("materialApply"));
     connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyMaterial);
@@ -153,6 +157,7 @@ QWidget* PropertyEditor::createMaterialForm()
     for (QDoubleSpinBox* box : mat_fields_->boxes())
         connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
     connect(mat_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
+    connect(mat_reduce_, &QCheckBox::toggled, this, [this] { if (!loading_) applyMaterial(); });
     return page;
 }
 
@@ -182,6 +187,10 @@ QWidget* PropertyEditor::createJointMaterialForm()
     explain(jm_name_, tr("Name of the joint material"));
     jm_fields_ = std::make_unique<form::DeclaredFields<JointMaterial>>(joint_material_fields(), QStringLiteral("joint_"),
                                                                        form, page);
+    jm_reduce_ = new QCheckBox(tr("Reduced in a strength reduction"), page);
+    jm_reduce_->setObjectName(QStringLiteral("jointMaterialReduce"));
+    form->addRow(QString(), jm_reduce_);
+    explain(jm_reduce_, tr("Whether a strength reduction divides this joint material's cohesion, tan φj and tensile strength"));
     auto* apply = new QPushButton(tr("Apply"), page);
     apply->setObjectName(QStringLiteral("jointMaterialApply"));
     connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyJointMaterial);
@@ -191,6 +200,7 @@ QWidget* PropertyEditor::createJointMaterialForm()
     for (QDoubleSpinBox* box : jm_fields_->boxes())
         connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
     connect(jm_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
+    connect(jm_reduce_, &QCheckBox::toggled, this, [this] { if (!loading_) applyJointMaterial(); });
     return page;
 }
 
@@ -333,6 +343,7 @@ void PropertyEditor::loadMaterial()
     mat_name_->setText(to_qt(x.name));
     mat_fields_->show(x);
     mat_plastic_->setChecked(x.plastic);
+    mat_reduce_->setChecked(x.reduce);
     loading_ = false;
 }
 
@@ -351,6 +362,7 @@ void PropertyEditor::loadJointMaterial()
     const JointMaterial& x = m.joint_materials[static_cast<std::size_t>(i)];
     jm_name_->setText(to_qt(x.name));
     jm_fields_->show(x);
+    jm_reduce_->setChecked(x.reduce);
     loading_ = false;
 }
 
@@ -508,6 +520,7 @@ bool PropertyEditor::applyMaterial()
     x.name = mat_name_->text().toStdString();
     mat_fields_->read(old, x);
     x.plastic = mat_plastic_->isChecked();
+    x.reduce = mat_reduce_->isChecked();
     if (same(x, old)) return true;
     Model candidate = m;
     candidate.materials[static_cast<std::size_t>(i)] = x;
@@ -530,6 +543,7 @@ bool PropertyEditor::applyJointMaterial()
     JointMaterial x = old;
     x.name = jm_name_->text().toStdString();
     jm_fields_->read(old, x);
+    x.reduce = jm_reduce_->isChecked();
     if (same(x, old)) return true;
     Model candidate = m;
     candidate.joint_materials[static_cast<std::size_t>(i)] = x;

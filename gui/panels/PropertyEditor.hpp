@@ -108,6 +108,8 @@ private:
     QLineEdit* mat_name_ = nullptr;
     std::unique_ptr<form::DeclaredFields<Material>> mat_fields_;
     QCheckBox* mat_plastic_ = nullptr;
+    QCheckBox* mat_reduce_ = nullptr;  ///< divided by a strength reduction
+    QCheckBox* jm_reduce_ = nullptr;
     QPushButton* mat_new_ = nullptr;
     QPushButton* mat_assign_ = nullptr;
     QPushButton* jm_new_ = nullptr;

@@ -46,6 +46,7 @@ private slots:
     void refusesImpossibleValues();
     void appliesCohesionWithUndo();
     void appliesJointMaterialAndInSituStress();
+    void strengthReductionSettings();
     void toolsPlaceRollerAndMeasurementPoint();
     void otherToolsPlaceItems();
     void viewFollowsEditsOffTheGuiThread();
@@ -127,6 +128,46 @@ void PropertyEditorTest::appliesCohesionWithUndo()
     QCOMPARE(c->value(), old_cohesion / 1e3);  // the form follows the undo
     window->findChild<QAction*>(QStringLiteral("redoAction"))->trigger();
     QCOMPARE(doc->model().materials[0].cohesion, 2e5);
+    QTRY_VERIFY(settled(*window));
+}
+
+void PropertyEditorTest::strengthReductionSettings()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    gui::ModelDocument* doc = window->document();
+    PropertyEditor* editor = window->propertyEditor();
+    // The analysis type applies when chosen; strength reduction is static with the flag set.
+    auto* type = editor->findChild<QComboBox*>(QStringLiteral("analysisKind"));
+    QVERIFY(type);
+    QCOMPARE(type->count(), 3);
+    type->setCurrentIndex(type->findText(QStringLiteral("Strength reduction")));
+    QVERIFY(doc->model().analysis.strength_reduction);
+    QCOMPARE(doc->model().analysis.kind, AnalysisSettings::Kind::Static);
+    type->setCurrentIndex(type->findText(QStringLiteral("Dynamic")));
+    QVERIFY(!doc->model().analysis.strength_reduction);
+    QCOMPARE(doc->model().analysis.kind, AnalysisSettings::Kind::Dynamic);
+    doc->undoStack()->undo();
+    QVERIFY(doc->model().analysis.strength_reduction);
+    QCOMPARE(type->currentText(), QStringLiteral("Strength reduction"));  // the form follows the undo
+    // The search's tolerance is a declared field of the analysis form.
+    auto* tolerance = editor->findChild<QDoubleSpinBox*>(QStringLiteral("analysis_factor_tolerance"));
+    QVERIFY(tolerance);
+    tolerance->setValue(0.01);
+    QVERIFY(editor->applyAnalysis());
+    QCOMPARE(doc->model().analysis.factor_tolerance, 0.01);
+    // A material or joint material kept out of the reduction (a footing, a lining).
+    auto* reduce = editor->findChild<QCheckBox*>(QStringLiteral("materialReduce"));
+    QVERIFY(reduce && reduce->isChecked());
+    reduce->setChecked(false);
+    QVERIFY(!doc->model().materials[0].reduce);
+    auto* joint_reduce = editor->findChild<QCheckBox*>(QStringLiteral("jointMaterialReduce"));
+    QVERIFY(joint_reduce && joint_reduce->isChecked());
+    joint_reduce->setChecked(false);
+    QVERIFY(!doc->model().joint_materials[0].reduce);
+    doc->undoStack()->undo();
+    QVERIFY(doc->model().joint_materials[0].reduce);
+    QVERIFY(joint_reduce->isChecked());
     QTRY_VERIFY(settled(*window));
 }
 
