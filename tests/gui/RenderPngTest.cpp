@@ -12,6 +12,7 @@
 #include "io/VtuWriter.hpp"
 #include "run/RunLoop.hpp"
 #include "run/RunOutput.hpp"
+#include "run/StrengthReduction.hpp"
 
 #include <gtest/gtest.h>
 
@@ -579,6 +580,53 @@ TEST_F(RenderPng, ResultJointSlip)
     EXPECT_GT(along, 20);
     const auto base = projection.pixel({30.0, -3.0});
     EXPECT_EQ(picture.count_around(base[0], base[1], 6, is_slip), 0);
+}
+
+// The mechanism of a strength reduction as `mcdda render --field displacement_increment` draws
+// it: the planar wedge of examples/slope-wedge.json searched for its factor; the last saved
+// step (the first factor that did not stand) holds the increments, the wedge above the joint
+// red, the ground below blue, and the title names the factor instead of a step.
+TEST_F(RenderPng, StrengthReductionMechanism)
+{
+    const Preprocessed p =
+        preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/slope-wedge.json", {"/analysis/type=\"strength_reduction\""});
+    ASSERT_TRUE(p.ok);
+    const fs::path dir = fs::path(MCDDA_TEST_OUTPUT_DIR) / "wedge-safety";
+    fs::remove_all(dir);
+    {
+        StrengthReductionSearch search(p);
+        RunOutput output(dir.string(), "wedge");
+        ASSERT_EQ(search.run(&output, {}).status, RunStatus::Completed);
+        ASSERT_TRUE(search.factor().found);
+    }
+    std::string vtu;  // the last saved step
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".vtu" && entry.path().string() > vtu) vtu = entry.path().string();
+    ASSERT_FALSE(vtu.empty());
+    view::ResultOptions options;
+    options.field = "displacement_increment";
+    const std::string path = output_path("result_mechanism.png");
+    view::ResultInfo info;
+    view::render_result_png(p, vtu, options, width, height, path, &info);
+    EXPECT_NE(info.title.find("displacement increment — strengths divided by 0.63"), std::string::npos) << info.title;
+    EXPECT_EQ(info.title.find("step"), std::string::npos) << info.title;
+    Picture picture(path);
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, options); });
+    const auto wedge = projection.pixel({22.0, 11.0});
+    const auto ground = projection.pixel({30.0, 2.0});
+    auto blue = [](const Rgb8& c) { return c[2] > 180 && c[0] < 60; };
+    EXPECT_GE(picture.count_around(wedge[0], wedge[1], 3, is_state_red), 40);
+    EXPECT_GE(picture.count_around(ground[0], ground[1], 3, blue), 40);
+    EXPECT_EQ(picture.count_around(ground[0], ground[1], 3, is_state_red), 0);
+    // The step that stood before it has no increments: a clear error naming the field.
+    options.field = "plastic_strain_increment";
+    std::string stood;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".vtu" && entry.path().string() != vtu && entry.path().string() > stood)
+            stood = entry.path().string();
+    ASSERT_FALSE(stood.empty());
+    EXPECT_THROW(view::render_result_png(p, stood, options, 200, 200, output_path("result_no_mechanism.png")),
+                 view::ResultFieldError);
 }
 
 // Rulers and a scale bar in the bottom-left corner (and none when switched
