@@ -38,7 +38,7 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
     series_ = new QLineSeries(chart);
     series_->setPointsVisible(true);
     chart->addSeries(series_);
-    // A strength reduction's trials that did not stand: red crosses beside the curve of those
+    // A strength reduction's trials that did not stand: red squares beside the curve of those
     // that did (RS2's SSR graph).
     failed_ = new QScatterSeries(chart);
     failed_->setObjectName(QStringLiteral("failedTrials"));
