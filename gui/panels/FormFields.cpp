@@ -1,5 +1,6 @@
 #include "panels/FormFields.hpp"
 
+#include "model/Model.hpp"
 #include "panels/DeclaredFields.hpp"
 #include "session/DisplayUnits.hpp"
 

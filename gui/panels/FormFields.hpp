@@ -4,7 +4,6 @@
 /// number fields with their unit, exact round trips of untouched values, status lines.
 
 #include "model/Defaults.hpp"
-#include "model/Model.hpp"
 
 #include <QString>
 
@@ -14,6 +13,10 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QWidget;
+
+namespace mcdda {
+struct AnalysisSettings;
+}
 
 namespace mcdda::gui::form {
 
