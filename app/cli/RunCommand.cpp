@@ -84,17 +84,25 @@ bool write_summary(RunOutput& output, const Simulation& simulation, const RunEnd
     }
 }
 
-/// `mcdda run` of a strength reduction analysis: the trials one line each, then the factor.
-int run_strength_reduction(const Request& r, const Preprocessed& p, const std::string& stem,
-                           const std::function<void()>& note_kept_results) {
-    std::unique_ptr<StrengthReductionSearch> search;
+/// Builds the solver object (a Simulation or a search) for `p`; a model it refuses is reported
+/// with the results kept noted, and null returned. Done before the output folder is touched:
+/// a run refused here leaves earlier results in the folder as they were.
+template <class Solver>
+std::unique_ptr<Solver> set_up(const Request& r, const Preprocessed& p, const std::function<void()>& note_kept_results) {
     try {
-        search = std::make_unique<StrengthReductionSearch>(p);
+        return std::make_unique<Solver>(p);
     } catch (const std::exception& e) {
         std::cerr << r.model << ": error: " << e.what() << "\n";
         note_kept_results();
-        return exit_model_error;
+        return nullptr;
     }
+}
+
+/// `mcdda run` of a strength reduction analysis: the trials one line each, then the factor.
+int run_strength_reduction(const Request& r, const Preprocessed& p, const std::string& stem,
+                           const std::function<void()>& note_kept_results) {
+    const std::unique_ptr<StrengthReductionSearch> search = set_up<StrengthReductionSearch>(r, p, note_kept_results);
+    if (!search) return exit_model_error;
     const std::unique_ptr<RunOutput> output = open_output(r, stem);
     if (!output) return exit_output_error;
     if (!r.quiet)
@@ -151,16 +159,8 @@ int run_run(const Request& r) {
     std::string stem = std::filesystem::path(r.model).stem().string();
     if (stem.empty()) stem = "model";
     if (is_strength_reduction(p.model)) return run_strength_reduction(r, p, stem, note_kept_results);
-    // Set up before the output folder is touched: a run refused here leaves earlier results in
-    // the folder as they were.
-    std::unique_ptr<Simulation> simulation;
-    try {
-        simulation = std::make_unique<Simulation>(p);
-    } catch (const std::exception& e) {
-        std::cerr << r.model << ": error: " << e.what() << "\n";
-        note_kept_results();
-        return exit_model_error;
-    }
+    const std::unique_ptr<Simulation> simulation = set_up<Simulation>(r, p, note_kept_results);
+    if (!simulation) return exit_model_error;
     const std::unique_ptr<RunOutput> output = open_output(r, stem);
     if (!output) return exit_output_error;
     if (!r.quiet)
