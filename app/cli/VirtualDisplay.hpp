@@ -8,9 +8,16 @@
 
 namespace mcdda::cli {
 
-/// When DISPLAY is unset, replaces this process with `xvfb-run -a <this program> args…` and
-/// does not return. Returns normally when a display exists or we already run under xvfb-run;
-/// returns false (with `error` set) when no display can be had.
-bool ensure_display(const std::vector<std::string>& args, std::string& error);
+/// What ensure_display found or did.
+enum class DisplayOutcome {
+    present,      ///< a display exists (or we already run under xvfb-run): go on rendering
+    rerun,        ///< the command ran to its end under xvfb-run; exit with `status`
+    unavailable,  ///< no display can be had; `error` says why
+};
+
+/// When DISPLAY is unset, runs `xvfb-run -a <this program> args…` as a child, waits for it and
+/// hands back its exit status. xvfb-run gets an authority file of ours (-f): with its own
+/// temporary folder it exits 5, not with the program's status, whenever removing that folder fails.
+DisplayOutcome ensure_display(const std::vector<std::string>& args, int& status, std::string& error);
 
 }  // namespace mcdda::cli

@@ -37,11 +37,14 @@ int main(int argc, char** argv) {
         if (request->command == "study") return run_study(*request);
         if (request->command == "import-dxf") return run_import_dxf(*request);
         if (request->command == "render") {
-            if (!ensure_display(args, error)) {
-                std::cerr << "mcdda render: " << error << "\n";
-                return exit_output_error;
+            int status = 0;
+            switch (ensure_display(args, status, error)) {
+            case DisplayOutcome::present: return run_render(*request);
+            case DisplayOutcome::rerun: return status;
+            case DisplayOutcome::unavailable: break;
             }
-            return run_render(*request);
+            std::cerr << "mcdda render: " << error << "\n";
+            return exit_output_error;
         }
     } catch (const std::exception& e) {
         std::cerr << "mcdda: unexpected failure: " << e.what() << "\n";
