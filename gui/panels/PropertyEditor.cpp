@@ -64,7 +64,8 @@ bool same(const AnalysisSettings& a, const AnalysisSettings& b)
 {
     // Every declared field (the equilibrium and search tolerances too), not a hand-kept list.
     return a.kind == b.kind && a.strength_reduction == b.strength_reduction && a.steps == b.steps &&
-           a.output_every == b.output_every && a.plasticity == b.plasticity && same_fields(a, b, analysis_fields());
+           a.output_every == b.output_every && a.plasticity == b.plasticity &&
+           a.non_associated_flow == b.non_associated_flow && same_fields(a, b, analysis_fields());
 }
 
 bool same(const InitialStress& a, const InitialStress& b)
@@ -230,6 +231,18 @@ QWidget* PropertyEditor::createAnalysisForm()
     an_plasticity_->setObjectName(QStringLiteral("analysisPlasticity"));
     form->addRow(QString(), an_plasticity_);
     explain(an_plasticity_, tr("Off: every material stays elastic (a quick elastic check of a plastic model)"));
+    an_flow_ = new QComboBox(page);
+    an_flow_->setObjectName(QStringLiteral("analysisNonAssociatedFlow"));
+    an_flow_->addItem(tr("Davis (associated, strength lowered)"),
+                      static_cast<int>(AnalysisSettings::NonAssociatedFlow::Davis));
+    an_flow_->addItem(tr("Direct (ψ as given)"), static_cast<int>(AnalysisSettings::NonAssociatedFlow::Direct));
+    form->addRow(tr("Non-associated flow"), an_flow_);
+    explain(an_flow_, tr("Strength reduction of materials whose dilation angle is below their friction angle. "
+                         "Davis: each trial's reduced c and tan φ are lowered by β = cos ψ cos φ / (1 − sin ψ sin φ) "
+                         "and solved with associated flow: a factor that converges with the mesh. Direct: ψ as given; "
+                         "the non-associated law has no unique limit load and its factor may depend on the mesh "
+                         "and the iteration where much of the ground yields"));
+    connect(an_flow_, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyAnalysis(); });
     auto* apply = new QPushButton(tr("Apply"), page);
     apply->setObjectName(QStringLiteral("analysisApply"));
     connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyAnalysis);
@@ -375,6 +388,8 @@ void PropertyEditor::loadAnalysis()
     an_fields_->show(a);
     an_output_->setValue(a.output_every);
     an_plasticity_->setChecked(a.plasticity);
+    an_flow_->setCurrentIndex(an_flow_->findData(static_cast<int>(a.non_associated_flow)));
+    an_flow_->setEnabled(a.strength_reduction);
     loading_ = false;
 }
 
@@ -567,6 +582,7 @@ bool PropertyEditor::applyAnalysis()
     an_fields_->read(old, a);
     a.output_every = an_output_->value();
     a.plasticity = an_plasticity_->isChecked();
+    a.non_associated_flow = static_cast<AnalysisSettings::NonAssociatedFlow>(an_flow_->currentData().toInt());
     if (same(a, old)) return true;
     Model candidate = m;
     candidate.analysis = a;

@@ -127,6 +127,7 @@ private:
     std::unique_ptr<form::DeclaredFields<AnalysisSettings>> an_fields_;
     QSpinBox* an_output_ = nullptr;
     QCheckBox* an_plasticity_ = nullptr;
+    QComboBox* an_flow_ = nullptr;  ///< strength reduction of non-associated materials: Davis or direct
     QLabel* an_status_ = nullptr;
 
     QComboBox* is_kind_ = nullptr;

@@ -636,13 +636,19 @@ void parse_mesh(Parser& p, const json& root, Model& m) {
 void parse_analysis_object(Parser& p, const json& o, const std::string& path, AnalysisSettings& a) {
     if (!p.is_object(o, path)) return;
     p.check_keys(o, path, keys_of(analysis_fields(), {"type", "steps", "open_close_iterations", "plastic_iterations",
-                                                      "geometry", "output_every", "plasticity", "max_trials"}));
+                                                      "geometry", "output_every", "plasticity", "max_trials",
+                                                      "non_associated_flow"}));
     const std::string type = p.string(o, path, "type", std::string(analysis_type_name(a)));
     a.strength_reduction = type == "strength_reduction";
     if (type == "static" || type == "strength_reduction") a.kind = AnalysisSettings::Kind::Static;
     else if (type == "dynamic") a.kind = AnalysisSettings::Kind::Dynamic;
     else p.error(path + "/type", "must be \"static\", \"dynamic\" or \"strength_reduction\", got \"" + type + "\"");
     a.max_trials = static_cast<int>(p.integer(o, path, "max_trials", a.max_trials));
+    const std::string flow = p.string(o, path, "non_associated_flow",
+                                       std::string(non_associated_flow_name(a.non_associated_flow)));
+    if (flow == "davis") a.non_associated_flow = AnalysisSettings::NonAssociatedFlow::Davis;
+    else if (flow == "direct") a.non_associated_flow = AnalysisSettings::NonAssociatedFlow::Direct;
+    else p.error(path + "/non_associated_flow", "must be \"davis\" or \"direct\", got \"" + flow + "\"");
     a.steps = static_cast<int>(p.integer(o, path, "steps", a.steps));
     read_fields_over(p, o, path, analysis_fields(), a);
     a.max_open_close_iterations = static_cast<int>(p.integer(o, path, "open_close_iterations", a.max_open_close_iterations));

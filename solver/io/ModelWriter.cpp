@@ -63,6 +63,8 @@ json analysis_json(const AnalysisSettings& a, const AnalysisSettings* base) {
     put("output_every", a.output_every, b.output_every);
     put("plasticity", a.plasticity, b.plasticity);
     put("max_trials", a.max_trials, b.max_trials);
+    put("non_associated_flow", std::string(non_associated_flow_name(a.non_associated_flow)),
+        std::string(non_associated_flow_name(b.non_associated_flow)));
     if (o.is_null()) o = json::object();
     return o;
 }

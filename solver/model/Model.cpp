@@ -7,6 +7,10 @@
 
 namespace mcdda {
 
+const char* non_associated_flow_name(AnalysisSettings::NonAssociatedFlow f) {
+    return f == AnalysisSettings::NonAssociatedFlow::Davis ? "davis" : "direct";
+}
+
 const char* analysis_type_name(const AnalysisSettings& a) {
     if (a.strength_reduction) return "strength_reduction";
     return a.kind == AnalysisSettings::Kind::Dynamic ? "dynamic" : "static";

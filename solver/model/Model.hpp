@@ -211,7 +211,19 @@ struct AnalysisSettings {
     /// of the factor.
     double factor_tolerance = 0.005;
     int max_trials = 40;                  ///< trials the search may take
+    /// How a strength reduction treats reduced materials with non-associated flow (ψ < φ).
+    /// Davis: each trial's reduced c and φ are lowered further by Davis's factor
+    /// β = cos ψ cos φ / (1 − sin ψ sin φ) (of the reduced φ and ψ) and solved with associated
+    /// flow (Davis 1968; Tschuchnigg et al., Géotechnique 2015): a factor that converges with
+    /// the mesh and does not depend on the iteration. Direct: ψ as given, the factor of the
+    /// non-associated law itself, which has no unique limit load and may depend on the mesh and
+    /// the iteration where much of the ground yields (docs/plasticity.md).
+    enum class NonAssociatedFlow { Davis, Direct };
+    NonAssociatedFlow non_associated_flow = NonAssociatedFlow::Davis;
 };
+
+/// "davis" or "direct": `non_associated_flow` in the model file.
+const char* non_associated_flow_name(AnalysisSettings::NonAssociatedFlow f);
 
 /// "static", "dynamic" or "strength_reduction": the analysis "type" in the model file.
 const char* analysis_type_name(const AnalysisSettings& a);

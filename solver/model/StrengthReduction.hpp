@@ -9,10 +9,19 @@
 
 namespace mcdda {
 
-Material reduced_strength(const Material& m, double factor);
+/// With `flow` Davis, a material whose dilation angle stays below its reduced friction angle
+/// gets Davis's associated equivalent of the reduced strengths: β = cos ψ cos φ / (1 − sin ψ sin φ)
+/// of the reduced φ and ψ, c* = β c/F, tan φ* = β tan φ/F, ψ* = φ* (the tensile strength, whose
+/// cut-off flows associated already, stays σt/F).
+Material reduced_strength(const Material& m, double factor,
+                          AnalysisSettings::NonAssociatedFlow flow = AnalysisSettings::NonAssociatedFlow::Direct);
 JointMaterial reduced_strength(const JointMaterial& j, double factor);
 
-/// Every material and joint material of `model` with `reduce` set, divided by `factor`.
+/// Davis's factor β = cos ψ cos φ / (1 − sin ψ sin φ) (1 for ψ = φ).
+double davis_factor(double friction_angle, double dilation_angle);
+
+/// Every material and joint material of `model` with `reduce` set, divided by `factor`, block
+/// materials treated as the model's `analysis.non_associated_flow` says.
 void reduce_strength(Model& model, double factor);
 
 }  // namespace mcdda

@@ -156,6 +156,15 @@ void PropertyEditorTest::strengthReductionSettings()
     tolerance->setValue(0.01);
     QVERIFY(editor->applyAnalysis());
     QCOMPARE(doc->model().analysis.factor_tolerance, 0.01);
+    // Non-associated materials: Davis's reduction by default, the law itself when asked.
+    auto* flow = editor->findChild<QComboBox*>(QStringLiteral("analysisNonAssociatedFlow"));
+    QVERIFY(flow && flow->isEnabled());
+    QCOMPARE(doc->model().analysis.non_associated_flow, AnalysisSettings::NonAssociatedFlow::Davis);
+    flow->setCurrentIndex(flow->findData(static_cast<int>(AnalysisSettings::NonAssociatedFlow::Direct)));
+    QCOMPARE(doc->model().analysis.non_associated_flow, AnalysisSettings::NonAssociatedFlow::Direct);
+    doc->undoStack()->undo();
+    QCOMPARE(doc->model().analysis.non_associated_flow, AnalysisSettings::NonAssociatedFlow::Davis);
+    QCOMPARE(flow->currentData().toInt(), static_cast<int>(AnalysisSettings::NonAssociatedFlow::Davis));
     // A material or joint material kept out of the reduction (a footing, a lining).
     auto* reduce = editor->findChild<QCheckBox*>(QStringLiteral("materialReduce"));
     QVERIFY(reduce && reduce->isChecked());

@@ -133,6 +133,18 @@ TEST(ModelReader, OverridesChangeFieldsAndReportBadPointers) {
     EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/regions/0/boundary/9", "past the end"));
 }
 
+TEST(ModelReader, NonAssociatedFlowOfAStrengthReduction) {
+    const ReadResult defaults = read_model_text(square_model_json(), {"/analysis={\"type\":\"strength_reduction\"}"});
+    ASSERT_TRUE(defaults.model) << all_messages(defaults.diagnostics);
+    EXPECT_EQ(defaults.model->analysis.non_associated_flow, AnalysisSettings::NonAssociatedFlow::Davis);
+    const ReadResult direct = read_model_text(square_model_json(), {"/analysis={\"non_associated_flow\":\"direct\"}"});
+    ASSERT_TRUE(direct.model) << all_messages(direct.diagnostics);
+    EXPECT_EQ(direct.model->analysis.non_associated_flow, AnalysisSettings::NonAssociatedFlow::Direct);
+    const ReadResult bad = read_model_text(square_model_json(), {"/analysis={\"non_associated_flow\":\"Davies\"}"});
+    EXPECT_TRUE(has_diagnostic(bad.diagnostics, Severity::Error, "/analysis/non_associated_flow",
+                               "must be \"davis\" or \"direct\", got \"Davies\""));
+}
+
 TEST(ModelReader, CirclesAndArcsBecomeRingsThatCloseExactly) {
     const ReadResult r = read_model_text(square_model_json(),
         {"/regions/0/boundary=[[10,0],[10,10],[0,10],{\"arc\":{\"center\":[0,0],\"radius\":2,\"start\":90,\"end\":0,\"segments\":8}}]",
