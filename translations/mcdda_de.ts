@@ -2175,327 +2175,347 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="83"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="127"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="173"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="87"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="89"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="90"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="91"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="92"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="94"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="95"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="111"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="112"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
         <source>The material shown below; Assign to Selection gives it to the selected region</source>
         <translation>Das unten gezeigte Material; „Auswahl zuweisen“ gibt es dem gewählten Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="175"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="176"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="132"/>
         <source>Add a material (a copy of the one shown)</source>
         <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="179"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="134"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="466"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="135"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
         <source>The region selected in the view or the Model tree is made of this material</source>
         <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="186"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
         <source>Name of the material, as the tree and the legend show it</source>
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="261"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="264"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
         <source>Plastic (Mohr–Coulomb)</source>
         <translation>Plastisch (Mohr-Coulomb)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
         <source>Whether the material yields (Mohr–Coulomb); off = elastic whatever the stress</source>
         <translation>Ob das Material plastifiziert (Mohr-Coulomb); aus = elastisch bei jeder Spannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="190"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="191"/>
         <source>Reduced in a strength reduction</source>
         <translation>In der Festigkeitsreduktion abgemindert</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="150"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
         <source>Whether a strength reduction divides this material&apos;s c and tan φ; off for a footing or a lining that must not fail in the search</source>
         <translation>Ob eine Festigkeitsreduktion c und tan φ dieses Materials teilt; aus für ein Fundament oder eine Auskleidung, die bei der Suche nicht versagen soll</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="298"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="175"/>
         <source>The joint material shown below; Assign to Selection gives it to the selected joint</source>
         <translation>Das unten gezeigte Kluftmaterial; „Auswahl zuweisen“ gibt es der gewählten Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="177"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="178"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="182"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
         <source>Name of the joint material</source>
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
         <source>Whether a strength reduction divides this joint material&apos;s cohesion, tan φj and tensile strength</source>
         <translation>Ob eine Festigkeitsreduktion Kohäsion, tan φj und Zugfestigkeit dieses Kluftmaterials teilt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="212"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="256"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="213"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
         <source>Number of time steps; the loads follow their tables over the time they cover</source>
         <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="226"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="252"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="236"/>
+        <source>Davis (associated, strength lowered)</source>
+        <translation>Davis (assoziiert, Festigkeit abgemindert)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
+        <source>Direct (ψ as given)</source>
+        <translation>Direkt (ψ wie angegeben)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="239"/>
+        <source>Non-associated flow</source>
+        <translation>Nicht-assoziiertes Fließen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="240"/>
+        <source>Strength reduction of materials whose dilation angle is below their friction angle. Davis: each trial&apos;s reduced c and tan φ are lowered by β = cos ψ cos φ / (1 − sin ψ sin φ) and solved with associated flow: a factor that converges with the mesh. Direct: ψ as given; the non-associated law has no unique limit load and its factor may depend on the mesh and the iteration where much of the ground yields</source>
+        <translation>Festigkeitsreduktion von Materialien, deren Dilatanzwinkel unter dem Reibungswinkel liegt. Davis: die abgeminderten c und tan φ jedes Versuchs werden nochmals mit β = cos ψ cos φ / (1 − sin ψ sin φ) abgemindert und mit assoziiertem Fließen gerechnet: ein Faktor, der mit dem Netz konvergiert. Direkt: ψ wie angegeben; das nicht-assoziierte Gesetz hat keine eindeutige Traglast, und sein Faktor kann vom Netz und von der Iteration abhängen, wo ein großer Teil des Bodens plastifiziert</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="253"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="254"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="257"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="258"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="262"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="263"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="268"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="290"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="291"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="292"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="293"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="296"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="297"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="316"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="321"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="329"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="334"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="449"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="451"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="466"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="471"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="488"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="486"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="503"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="499"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="509"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="514"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="524"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="529"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="552"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="575"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="602"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="544"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="567"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="591"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="618"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="533"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="579"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="606"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="548"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="571"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="595"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="622"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -3419,52 +3439,52 @@
 <context>
     <name>mcdda::gui::form</name>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="53"/>
+        <location filename="../gui/panels/FormFields.cpp" line="54"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="120"/>
+        <location filename="../gui/panels/FormFields.cpp" line="121"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="121"/>
+        <location filename="../gui/panels/FormFields.cpp" line="122"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="122"/>
+        <location filename="../gui/panels/FormFields.cpp" line="123"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="123"/>
+        <location filename="../gui/panels/FormFields.cpp" line="124"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="124"/>
+        <location filename="../gui/panels/FormFields.cpp" line="125"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="191"/>
+        <location filename="../gui/panels/FormFields.cpp" line="192"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="192"/>
+        <location filename="../gui/panels/FormFields.cpp" line="193"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="193"/>
+        <location filename="../gui/panels/FormFields.cpp" line="194"/>
         <source>Strength reduction</source>
         <translation>Festigkeitsreduktion</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="194"/>
+        <location filename="../gui/panels/FormFields.cpp" line="195"/>
         <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding. Strength reduction: the factor of safety, the largest factor c and tan φ can be divided by while the model still stands (of the whole model, or as the last stage: a safety stage starting from the stresses of the stages before)</source>
         <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten. Festigkeitsreduktion: der Sicherheitsfaktor, der größte Faktor, durch den c und tan φ geteilt werden können, während das Modell noch steht (des ganzen Modells oder als letzte Bauphase: eine Sicherheitsphase, die von den Spannungen der Bauphasen davor ausgeht)</translation>
     </message>

@@ -132,7 +132,10 @@ int run_strength_reduction(const Request& r, const Preprocessed& p, const std::s
         const FactorOfSafety& f = search->factor();
         if (f.found)
             std::cout << "factor of safety " << f.value << " (stands at " << f.converged << ", not at " << f.not_converged
-                      << "; " << f.trials << " trials); results in " << r.out << "\n";
+                      << "; " << f.trials << " trials"
+                      << (f.non_associated_flow == "davis" ? "; ψ < φ by Davis's reduction, associated flow" : "")
+                      << (f.non_associated_flow == "direct" ? "; ψ < φ solved directly" : "") << "); results in "
+                      << r.out << "\n";
     }
     if (r.profile) print_timings(search->timings(), search->simulation().state().step);
     return exit_status(end.status);

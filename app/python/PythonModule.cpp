@@ -158,6 +158,7 @@ py::object run(Analysis& analysis, const std::optional<std::string>& output_fold
         f["value"] = r.factor_of_safety;
         f["converged"] = r.factor_converged;
         f["not_converged"] = r.factor_not_converged;
+        f["non_associated_flow"] = r.non_associated_flow;
         f["trials"] = static_cast<int>(r.trials.size());
         f["found"] = r.factor_found;
         py::list table;

@@ -276,6 +276,7 @@ RunResult Analysis::run_strength_reduction(const RunOptions& options)
     result.factor_of_safety = f.value;
     result.factor_converged = f.converged;
     result.factor_not_converged = f.not_converged;
+    result.non_associated_flow = f.non_associated_flow;
     for (const StrengthTrial& t : f.table)
         result.trials.push_back({t.number, t.factor, t.stands, t.status, t.message, t.steps, t.iterations,
                                  t.max_displacement});

@@ -27,6 +27,9 @@ struct FactorOfSafety {
     double converged = 0.0;    ///< = value: the last factor that stood
     double not_converged = 0.0;  ///< the smallest factor tried at which it did not
     int trials = 0;
+    /// How the reduced block materials flowed: "associated" (none has ψ < φ), else the model's
+    /// non_associated_flow, "davis" or "direct".
+    std::string non_associated_flow = "associated";
     std::vector<StrengthTrial> table;
 };
 

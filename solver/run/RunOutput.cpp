@@ -354,7 +354,8 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
     if (factor) {
         // Names read by scripts outside the program: docs/running.md.
         nlohmann::json f{{"value", factor->value}, {"converged", factor->converged},
-                         {"not_converged", factor->not_converged}, {"trials", factor->trials}, {"found", factor->found}};
+                         {"not_converged", factor->not_converged}, {"trials", factor->trials}, {"found", factor->found},
+                         {"non_associated_flow", factor->non_associated_flow}};
         nlohmann::json trials = nlohmann::json::array();
         for (const StrengthTrial& t : factor->table)
             trials.push_back({{"trial", t.number}, {"factor", t.factor}, {"status", t.status}, {"stands", t.stands},

@@ -1,5 +1,7 @@
 #include "run/StrengthReduction.hpp"
 
+#include <algorithm>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -135,6 +137,12 @@ RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callback
     }
     const AnalysisSettings& settings =
         safety_stage_ >= 0 ? model_.model.stages[safety_stage_].analysis : model_.model.analysis;
+    const bool non_associated = std::any_of(model_.model.materials.begin(), model_.model.materials.end(),
+                                            [](const Material& m) {
+                                                return m.reduce && m.plastic && m.dilation_angle < m.friction_angle;
+                                            });
+    if (non_associated && settings.plasticity)
+        factor_.non_associated_flow = non_associated_flow_name(settings.non_associated_flow);
 
     std::optional<Trial> stood, fell;  // the highest factor that stood, the lowest that did not
     std::optional<Trial> below;        // the factor that stood before `stood`: the next lower one

@@ -42,6 +42,7 @@ class StrengthReductionTest(unittest.TestCase):
         self.assertEqual(f["value"], f["converged"])
         self.assertGreater(f["not_converged"], f["converged"])
         self.assertEqual(f["trials"], len(f["table"]))
+        self.assertEqual(f["non_associated_flow"], "associated")  # the rock is elastic
         self.assertEqual(f["table"][0]["factor"], 1.0)
         self.assertFalse(f["table"][0]["stands"])
         self.assertEqual(r["status"], "completed")

@@ -126,6 +126,8 @@ struct RunResult {
     double factor_of_safety = 0.0;      ///< the largest factor that stood (= factor_converged)
     double factor_converged = 0.0;
     double factor_not_converged = 0.0;  ///< the smallest factor that did not stand
+    /// "associated", "davis" or "direct": how reduced materials with ψ < φ were solved.
+    std::string non_associated_flow = "associated";
     std::vector<StrengthTrial> trials;
 };
 
