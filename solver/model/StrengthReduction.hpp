@@ -13,8 +13,7 @@ namespace mcdda {
 /// gets Davis's associated equivalent of the reduced strengths: β = cos ψ cos φ / (1 − sin ψ sin φ)
 /// of the reduced φ and ψ, c* = β c/F, tan φ* = β tan φ/F, ψ* = φ* (the tensile strength, whose
 /// cut-off flows associated already, stays σt/F).
-Material reduced_strength(const Material& m, double factor,
-                          AnalysisSettings::NonAssociatedFlow flow = AnalysisSettings::NonAssociatedFlow::Direct);
+Material reduced_strength(const Material& m, double factor, AnalysisSettings::NonAssociatedFlow flow);
 JointMaterial reduced_strength(const JointMaterial& j, double factor);
 
 /// Davis's factor β = cos ψ cos φ / (1 − sin ψ sin φ) (1 for ψ = φ).

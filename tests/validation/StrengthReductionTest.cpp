@@ -131,13 +131,13 @@ TEST(StrengthReduction, ReducesCohesionFrictionAndTensionOfWhatIsReduced) {
     m.friction_angle = 30 * pi / 180;
     m.dilation_angle = 30 * pi / 180;
     m.tensile_strength = 5e3;
-    const Material r = reduced_strength(m, 2.0);
+    const Material r = reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis);  // ψ = φ: no β
     EXPECT_DOUBLE_EQ(r.cohesion, 5e3);
     EXPECT_NEAR(std::tan(r.friction_angle), std::tan(m.friction_angle) / 2.0, 1e-14);
     EXPECT_DOUBLE_EQ(r.tensile_strength, 2.5e3);
     EXPECT_DOUBLE_EQ(r.dilation_angle, r.friction_angle);  // ψ ≤ reduced φ
     m.reduce = false;
-    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0).cohesion, 10e3);
+    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis).cohesion, 10e3);
     JointMaterial j;
     j.cohesion = 1e3;
     j.friction_angle = 20 * pi / 180;
