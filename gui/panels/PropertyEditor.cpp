@@ -389,7 +389,8 @@ void PropertyEditor::loadAnalysis()
     an_output_->setValue(a.output_every);
     an_plasticity_->setChecked(a.plasticity);
     an_flow_->setCurrentIndex(an_flow_->findData(static_cast<int>(a.non_associated_flow)));
-    an_flow_->setEnabled(a.strength_reduction);
+    // Only a strength reduction uses it; a hidden row also keeps the dock as short as before.
+    static_cast<QFormLayout*>(an_flow_->parentWidget()->layout())->setRowVisible(an_flow_, a.strength_reduction);
     loading_ = false;
 }
 
