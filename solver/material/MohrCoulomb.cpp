@@ -1,6 +1,7 @@
 #include "material/MohrCoulomb.hpp"
 
 #include "fem/PlaneStrain.hpp"
+#include "material/PrincipalFrame.hpp"
 
 #include <Eigen/Dense>
 
@@ -126,27 +127,9 @@ ReturnResult MohrCoulomb::return_map(const PlaneStress& trial, Eigen::Matrix3d* 
     ReturnResult result;
     result.stress = trial;
 
-    // Principal values: a is the major in-plane stress, at angle θ from x; b the minor in-plane
-    // one, z the out-of-plane one. Only cos²θ, sin²θ and sinθ cosθ are needed, from the Mohr
-    // circle; θ = 0 for an isotropic in-plane stress, as atan2(0, 0) gave.
-    const double centre = 0.5 * (trial.xx + trial.yy);
-    const double half_difference = 0.5 * (trial.xx - trial.yy);
-    const double radius = std::hypot(half_difference, trial.xy);
-    const double cos_2theta = radius > 0.0 ? half_difference / radius : 1.0;
-    const double sin_2theta = radius > 0.0 ? trial.xy / radius : 0.0;
-    const double c2 = 0.5 * (1 + cos_2theta), s2 = 0.5 * (1 - cos_2theta), cs = 0.5 * sin_2theta;
-    const double values[3] = {centre + radius, centre - radius, trial.zz};  // a, b, z
-    // Sorted descending, ties kept in a, b, z order (a ≥ b always, so only z moves).
-    int order[3] = {0, 1, 2};
-    if (values[2] > values[0]) {
-        order[0] = 2;
-        order[1] = 0;
-        order[2] = 1;
-    } else if (values[2] > values[1]) {
-        order[1] = 2;
-        order[2] = 1;
-    }
-    const Eigen::Vector3d s(values[order[0]], values[order[1]], values[order[2]]);
+    // Principal values sorted (the frame keeps the way back to x, y, z).
+    const PrincipalFrame frame(trial);
+    const Eigen::Vector3d& s = frame.sorted;
 
     auto violation = [&](const Eigen::Vector3d& x) {
         double worst = -1e300;
@@ -227,35 +210,12 @@ ReturnResult MohrCoulomb::return_map(const PlaneStress& trial, Eigen::Matrix3d* 
 
     // Back to x, y, z: the principal directions do not change (isotropic elasticity).
     double returned[3];
-    for (int i = 0; i < 3; ++i) returned[order[i]] = best[i];
-    result.stress.xx = returned[0] * c2 + returned[1] * s2;
-    result.stress.yy = returned[0] * s2 + returned[1] * c2;
-    result.stress.xy = (returned[0] - returned[1]) * cs;
-    result.stress.zz = returned[2];
+    result.stress = frame.stress(best, returned);
     result.plastic = true;
     result.active_surfaces = best_size;
     result.equivalent_plastic_strain = std::sqrt(2.0 / 3.0 * best_flow.squaredNorm());
 
-    if (tangent) {
-        // dσ/ds in the a, b, z slots.
-        Eigen::Matrix3d P;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) P(order[i], order[j]) = sorted_derivative(i, j);
-        // In the eigenbasis (a, b, ab): the principal values respond through P D (Δεz = 0), the
-        // shear through the turn of the principal axes, dτab = (σa − σb)/(sa − sb) · G dγab;
-        // at coinciding a, b that ratio's limit is P_aa − P_ab.
-        const Eigen::Matrix3d PD = P * elasticity_;
-        const double gap = values[0] - values[1];
-        const double spin = gap > 1e-9 * (std::fabs(values[0]) + std::fabs(values[1])) + tolerance_
-                                ? (returned[0] - returned[1]) / gap
-                                : 0.5 * (P(0, 0) - P(0, 1) + P(1, 1) - P(1, 0));
-        Eigen::Matrix3d eigen_tangent;
-        eigen_tangent << PD(0, 0), PD(0, 1), 0.0, PD(1, 0), PD(1, 1), 0.0, 0.0, 0.0, spin * shear_modulus_;
-        // Strain into the eigenbasis (engineering shear); stress back with its transpose.
-        Eigen::Matrix3d R;
-        R << c2, s2, cs, s2, c2, -cs, -2 * cs, 2 * cs, c2 - s2;
-        *tangent = R.transpose() * eigen_tangent * R;
-    }
+    if (tangent) *tangent = frame.tangent(sorted_derivative, returned, elasticity_, shear_modulus_, tolerance_);
     return result;
 }
 

@@ -6,6 +6,37 @@
 
 namespace mcdda {
 
+namespace {
+
+/// The end of a run at a collapse: the state is the last one carried; the collapse load lies
+/// between its loads and those of the smallest increment beyond it that could not be carried.
+RunEnd collapse_end(const Simulation& simulation, const PlasticCollapse& e) {
+    auto loads = [&](double position) {
+        std::string text;
+        for (const auto& [name, value] : simulation.load_magnitudes_at(position))
+            text += (text.empty() ? "" : ", ") + name + " = " + std::to_string(value);
+        return text;
+    };
+    const std::string carried = loads(e.carried), not_carried = loads(e.not_carried);
+    return {RunStatus::Collapsed,
+            "collapse: " + std::string(e.what()) +
+                (carried.empty() ? std::string()
+                                 : "; collapse load between " + carried + " (carried) and " + not_carried + " (not carried)"),
+            e.carried, e.not_carried};
+}
+
+/// Every step ran: is the model at rest? (A block still sliding, a slope still moving.)
+RunEnd equilibrium_end(const Simulation& simulation) {
+    const double ratio = simulation.state().unbalanced_ratio, limit = simulation.analysis().equilibrium_ratio;
+    if (simulation.state().step == 0 || ratio <= limit) return {RunStatus::Completed, "completed"};
+    char text[160];
+    std::snprintf(text, sizeof text, "not in equilibrium: the unbalanced-force ratio after step %d is %.3g (limit %.3g)",
+                  simulation.state().step, ratio, limit);
+    return {RunStatus::Unbalanced, text};
+}
+
+}  // namespace
+
 RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<bool()>& should_stop,
                  const std::function<void(const StepReport&)>& on_step, int until_stage) {
     RunEnd end{RunStatus::Completed, "completed"};
@@ -25,21 +56,7 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         try {
             report = simulation.advance();
         } catch (const PlasticCollapse& e) {
-            // The state is the last one carried; the collapse load lies between its loads and
-            // those of the smallest increment beyond it that could not be carried.
-            auto loads = [&](double position) {
-                std::string text;
-                for (const auto& [name, value] : simulation.load_magnitudes_at(position))
-                    text += (text.empty() ? "" : ", ") + name + " = " + std::to_string(value);
-                return text;
-            };
-            const std::string carried = loads(e.carried), not_carried = loads(e.not_carried);
-            end = {RunStatus::Collapsed,
-                   "collapse: " + std::string(e.what()) +
-                       (carried.empty() ? std::string()
-                                        : "; collapse load between " + carried + " (carried) and " + not_carried +
-                                              " (not carried)"),
-                   e.carried, e.not_carried};
+            end = collapse_end(simulation, e);
             if (output && simulation.state().step_fraction > 0.0) {
                 // Part of the step was carried: that state is saved (as the step it belongs to),
                 // so the files show what summary.json reports.
@@ -49,8 +66,7 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
             }
             break;
         } catch (const std::exception& e) {
-            end = {RunStatus::Failed,
-                   "step " + std::to_string(simulation.state().step + 1) + " failed: " + e.what()};
+            end = {RunStatus::Failed, "step " + std::to_string(simulation.state().step + 1) + " failed: " + e.what()};
             break;
         }
         if (output) {
@@ -64,17 +80,7 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         }
         if (on_step) on_step(report);
     }
-    // Every step ran: is the model at rest? (A block still sliding, a slope still moving.)
-    if (end.status == RunStatus::Completed) {
-        const double ratio = simulation.state().unbalanced_ratio, limit = simulation.analysis().equilibrium_ratio;
-        if (simulation.state().step > 0 && ratio > limit) {
-            char text[160];
-            std::snprintf(text, sizeof text,
-                          "not in equilibrium: the unbalanced-force ratio after step %d is %.3g (limit %.3g)",
-                          simulation.state().step, ratio, limit);
-            end = {RunStatus::Unbalanced, text};
-        }
-    }
+    if (end.status == RunStatus::Completed) end = equilibrium_end(simulation);
     // An early ending still leaves its last accepted step on disk.
     if (output && last_saved != simulation.state().step) output->save_step(simulation);
     return end;

@@ -282,6 +282,91 @@ void RunOutput::record_trial(const Simulation& sim, const StrengthTrial& t, cons
     history_ << row.str() << std::flush;
 }
 
+namespace {
+
+nlohmann::json stages_of(const Simulation& sim) {
+    nlohmann::json stages = nlohmann::json::array();
+    for (const StageRecord& r : sim.stages()) {
+        const char* state = !r.started ? "not run" : r.finished ? (r.reached_target ? "reached target" : "completed")
+                                                                  : "stopped";
+        stages.push_back({{"name", r.name}, {"status", state}, {"first_step", r.first_step},
+                          {"last_step", r.last_step}, {"planned_steps", r.planned_steps},
+                          {"unbalanced_ratio", r.unbalanced_ratio}});
+    }
+    return stages;
+}
+
+nlohmann::json bolts_of(const Simulation& sim) {
+    nlohmann::json bolts = nlohmann::json::array();
+    for (std::size_t i = 0; i < sim.full_model().bolts.size(); ++i)
+        bolts.push_back({{"name", sim.full_model().bolts[i].name}, {"force", sim.state().bolt_force[i]},
+                         {"broken", sim.state().bolt_broken[i] != 0}});
+    return bolts;
+}
+
+void add_timings(const Simulation& sim, nlohmann::json& j) {
+    const RunTimings& t = sim.timings();
+    j["timing"] = {{"assembly", t.assembly}, {"factorization", t.factorization}, {"solve", t.solve},
+                   {"contact", t.contact},   {"plasticity", t.plasticity},       {"total", t.total}};
+    j["factorizations"] = t.factorizations;
+    j["blas"] = blas_in_use();  // the factorisation's speed depends on it
+    j["threads"] = thread_count();
+    j["symbolic_analyses"] = t.symbolic_analyses;
+    j["reused_factors"] = {{"matrices", t.reused_factors}, {"iterations", t.refinement_iterations}};
+    const int steps = sim.state().step;
+    j["iterations"] = {{"total", t.iterations},
+                       {"per_step", steps > 0 ? static_cast<double>(t.iterations) / steps : 0.0},
+                       {"max_per_step", t.max_iterations},
+                       {"load_cuts", t.load_cuts}};
+}
+
+/// The collapse load lies between the last load carried and the first not carried.
+nlohmann::json collapse_of(const Simulation& sim) {
+    auto loads_at = [&](double position) {
+        nlohmann::json loads = nlohmann::json::object();
+        for (const auto& [name, value] : sim.load_magnitudes_at(position)) loads[name] = value;
+        return nlohmann::json{{"step", position}, {"loads", loads}};
+    };
+    return {{"carried", loads_at(sim.collapse()->carried)}, {"not_carried", loads_at(sim.collapse()->not_carried)}};
+}
+
+/// What a parameter study compares between runs (docs/study.md).
+void add_study_values(const Simulation& sim, nlohmann::json& j) {
+    double plastic_area = 0.0, largest = 0.0;
+    const Mesh& mesh = sim.mesh();
+    const std::vector<unsigned char>& plastic = sim.state().plastic_state;
+    for (std::size_t e = 0; e < mesh.triangles.size() && e < plastic.size(); ++e) {
+        if (plastic[e] == 0) continue;
+        const auto& t = mesh.triangles[e];
+        const Point2 &a = mesh.nodes[static_cast<std::size_t>(t[0])], &b = mesh.nodes[static_cast<std::size_t>(t[1])],
+                     &c = mesh.nodes[static_cast<std::size_t>(t[2])];
+        plastic_area += 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+    }
+    const Eigen::VectorXd u = sim.state().reported_displacement();
+    for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
+    j["plastic_area"] = plastic_area;  // m², elements that have yielded at some time
+    j["max_displacement"] = largest;   // m
+    j["element"] = mesh.quadratic() ? "t6" : "t3";
+    j["model"] = {{"name", sim.model().name}, {"nodes", mesh.nodes.size()},
+                  {"elements", mesh.triangles.size()}, {"blocks", mesh.block_count()}};
+}
+
+/// Names read by scripts outside the program: docs/running.md.
+nlohmann::json factor_of_safety_of(const FactorOfSafety& factor) {
+    nlohmann::json f{{"value", factor.value}, {"converged", factor.converged},
+                     {"not_converged", factor.not_converged}, {"trials", factor.trials}, {"found", factor.found},
+                     {"non_associated_flow", factor.non_associated_flow}};
+    nlohmann::json trials = nlohmann::json::array();
+    for (const StrengthTrial& t : factor.table)
+        trials.push_back({{"trial", t.number}, {"factor", t.factor}, {"status", t.status}, {"stands", t.stands},
+                          {"steps", t.steps}, {"iterations", t.iterations},
+                          {"max_displacement", t.max_displacement}, {"message", t.message}});
+    f["table"] = trials;
+    return f;
+}
+
+}  // namespace
+
 void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std::string& message,
                               const FactorOfSafety* factor) {
     nlohmann::json j;
@@ -293,77 +378,13 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
     if (sim) {
         j["unbalanced_ratio"] = sim->state().unbalanced_ratio;
         j["equilibrium_ratio"] = sim->analysis().equilibrium_ratio;
-        nlohmann::json stages = nlohmann::json::array();
-        for (const StageRecord& r : sim->stages()) {
-            const char* state = !r.started ? "not run" : r.finished ? (r.reached_target ? "reached target" : "completed")
-                                                                      : "stopped";
-            stages.push_back({{"name", r.name}, {"status", state}, {"first_step", r.first_step},
-                              {"last_step", r.last_step}, {"planned_steps", r.planned_steps},
-                              {"unbalanced_ratio", r.unbalanced_ratio}});
-        }
-        j["stages"] = stages;
-        if (!sim->full_model().bolts.empty()) {
-            nlohmann::json bolts = nlohmann::json::array();
-            for (std::size_t i = 0; i < sim->full_model().bolts.size(); ++i)
-                bolts.push_back({{"name", sim->full_model().bolts[i].name}, {"force", sim->state().bolt_force[i]},
-                                 {"broken", sim->state().bolt_broken[i] != 0}});
-            j["bolts"] = bolts;
-        }
-        const RunTimings& t = sim->timings();
-        j["timing"] = {{"assembly", t.assembly}, {"factorization", t.factorization}, {"solve", t.solve},
-                       {"contact", t.contact},   {"plasticity", t.plasticity},       {"total", t.total}};
-        j["factorizations"] = t.factorizations;
-        j["blas"] = blas_in_use();  // the factorisation's speed depends on it
-        j["threads"] = thread_count();
-        j["symbolic_analyses"] = t.symbolic_analyses;
-        j["reused_factors"] = {{"matrices", t.reused_factors}, {"iterations", t.refinement_iterations}};
-        const int steps = sim->state().step;
-        j["iterations"] = {{"total", t.iterations},
-                           {"per_step", steps > 0 ? static_cast<double>(t.iterations) / steps : 0.0},
-                           {"max_per_step", t.max_iterations},
-                           {"load_cuts", t.load_cuts}};
-        if (sim->collapse()) {
-            // The collapse load lies between the last load carried and the first not carried.
-            auto loads_at = [&](double position) {
-                nlohmann::json loads = nlohmann::json::object();
-                for (const auto& [name, value] : sim->load_magnitudes_at(position)) loads[name] = value;
-                return nlohmann::json{{"step", position}, {"loads", loads}};
-            };
-            j["collapse"] = {{"carried", loads_at(sim->collapse()->carried)},
-                             {"not_carried", loads_at(sim->collapse()->not_carried)}};
-        }
-        // What a parameter study compares between runs (docs/study.md).
-        double plastic_area = 0.0, largest = 0.0;
-        const Mesh& mesh = sim->mesh();
-        const std::vector<unsigned char>& plastic = sim->state().plastic_state;
-        for (std::size_t e = 0; e < mesh.triangles.size() && e < plastic.size(); ++e) {
-            if (plastic[e] == 0) continue;
-            const auto& t = mesh.triangles[e];
-            const Point2 &a = mesh.nodes[static_cast<std::size_t>(t[0])], &b = mesh.nodes[static_cast<std::size_t>(t[1])],
-                         &c = mesh.nodes[static_cast<std::size_t>(t[2])];
-            plastic_area += 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
-        }
-        const Eigen::VectorXd u = sim->state().reported_displacement();
-        for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
-        j["plastic_area"] = plastic_area;  // m², elements that have yielded at some time
-        j["max_displacement"] = largest;   // m
-        j["element"] = sim->mesh().quadratic() ? "t6" : "t3";
-        j["model"] = {{"name", sim->model().name}, {"nodes", sim->mesh().nodes.size()},
-                      {"elements", sim->mesh().triangles.size()}, {"blocks", sim->mesh().block_count()}};
+        j["stages"] = stages_of(*sim);
+        if (!sim->full_model().bolts.empty()) j["bolts"] = bolts_of(*sim);
+        add_timings(*sim, j);
+        if (sim->collapse()) j["collapse"] = collapse_of(*sim);
+        add_study_values(*sim, j);
     }
-    if (factor) {
-        // Names read by scripts outside the program: docs/running.md.
-        nlohmann::json f{{"value", factor->value}, {"converged", factor->converged},
-                         {"not_converged", factor->not_converged}, {"trials", factor->trials}, {"found", factor->found},
-                         {"non_associated_flow", factor->non_associated_flow}};
-        nlohmann::json trials = nlohmann::json::array();
-        for (const StrengthTrial& t : factor->table)
-            trials.push_back({{"trial", t.number}, {"factor", t.factor}, {"status", t.status}, {"stands", t.stands},
-                              {"steps", t.steps}, {"iterations", t.iterations},
-                              {"max_displacement", t.max_displacement}, {"message", t.message}});
-        f["table"] = trials;
-        j["factor_of_safety"] = f;
-    }
+    if (factor) j["factor_of_safety"] = factor_of_safety_of(*factor);
     write_file_atomically((fs::path(directory_) / "summary.json").string(),
                           [&](std::ostream& out) { out << j.dump(2) << "\n"; });
     // This run's results replace the kept ones.

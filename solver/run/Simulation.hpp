@@ -23,12 +23,16 @@
 #include "Preprocess.hpp"
 #include "contact/Contact.hpp"
 #include "contact/ContactLaw.hpp"
+#include "contact/ContactSet.hpp"
 #include "fem/BoltLink.hpp"
 #include "fem/BoundaryConditions.hpp"
 #include "fem/MeshTopology.hpp"
 #include "fem/PlaneStrain.hpp"
 #include "linalg/SymmetricSystem.hpp"
 #include "fem/ElementAssembly.hpp"
+#include "linalg/AndersonMixing.hpp"
+#include "run/ConvergenceMonitor.hpp"
+#include "run/Newmark.hpp"
 
 #include <Eigen/Dense>
 
@@ -87,8 +91,12 @@ struct SimulationState {
     /// once broken) and whether it broke.
     std::vector<double> bolt_force;
     std::vector<char> bolt_broken;
-    /// Largest out-of-balance nodal force over the largest applied force after the last step
-    /// (UDEC's ratio); the inertia of a static DDA step does not count as balancing.
+    /// Out-of-balance force after the last step, of the block where it is largest: the sum over
+    /// the block's nodes of the out-of-balance nodal forces (free directions) over the sum of
+    /// its nodal forces in play (the applied loads, or the internal forces of the stresses
+    /// where larger). Sums, not largest values: a largest nodal force shrinks with the element
+    /// size, so the same state read differently on a finer mesh. The inertia of a static DDA
+    /// increment does not count as balancing.
     double unbalanced_ratio = 0.0;
     int stage = 0;  ///< construction stage of the last step (index into Model::stages)
 };
@@ -111,6 +119,7 @@ struct StepReport {
     int open = 0, sliding = 0, locked = 0;
     int plastic_iterations = 0;  ///< equilibrium iterations, summed over open–close iterations and load increments
     int load_increments = 1;     ///< increments the step's load was applied in (static)
+    int relaxation_increments = 0;  ///< increments at the step's loads that settled it (static, see relax)
     int yielding = 0;            ///< elements yielding in this step
     double max_increment = 0.0;  ///< largest nodal displacement increment (m)
     double unbalanced_ratio = 0.0;  ///< see SimulationState::unbalanced_ratio
@@ -229,24 +238,125 @@ private:
         int yielding = 0;
         std::string why;     ///< for failures
         Eigen::VectorXd residual;  ///< out-of-balance force at d (converged: the support reactions, negated)
+        std::vector<Contact> contacts;  ///< with the states the try ended with
         std::vector<BoltLink> bolts;  ///< the bolts that held (those that broke in the try left out)
     };
+
+    // Setting up (Simulation.cpp).
+    void locate_supports();
+    /// Penalty, displacement limit and whether anything may yield, from the materials in use.
+    void set_material_scales(const std::vector<int>& materials);
+    void initial_state();
+    void anchor_bolts();
+
+    // A construction stage (StageSetup.cpp).
+    /// Sets up stage `s`: presence of regions, supports, loads and bolts, materials, settings,
+    /// and the out-of-balance force its start leaves, which it releases over its steps.
+    void begin_stage(int s);
+    struct StageRegions {
+        std::vector<char> present;  ///< per region
+        std::vector<int> material;  ///< per region
+    };
+    StageRegions stage_regions(int s) const;
+    void set_stage_model(int s, const std::vector<int>& material);
+    void activate_stage_elements(const StageRegions& regions);
+    void locate_stage_supports(const Stage& stage);
+    void set_stage_bolts(int s);
+    /// Removes the contacts of blocks absent in this stage (excavated, not yet built).
+    void drop_absent(std::vector<Contact>& contacts) const;
+    /// Applied forces at a load position: the loads plus the part of the stage's start
+    /// out-of-balance force not yet released.
+    Eigen::VectorXd applied_forces(double position, double time) const;
+
+    // Steps (StaticStep.cpp, DynamicStep.cpp).
+    StepReport advance_static();
+    StepReport advance_dynamic();
+    /// Contacts for the step from the deformed shape, the last step's carried over (`predicted`:
+    /// the displacement expected over the step, dynamic).
+    std::vector<Contact> detect_step_contacts(const Eigen::VectorXd& predicted);
+    /// The factor Δt is cut by after a try that failed (`singular_factor` for a singular matrix)
+    /// or moved too far.
+    double time_step_cut(const Attempt& attempt, double largest, double singular_factor) const;
+    /// What a static step does after a try.
+    enum class StaticResponse { Accept, SmallerLoad, Collapse, SmallerShare, SmallerTimeStep };
+    StaticResponse judge_static(const Attempt& attempt, double increment, double dt, double largest) const;
+    /// The load stepping within one static step.
+    struct LoadSteps {
+        double increment = 1.0;    ///< of the step's load, this try
+        double failed_end = -1.0;  ///< load position where the last try failed (negative: none)
+        int time_step_cuts = 0;
+    };
+    Attempt try_static_increment(double increment);
+    void cut_static_time_step(const Attempt& attempt, double largest, StepReport& report, LoadSteps& steps);
+    /// Commits an increment; true when it completed the step.
+    bool accept_static(const Attempt& attempt, double largest, double dt, StepReport& report, LoadSteps& steps);
+    /// Static DDA (deformed geometry): settles the state at the step's loads (see StaticStep.cpp).
+    void relax(StepReport& report);
+    /// Largest nodal displacement of increments d.
+    static double largest_increment(const Eigen::VectorXd& d);
+
+    // One try of a load increment (OpenCloseIteration.cpp).
     /// Solves the increments of one try: loads `external`; a static increment applies only the
     /// share `lambda` of the out-of-balance force found at its start (`start_external` there).
     Attempt solve_increments(const Eigen::VectorXd& external, const Eigen::VectorXd* start_external, double lambda,
-                             double dt, std::vector<Contact>& contacts, const Eigen::VectorXd& prescribed);
+                             double dt, std::vector<Contact> contacts, const Eigen::VectorXd& prescribed);
+    /// Bolts, matrix pattern and element matrices for the try; the loads with inertia.
+    Eigen::VectorXd prepare_try(const Eigen::VectorXd& external, double dt, Attempt& attempt);
+    ContactSet contact_set(std::vector<Contact> contacts);
+    bool held_factor_usable(const ContactSet& contacts, const std::vector<BoltLink>& bolts) const;
+    /// The open–close loop: equilibrium iterations, bolts that break, contact states, friction.
+    void open_close(Eigen::VectorXd& d, const Eigen::VectorXd& loads, const Eigen::VectorXd& shift, ContactSet& contacts,
+                    Attempt& attempt);
+    /// equilibrate, with a singular matrix turned into the try's outcome.
+    bool equilibrate_or_fail(Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
+                             bool& factor_valid, Attempt& attempt);
+    /// Bolts pulled beyond their strength break (true: some did; attempt.bolts without them).
+    bool break_overloaded_bolts(const Eigen::VectorXd& d, Attempt& attempt);
+    /// The end of a try whose contacts settled.
+    void settle_try(const ContactSet::Update& update, bool equilibrium_only, Attempt& attempt);
+
+    // The equilibrium iterations (EquilibriumIterations.cpp).
+    /// The out-of-balance force at increments d: loads − ∫Bᵀσ − contact forces − bolt forces,
+    /// with the stresses returned into `returned`; element matrices of `matrix` into the system
+    /// on the way. The one place this balance is written.
+    Eigen::VectorXd residual(const Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
+                             const std::vector<BoltLink>& bolts, std::vector<ReturnResult>& returned,
+                             ElementMatrix matrix, ElementAssembly::Evaluation* evaluation = nullptr,
+                             Eigen::VectorXd* internal_forces = nullptr);
+    /// The residual of an iteration with its reduced right-hand side and norms.
+    struct Balance {
+        Eigen::VectorXd residual, rhs;
+        double norm = 0.0, norm2 = 0.0;  ///< largest |R| and Σ R² over the free directions
+        ElementAssembly::Evaluation evaluation;
+    };
+    Balance balance_at(const Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
+                       const std::vector<BoltLink>& bolts, ElementMatrix matrix);
+    /// An iteration's numbers for the ConvergenceMonitor.
+    ConvergenceMonitor::Iteration iteration_of(int k, const Balance& b, const Eigen::VectorXd& d, double load_scale,
+                                               double last_correction, bool newton) const;
+    /// Equilibrium iterations for fixed contact states (see the file comment); true when
+    /// converged, d updated in place.
+    bool equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
+                     const std::vector<BoltLink>& bolts, bool& factor_valid, Attempt& attempt);
+    /// Contacts and bolts into the matrix and the factorisation; false for a tangent that is not
+    /// positive definite.
+    bool factorize(ElementMatrix matrix, const ContactSet& contacts, const std::vector<BoltLink>& bolts);
+    /// The correction of an iteration: K⁻¹R, Anderson-mixed for the elastic iteration.
+    Eigen::VectorXd correction(const Eigen::VectorXd& d, const Balance& b, bool newton, double force_tolerance,
+                               bool any_closed, AndersonMixing& anderson);
+    /// The share of a Newton correction to take (backtracking).
+    double line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta, const Eigen::VectorXd& loads,
+                       const ContactSet& contacts, const std::vector<BoltLink>& bolts, const Balance& at,
+                       double tolerance, double scale, bool least_squares);
+    void observe_iteration(double out_of_balance, double tolerance, int yielding);
+    Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs);  ///< back-substitution, full-size result
+
+    // Loads, supports, matrices, commits (Simulation.cpp).
     /// Increments of the degrees of freedom held by moving rollers that take them to their
     /// prescribed displacement at load position `position` (zero elsewhere).
     Eigen::VectorXd prescribed_increments(double position, double time) const;
     /// Sums the support reactions of every roller from the out-of-balance force of a converged try.
     void record_reactions(const Eigen::VectorXd& residual);
-    /// Equilibrium iterations for fixed contact states (see the file comment); true when
-    /// converged, d updated in place.
-    bool equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& base, const std::vector<Contact>& contacts,
-                     const std::vector<ContactKinematics>& kinematics,
-                     const std::vector<ContactProperties>& properties, const std::vector<BoltLink>& bolts,
-                     bool& factor_valid, Attempt& attempt);
-    Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs);  ///< back-substitution, full-size result
     void rebuild_pattern_if_needed(const std::vector<Contact>& contacts, const std::vector<BoltLink>& bolts);
     CouplingGroup coupling(std::initializer_list<int> nodes) const;  ///< equations of up to 6 nodes
     CouplingGroup element_coupling(int e) const;
@@ -270,22 +380,18 @@ private:
     bool uses_unsymmetric_newton() const {
         return may_yield_ && elements_.has_tangent() && !elements_.symmetric_tangent();
     }
-    /// Sets up stage `s`: presence of regions, supports, loads and bolts, materials, settings,
-    /// and the out-of-balance force its start leaves, which it releases over its steps.
-    void begin_stage(int s);
-    /// Applied forces at a load position: the loads plus the part of the stage's start
-    /// out-of-balance force not yet released.
-    Eigen::VectorXd applied_forces(double position, double time) const;
-    /// Out-of-balance force of the committed state (no increments, no inertia), and the applied
-    /// force it is measured against; adds nothing to any state.
-    Eigen::VectorXd out_of_balance(double& applied_scale);
-    /// Removes the contacts of blocks absent in this stage (excavated, not yet built).
-    void drop_absent(std::vector<Contact>& contacts) const;
+    /// The forces of the committed state (no increments, no inertia): adds nothing to any state.
+    struct ForceBalance {
+        Eigen::VectorXd applied, internal;  ///< loads (with the part held by a stage), ∫Bᵀσ
+        Eigen::VectorXd residual;           ///< applied − internal − contact − bolt forces
+    };
+    ForceBalance out_of_balance();
+    /// The committed state's SimulationState::unbalanced_ratio (of `residual` when given: a
+    /// converged try's).
+    double unbalanced_ratio(const Eigen::VectorXd* residual = nullptr);
     /// Bolts present, linearised on the step's start geometry.
     std::vector<BoltLink> bolt_links() const;
-    StepReport advance_static();
-    StepReport advance_dynamic();
-    /// Completes the report of an accepted step; `residual` is the out-of-balance force of its
+    /// Completes the report of an accepted step; `residual`: the out-of-balance force of its
     /// last converged try.
     void finish_report(StepReport& report, double largest, const Eigen::VectorXd& residual);
 
@@ -336,5 +442,7 @@ private:
 
 /// Initial stress of every integration point from the model's in-situ stress (tension positive).
 void initial_stresses(const Model& model, const Mesh& mesh, const ElementAssembly& elements, PointStates& points);
+/// Element values for output: the mean of the element's points, the highest plastic state.
+void element_averages(const PointStates& points, int per_element, SimulationState& state);
 
 }  // namespace mcdda

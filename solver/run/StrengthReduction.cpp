@@ -119,6 +119,13 @@ StrengthReductionSearch::Trial StrengthReductionSearch::run_trial(double factor,
     return trial;
 }
 
+/// The search's bracket: the highest factor that stood, the lowest that did not, and the factor
+/// that stood before `stood` (the next lower one).
+struct StrengthReductionSearch::Bracket {
+    std::optional<Trial> stood, fell, below;
+    bool cancelled = false;
+};
+
 RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callbacks) {
     factor_ = FactorOfSafety{};
     double last_time = 0.0;
@@ -143,101 +150,106 @@ RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callback
                                             });
     if (non_associated && settings.plasticity)
         factor_.non_associated_flow = non_associated_flow_name(settings.non_associated_flow);
+    Bracket bracket;
+    search(bracket, settings, output, callbacks);
+    if (output) save_critical_pair(bracket, output, last_time);
+    return ending(bracket, settings);
+}
 
-    std::optional<Trial> stood, fell;  // the highest factor that stood, the lowest that did not
-    std::optional<Trial> below;        // the factor that stood before `stood`: the next lower one
-    auto try_factor = [&](double f) -> bool {
-        Trial t = run_trial(f, callbacks);
-        if (t.cancelled) return false;
-        factor_.table.push_back(t.record);
-        if (output) output->record_trial(*simulation_, t.record, t.state);
-        if (callbacks.on_trial) callbacks.on_trial(t.record);
-        if (t.record.stands) {
-            if (!stood || f > stood->record.factor) {
-                if (stood) below = std::move(stood);
-                stood = std::move(t);
-            }
-        } else if (!fell || f < fell->record.factor) {
-            fell = std::move(t);
+bool StrengthReductionSearch::try_factor(double f, Bracket& bracket, RunOutput* output, const Callbacks& callbacks) {
+    Trial t = run_trial(f, callbacks);
+    if (t.cancelled) return false;
+    factor_.table.push_back(t.record);
+    if (output) output->record_trial(*simulation_, t.record, t.state);
+    if (callbacks.on_trial) callbacks.on_trial(t.record);
+    if (t.record.stands) {
+        if (!bracket.stood || f > bracket.stood->record.factor) {
+            if (bracket.stood) bracket.below = std::move(bracket.stood);
+            bracket.stood = std::move(t);
         }
-        return true;
-    };
+    } else if (!bracket.fell || f < bracket.fell->record.factor) {
+        bracket.fell = std::move(t);
+    }
+    return true;
+}
+
+void StrengthReductionSearch::search(Bracket& b, const AnalysisSettings& settings, RunOutput* output,
+                                     const Callbacks& callbacks) {
     auto trials_left = [&] { return static_cast<int>(factor_.table.size()) < settings.max_trials; };
-    bool cancelled = !try_factor(1.0);
+    b.cancelled = !try_factor(1.0, b, output, callbacks);
     // Bracket: up from a factor that stands, down from one that does not.
-    while (!cancelled && (!stood || !fell) && trials_left()) {
-        if (stood && stood->record.factor >= largest_factor) break;
-        if (fell && fell->record.factor <= smallest_factor) break;
-        cancelled = !try_factor(stood ? stood->record.factor * bracket_growth : fell->record.factor / bracket_growth);
+    while (!b.cancelled && (!b.stood || !b.fell) && trials_left()) {
+        if (b.stood && b.stood->record.factor >= largest_factor) break;
+        if (b.fell && b.fell->record.factor <= smallest_factor) break;
+        const double next = b.stood ? b.stood->record.factor * bracket_growth : b.fell->record.factor / bracket_growth;
+        b.cancelled = !try_factor(next, b, output, callbacks);
     }
     // Bisect.
-    while (!cancelled && stood && fell && trials_left() &&
-           fell->record.factor - stood->record.factor > settings.factor_tolerance * stood->record.factor)
-        cancelled = !try_factor(0.5 * (stood->record.factor + fell->record.factor));
+    while (!b.cancelled && b.stood && b.fell && trials_left() &&
+           b.fell->record.factor - b.stood->record.factor > settings.factor_tolerance * b.stood->record.factor)
+        b.cancelled = !try_factor(0.5 * (b.stood->record.factor + b.fell->record.factor), b, output, callbacks);
 
     factor_.trials = static_cast<int>(factor_.table.size());
-    if (stood) factor_.value = factor_.converged = stood->record.factor;
-    if (fell) factor_.not_converged = fell->record.factor;
-    factor_.found = stood && fell &&
-                    fell->record.factor - stood->record.factor <= settings.factor_tolerance * stood->record.factor * (1 + 1e-12);
+    if (b.stood) factor_.value = factor_.converged = b.stood->record.factor;
+    if (b.fell) factor_.not_converged = b.fell->record.factor;
+    factor_.found = b.stood && b.fell &&
+                    b.fell->record.factor - b.stood->record.factor <=
+                        settings.factor_tolerance * b.stood->record.factor * (1 + 1e-12);
+}
 
-    // The critical pair: the last state that stood and the first that did not. The latter
-    // carries the mechanism engineers look at: the increments of displacement and plastic strain
-    // from the next lower factor that stood to the last one — both in equilibrium under the full
-    // load, so the increments concentrate on the slip surface. (The trial that did not stand
-    // stopped at part of its load, so its difference to the last that stood mixes load and
-    // strength.) Without a lower factor that stood, the increments from the construction's end.
-    if (output) {
-        int number = simulation_->state().step;
-        if (stood) {
-            VtuFields extra;
-            extra.field_data.push_back({"strength_factor", 1, {stood->record.factor}});
-            output->save_state(*simulation_, stood->state, ++number, last_time + stood->record.factor, extra);
-        }
-        if (fell) {
-            VtuFields extra;
-            extra.field_data.push_back({"strength_factor", 1, {fell->record.factor}});
-            if (stood) {
-                // (A trial's displacements are reported from its start: the construction's end.)
-                Eigen::VectorXd du = stood->state.reported_displacement();
-                std::vector<double> plastic = stood->state.plastic_strain;
-                const SimulationState* from = below ? &below->state : start_ ? &start_->state : nullptr;
-                if (below) du -= below->state.reported_displacement();
-                if (from)
-                    for (std::size_t e = 0; e < plastic.size() && e < from->plastic_strain.size(); ++e)
-                        plastic[e] -= from->plastic_strain[e];
-                VtuField increment{"displacement_increment", 3, {}};
-                for (Eigen::Index i = 0; i + 1 < du.size(); i += 2)
-                    increment.values.insert(increment.values.end(), {du[i], du[i + 1], 0.0});
-                VtuField strain{"plastic_strain_increment", 1, {}};
-                strain.values = plastic;
-                extra.point_data.push_back(std::move(increment));
-                extra.cell_data.push_back(std::move(strain));
-            }
-            output->save_state(*simulation_, fell->state, ++number, last_time + fell->record.factor, extra);
-        }
+// The critical pair: the last state that stood and the first that did not. The latter carries
+// the mechanism engineers look at: the increments of displacement and plastic strain from the
+// next lower factor that stood to the last one — both in equilibrium under the full load, so the
+// increments concentrate on the slip surface. (The trial that did not stand stopped at part of
+// its load, so its difference to the last that stood mixes load and strength.) Without a lower
+// factor that stood, the increments from the construction's end.
+void StrengthReductionSearch::save_critical_pair(const Bracket& b, RunOutput* output, double last_time) {
+    int number = simulation_->state().step;
+    if (b.stood) {
+        VtuFields extra;
+        extra.field_data.push_back({"strength_factor", 1, {b.stood->record.factor}});
+        output->save_state(*simulation_, b.stood->state, ++number, last_time + b.stood->record.factor, extra);
     }
+    if (!b.fell) return;
+    VtuFields extra;
+    extra.field_data.push_back({"strength_factor", 1, {b.fell->record.factor}});
+    if (b.stood) {
+        // (A trial's displacements are reported from its start: the construction's end.)
+        Eigen::VectorXd du = b.stood->state.reported_displacement();
+        std::vector<double> plastic = b.stood->state.plastic_strain;
+        const SimulationState* from = b.below ? &b.below->state : start_ ? &start_->state : nullptr;
+        if (b.below) du -= b.below->state.reported_displacement();
+        if (from)
+            for (std::size_t e = 0; e < plastic.size() && e < from->plastic_strain.size(); ++e)
+                plastic[e] -= from->plastic_strain[e];
+        VtuField increment{"displacement_increment", 3, {}};
+        for (Eigen::Index i = 0; i + 1 < du.size(); i += 2)
+            increment.values.insert(increment.values.end(), {du[i], du[i + 1], 0.0});
+        VtuField strain{"plastic_strain_increment", 1, {}};
+        strain.values = plastic;
+        extra.point_data.push_back(std::move(increment));
+        extra.cell_data.push_back(std::move(strain));
+    }
+    output->save_state(*simulation_, b.fell->state, ++number, last_time + b.fell->record.factor, extra);
+}
 
-    RunEnd end;
-    if (cancelled) {
-        end = {RunStatus::Cancelled, "cancelled by the user after " + std::to_string(factor_.table.size()) + " trials"};
-    } else if (factor_.found) {
-        end = {RunStatus::Completed, "factor of safety " + factor_text(factor_.value) + " (stands at " +
-                                         factor_text(factor_.converged) + ", not at " +
-                                         factor_text(factor_.not_converged) + "; " +
-                                         std::to_string(factor_.trials) + " trials)"};
-    } else if (stood && !fell) {
-        end = {RunStatus::Failed, "the model still stands with its strengths divided by " +
-                                      factor_text(stood->record.factor) + ": no factor of safety within the search"};
-    } else if (fell && !stood) {
-        end = {RunStatus::Failed, "the model does not stand even with its strengths divided by " +
-                                      factor_text(fell->record.factor) + " (" + fell->record.message + ")"};
-    } else {
-        end = {RunStatus::Failed, "the search used its " + std::to_string(settings.max_trials) +
-                                      " trials before the bracket [" + factor_text(factor_.converged) + ", " +
-                                      factor_text(factor_.not_converged) + "] was within the tolerance"};
-    }
-    return end;
+RunEnd StrengthReductionSearch::ending(const Bracket& b, const AnalysisSettings& settings) const {
+    if (b.cancelled)
+        return {RunStatus::Cancelled, "cancelled by the user after " + std::to_string(factor_.table.size()) + " trials"};
+    if (factor_.found)
+        return {RunStatus::Completed, "factor of safety " + factor_text(factor_.value) + " (stands at " +
+                                          factor_text(factor_.converged) + ", not at " +
+                                          factor_text(factor_.not_converged) + "; " + std::to_string(factor_.trials) +
+                                          " trials)"};
+    if (b.stood && !b.fell)
+        return {RunStatus::Failed, "the model still stands with its strengths divided by " +
+                                       factor_text(b.stood->record.factor) + ": no factor of safety within the search"};
+    if (b.fell && !b.stood)
+        return {RunStatus::Failed, "the model does not stand even with its strengths divided by " +
+                                       factor_text(b.fell->record.factor) + " (" + b.fell->record.message + ")"};
+    return {RunStatus::Failed, "the search used its " + std::to_string(settings.max_trials) +
+                                   " trials before the bracket [" + factor_text(factor_.converged) + ", " +
+                                   factor_text(factor_.not_converged) + "] was within the tolerance"};
 }
 
 }  // namespace mcdda

@@ -53,7 +53,14 @@ public:
 
 private:
     struct Trial;
+    struct Bracket;
     Trial run_trial(double factor, const Callbacks& callbacks);
+    /// Runs a trial and places it in the bracket; false when it was cancelled.
+    bool try_factor(double factor, Bracket& bracket, RunOutput* output, const Callbacks& callbacks);
+    /// Brackets the factor, then bisects the bracket to the tolerance.
+    void search(Bracket& bracket, const AnalysisSettings& settings, RunOutput* output, const Callbacks& callbacks);
+    void save_critical_pair(const Bracket& bracket, RunOutput* output, double last_time);
+    RunEnd ending(const Bracket& bracket, const AnalysisSettings& settings) const;
     void add_timings(const RunTimings& t);
 
     const Preprocessed& model_;

@@ -39,3 +39,43 @@ TEST(Incline, BlockStaysWhenFrictionExceedsTheSlope) {
     std::cout << "incline (φ = 40.1°): the block moved " << moved * 1000.0 << " mm in 1 s\n";
     EXPECT_LT(moved, 1e-3);
 }
+
+// The same block in a static analysis: whether it stands must not depend on how many steps
+// gravity is applied in (static DDA carries part of each increment by its mass term; each step
+// relaxes to equilibrium at its loads). The equilibrium verdict uses the run's own limit,
+// analysis.equilibrium_ratio.
+TEST(Incline, StaticVerdictDoesNotDependOnTheStepCount) {
+    double reference_uy = 0.0;
+    for (int steps : {3, 5, 10, 100})
+        for (int phi : {44, 45, 46, 48}) {
+            const std::vector<std::string> o = {"/analysis/type=\"static\"", "/analysis/steps=" + std::to_string(steps),
+                                                "/joint_materials/0/friction_angle=" + std::to_string(phi)};
+            auto run = mcdda::test::run_example("incline-stable.json", o);
+            ASSERT_TRUE(run.simulation);
+            const SimulationState& s = run.simulation->state();
+            const double uy = run.history.points.back()[0].y;
+            std::cout << steps << " steps, φj = " << phi << "°: unbalanced-force ratio " << s.unbalanced_ratio
+                      << ", block uy " << uy * 1e3 << " mm\n";
+            EXPECT_EQ(s.step, steps);
+            EXPECT_LT(s.unbalanced_ratio, run.simulation->analysis().equilibrium_ratio) << steps << " steps, " << phi;
+            // It settles elastically where it stands (0.065 mm): the same for every step count.
+            if (reference_uy == 0.0) reference_uy = uy;
+            EXPECT_LT(uy, 0.0);
+            EXPECT_NEAR(uy, reference_uy, 0.02 * std::fabs(reference_uy)) << steps << " steps, " << phi;
+        }
+}
+
+// And a block that must slide is out of balance by the share of its weight friction cannot
+// hold, whatever the step count: (sin 40° − cos 40° tan φj) of it.
+TEST(Incline, StaticSlidingBlockIsUnbalancedAtEveryStepCount) {
+    for (int steps : {3, 10})
+        for (int phi : {30, 38}) {
+            const std::vector<std::string> o = {"/analysis/type=\"static\"", "/analysis/steps=" + std::to_string(steps),
+                                                "/joint_materials/0/friction_angle=" + std::to_string(phi)};
+            auto run = mcdda::test::run_example("incline-stable.json", o);
+            ASSERT_TRUE(run.simulation);
+            const double ratio = run.simulation->state().unbalanced_ratio;
+            std::cout << steps << " steps, φj = " << phi << "°: unbalanced-force ratio " << ratio << "\n";
+            EXPECT_GT(ratio, run.simulation->analysis().equilibrium_ratio) << steps << " steps, " << phi;
+        }
+}

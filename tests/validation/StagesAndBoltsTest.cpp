@@ -90,7 +90,7 @@ TEST(Stages, AStageWithATargetRatioEndsOnceReleasedAndInEquilibrium) {
     // The excavation stage plans 10 steps and releases over 5; at equilibrium after its release
     // it ends there: 1 + 5 steps in all.
     auto run = test::run_example("salencon-tunnel-staged.json",
-                                 {"/mesh/local/0/size=0.2", "/stages/1/target_ratio=1e-4"});
+                                 {"/mesh/local/0/size=0.2", "/stages/1/target_ratio=1e-3"});
     ASSERT_TRUE(run.simulation);
     const Simulation& s = *run.simulation;
     EXPECT_TRUE(s.finished());

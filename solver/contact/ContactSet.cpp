@@ -1,0 +1,102 @@
+#include "contact/ContactSet.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mcdda {
+
+ContactSet::ContactSet(std::vector<Contact> contacts,
+                       const std::function<ContactKinematics(const Contact&)>& kinematics_of, const Model& model,
+                       const MeshTopology& topology, double penalty)
+    : contacts_(std::move(contacts)), flips_(contacts_.size(), 0) {
+    kinematics_.reserve(contacts_.size());
+    properties_.reserve(contacts_.size());
+    for (const Contact& c : contacts_) {
+        kinematics_.push_back(kinematics_of(c));
+        properties_.push_back(contact_properties(c, kinematics_.back(), model, topology, penalty));
+    }
+}
+
+bool ContactSet::any_closed() const {
+    return std::any_of(contacts_.begin(), contacts_.end(), [](const Contact& c) { return c.state != ContactState::Open; });
+}
+
+int ContactSet::count(ContactState state) const {
+    return static_cast<int>(
+        std::count_if(contacts_.begin(), contacts_.end(), [state](const Contact& c) { return c.state == state; }));
+}
+
+Vector6 ContactSet::local(std::size_t i, const Eigen::VectorXd& d) const {
+    Vector6 v;
+    for (int a = 0; a < 3; ++a)
+        for (int dir = 0; dir < 2; ++dir) v[2 * a + dir] = d[2 * kinematics_[i].nodes[a] + dir];
+    return v;
+}
+
+void ContactSet::add_forces(const Eigen::VectorXd& d, Eigen::VectorXd& force) const {
+    Matrix6 kc;
+    Vector6 fc;
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+        if (contacts_[i].state == ContactState::Open) continue;
+        contact_terms(contacts_[i], kinematics_[i], properties_[i], kc, fc);
+        fc.noalias() -= kc * local(i, d);
+        for (int a = 0; a < 3; ++a)
+            for (int dir = 0; dir < 2; ++dir) force[2 * kinematics_[i].nodes[a] + dir] += fc[2 * a + dir];
+    }
+}
+
+void ContactSet::add_matrices(SymmetricSystem& system, int first_group) const {
+    Matrix6 kc;
+    Vector6 fc;
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+        if (contacts_[i].state == ContactState::Open) continue;
+        contact_terms(contacts_[i], kinematics_[i], properties_[i], kc, fc);
+        system.add(first_group + static_cast<int>(i), kc.data());
+    }
+}
+
+ContactSet::Update ContactSet::update_states(const Eigen::VectorXd& d, bool equilibrium_only) {
+    Update u;
+    marginal_.clear();
+    for (const Contact& c : contacts_) u.largest_force = std::max(u.largest_force, std::fabs(c.normal_force));
+    const double force_tolerance = 1e-3 * u.largest_force;
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+        const Contact before = contacts_[i];
+        const double normal_used = std::max(0.0, before.normal_force);
+        double change_force = 0.0;
+        StateChange change =
+            update_contact_state(contacts_[i], kinematics_[i], properties_[i], local(i, d), force_tolerance, &change_force);
+        // Cycling (stick–slip or open–close at its limit): its last change is kept only if the
+        // try ends without other changes.
+        if (change == StateChange::Significant && ++flips_[i] > 2) {
+            const bool stick_slip = before.state != ContactState::Open && contacts_[i].state != ContactState::Open;
+            if (equilibrium_only && stick_slip && contacts_[i].state == ContactState::Locked) {
+                contacts_[i].state = ContactState::Sliding;
+                contacts_[i].slip = before.slip;
+                contacts_[i].shear_spring = before.shear_spring;
+                change = StateChange::None;
+            } else if (!(equilibrium_only && stick_slip)) {
+                change = StateChange::Marginal;
+                u.cycling_force = std::max(u.cycling_force, change_force);
+            }
+        }
+        if (change == StateChange::Significant) ++u.changes;
+        if (change == StateChange::Marginal) marginal_.emplace_back(i, before);
+        if (before.state == ContactState::Sliding && contacts_[i].state == ContactState::Sliding) {
+            u.friction_used += normal_used * properties_[i].tan_friction;
+            u.friction_change +=
+                std::fabs(std::max(0.0, contacts_[i].normal_force) - normal_used) * properties_[i].tan_friction;
+        }
+    }
+    return u;
+}
+
+void ContactSet::undo_marginal() {
+    for (const auto& [i, before] : marginal_) {
+        contacts_[i].state = before.state;
+        contacts_[i].slip = before.slip;
+        contacts_[i].shear_spring = before.shear_spring;
+    }
+}
+
+}  // namespace mcdda

@@ -1,0 +1,68 @@
+#pragma once
+/// \file ConvergenceMonitor.hpp
+/// The verdicts of the equilibrium iterations of one load increment, iteration by iteration:
+/// converged, still progressing, or failed (diverging, stalled, a mechanism, out of iterations).
+/// Pure bookkeeping of norms, so each rule can be read and tested on its own.
+
+#include <string>
+
+namespace mcdda {
+
+class ConvergenceMonitor {
+public:
+    /// `tolerance`: of the out-of-balance force relative to the force scale, and of the last
+    /// correction relative to the increment. `max_iterations`: the cap of one try.
+    /// `mechanism_displacement`: an increment beyond it, with material yielding, is a mechanism.
+    ConvergenceMonitor(double tolerance, int max_iterations, double mechanism_displacement);
+
+    /// One iteration's numbers: the largest out-of-balance force (`norm`) and its `scale`, the
+    /// last correction and the increment's `yardstick`, the largest increment and the
+    /// integration points yielding.
+    struct Iteration {
+        int k = 0;
+        double norm = 0.0, scale = 1.0;
+        double last_correction = 0.0, yardstick = 1.0;
+        double largest = 0.0;
+        int yielding = 0;
+        bool newton = false;  ///< the tangent is in use (Newton), not the elastic matrix
+    };
+
+    /// Converged: the force is small against the forces in play, and so is the last correction
+    /// against the increment (a slow iteration leaves a small force but a large remaining
+    /// displacement), or the iteration is linear and its one correction solved it exactly.
+    /// `elastic_matrix`: the matrix in force is the elastic one of the current contact states.
+    bool converged(const Iteration& it, bool elastic_matrix);
+
+    enum class Verdict { Continue, Diverging, Stalled, Mechanism, Capped };
+    /// Records the iteration and judges it (see the rules in the .cpp).
+    Verdict assess(const Iteration& it);
+
+    /// Non-associated flow: once the elastic iteration stalls or reaches its cap with material
+    /// yielding, it has done what it can, and Newton with the exact (unsymmetric) tangent takes
+    /// over. Close to equilibrium, where the active yield planes no longer change, that converges
+    /// quadratically, so an increment that can be carried is not declared uncarried for a force
+    /// just above the tolerance.
+    bool hands_over_to_newton(Verdict v, const Iteration& it) const {
+        return (v == Verdict::Stalled || v == Verdict::Capped) && !polishing_ && it.yielding > 0;
+    }
+    /// Newton with the exact unsymmetric tangent takes over after iteration k (the polish of a
+    /// non-associated model): a fresh stall window and a cap of its own.
+    void start_polishing(const Iteration& it);
+    bool polishing() const { return polishing_; }
+
+    /// Why a failed try failed, in words for the user.
+    std::string why(Verdict v, const Iteration& it) const;
+
+private:
+    double tolerance_;
+    int max_iterations_;
+    double mechanism_displacement_;
+    double first_norm_ = 0.0;
+    double best_norm_, best_correction_;
+    int best_at_ = 0, best_correction_at_ = 0;
+    bool polishing_ = false;
+    bool first_linear_ = false;  ///< nothing yielded at the first iteration
+    int polish_from_ = 0;
+};
+
+}  // namespace mcdda

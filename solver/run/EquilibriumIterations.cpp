@@ -1,0 +1,237 @@
+// The equilibrium iterations of one load increment for fixed contact states (Simulation.hpp's
+// file comment): assemble the out-of-balance force → converged? → factorise → correct → line
+// search, each a short function below.
+
+#include "run/ConvergenceMonitor.hpp"
+#include "run/Simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace mcdda {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// Below this contraction of the out-of-balance force per iteration the factor in use is kept
+/// (a back-substitution is much cheaper than a factorisation); above it the tangent is
+/// refactorised. Measured on the Prandtl footing and Salençon tunnel (docs/plasticity.md).
+constexpr double keep_factor_contraction = 0.25;
+/// Corrections Anderson acceleration mixes (see correction).
+constexpr int anderson_depth = 5;
+/// A displacement increment this many times the per-step limit, with material yielding, is a
+/// mechanism (ConvergenceMonitor).
+constexpr double mechanism_displacements = 20.0;
+/// Halvings of a Newton correction the line search may try.
+constexpr int line_search_cuts = 6;
+
+}  // namespace
+
+Eigen::VectorXd Simulation::residual(const Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
+                                     const std::vector<BoltLink>& bolts, std::vector<ReturnResult>& returned,
+                                     ElementMatrix matrix, ElementAssembly::Evaluation* evaluation,
+                                     Eigen::VectorXd* internal_forces) {
+    Eigen::VectorXd internal;
+    auto t0 = Clock::now();
+    const ElementAssembly::Evaluation eval =
+        elements_.evaluate(d, state_.points, returned, internal, matrix, matrix == ElementMatrix::None ? nullptr : &system_);
+    timings_.plasticity += seconds_since(t0);
+    if (evaluation) *evaluation = eval;
+    t0 = Clock::now();
+    Eigen::VectorXd r = loads - internal;
+    contacts.add_forces(d, r);
+    for (const BoltLink& b : bolts) b.add_forces(d, r);
+    if (internal_forces) *internal_forces = std::move(internal);
+    timings_.assembly += seconds_since(t0);
+    return r;
+}
+
+Simulation::Balance Simulation::balance_at(const Eigen::VectorXd& d, const Eigen::VectorXd& loads,
+                                           const ContactSet& contacts, const std::vector<BoltLink>& bolts,
+                                           ElementMatrix matrix) {
+    if (matrix != ElementMatrix::None) {
+        // Non-associated flow: the exact tangent is unsymmetric (LU); everything else is symmetric.
+        system_.set_unsymmetric(matrix == ElementMatrix::Tangent && !elements_.symmetric_tangent());
+        system_.clear_values();
+    }
+    Balance b;
+    b.residual = residual(d, loads, contacts, bolts, returned_, matrix, &b.evaluation);
+    const auto t0 = Clock::now();
+    b.rhs.resize(bc_.equation_count);
+    for (Eigen::Index dof = 0; dof < b.residual.size(); ++dof)
+        if (bc_.equation[dof] >= 0) {
+            b.rhs[bc_.equation[dof]] = b.residual[dof];
+            b.norm = std::max(b.norm, std::fabs(b.residual[dof]));
+            b.norm2 += b.residual[dof] * b.residual[dof];
+        }
+    timings_.assembly += seconds_since(t0);
+    return b;
+}
+
+bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, const std::vector<BoltLink>& bolts) {
+    const auto t0 = Clock::now();
+    const int elements = static_cast<int>(mesh_.triangles.size());
+    contacts.add_matrices(system_, elements);
+    for (std::size_t i = 0; i < bolts.size(); ++i) {
+        const Eigen::Matrix<double, 12, 12> kb = bolts[i].matrix();
+        system_.add(elements + static_cast<int>(contacts.size() + i), kb.data());
+    }
+    timings_.assembly += seconds_since(t0);
+    // An elastic matrix may keep a held elastic factor (of the last step's geometry, or of other
+    // contact states) while iterating against the new matrix costs less than a factorisation
+    // (SymmetricSystem::factorize); a tangent changes too much for that.
+    try {
+        system_.factorize(matrix == ElementMatrix::Elastic && !held_.tangent);
+    } catch (const SingularSystem&) {
+        // A tangent that is not positive definite (a mechanism forming): the caller goes on with
+        // the elastic matrix.
+        if (matrix != ElementMatrix::Tangent) throw;
+        return false;
+    }
+    held_.tangent = matrix == ElementMatrix::Tangent;
+    held_.closed = closed_signature(contacts.contacts(), bolts);
+    return true;
+}
+
+double Simulation::line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta, const Eigen::VectorXd& loads,
+                               const ContactSet& contacts, const std::vector<BoltLink>& bolts, const Balance& at,
+                               double tolerance, double scale, bool least_squares) {
+    // Backtracking on the out-of-balance force: a full Newton correction through a softening
+    // (perfectly plastic) tangent overshoots and can spread yield over the whole model.
+    double step = 1.0;
+    for (int cut = 0; cut < line_search_cuts; ++cut) {
+        const Eigen::VectorXd r = residual(d + step * delta, loads, contacts, bolts, returned_, ElementMatrix::None);
+        double norm = 0.0, norm2 = 0.0;
+        for (Eigen::Index dof = 0; dof < r.size(); ++dof)
+            if (bc_.equation[dof] >= 0) {
+                norm = std::max(norm, std::fabs(r[dof]));
+                norm2 += r[dof] * r[dof];
+            }
+        if (norm <= tolerance * scale) break;
+        if (least_squares ? norm2 <= at.norm2 : norm <= at.norm) break;
+        step *= 0.5;
+    }
+    return step;
+}
+
+ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, const Eigen::VectorXd& d,
+                                                        double load_scale, double last_correction, bool newton) const {
+    ConvergenceMonitor::Iteration it;
+    it.k = k;
+    it.norm = b.norm;
+    it.scale = std::max({b.evaluation.force_scale, load_scale, 1e-30});
+    it.last_correction = last_correction;
+    // Not below a hundredth of the displacement so far: in a step that only re-equilibrates, the
+    // increment is round-off and would never settle.
+    it.yardstick = std::max({d.cwiseAbs().maxCoeff(), 0.01 * state_.displacement.cwiseAbs().maxCoeff(),
+                             1e-12 * topology_.model_size});
+    it.largest = d.cwiseAbs().maxCoeff();
+    it.yielding = b.evaluation.yielding;
+    it.newton = newton;
+    return it;
+}
+
+bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
+                             const std::vector<BoltLink>& bolts, bool& factor_valid, Attempt& attempt) {
+    const double tolerance = model_.analysis.plastic_tolerance;
+    const double load_scale = loads.cwiseAbs().maxCoeff();
+    ConvergenceMonitor monitor(tolerance, model_.analysis.max_plastic_iterations,
+                               mechanism_displacements * displacement_limit_);
+    AndersonMixing anderson(anderson_depth);
+    double previous = std::numeric_limits<double>::infinity(), last_correction = 0.0;
+    bool newton = uses_newton();
+    // The matrix in force is the elastic one (a tangent where nothing yields is one too); a held
+    // tangent factor is not.
+    bool elastic_matrix = factor_valid && !held_.tangent;
+    for (int k = 0;; ++k) {
+        // Refactorise when K is stale: contacts changed, or the last iteration contracted slowly.
+        const ElementMatrix matrix =
+            factor_valid ? ElementMatrix::None : (newton ? ElementMatrix::Tangent : ElementMatrix::Elastic);
+        const Balance b = balance_at(d, loads, contacts, bolts, matrix);
+        attempt.yielding = b.evaluation.yielding;
+        const ConvergenceMonitor::Iteration it = iteration_of(k, b, d, load_scale, last_correction, newton);
+        if (monitor.converged(it, elastic_matrix)) {
+            attempt.residual = b.residual;
+            return true;
+        }
+        observe_iteration(it.norm / it.scale, tolerance, it.yielding);
+        const ConvergenceMonitor::Verdict verdict = monitor.assess(it);
+        if (uses_unsymmetric_newton() && monitor.hands_over_to_newton(verdict, it)) {
+            monitor.start_polishing(it);
+            newton = true;
+            factor_valid = false;
+            anderson.reset();
+            --k;
+            continue;
+        }
+        if (verdict != ConvergenceMonitor::Verdict::Continue) {
+            attempt.why = monitor.why(verdict, it);
+            return false;
+        }
+        if (matrix != ElementMatrix::None) {
+            if (!factorize(matrix, contacts, bolts)) {
+                newton = false;  // on with the elastic matrix, from the same iterate
+                --k;
+                continue;
+            }
+            factor_valid = true;
+            elastic_matrix = matrix == ElementMatrix::Elastic || it.yielding == 0;
+        }
+        const Eigen::VectorXd delta = correction(d, b, newton, tolerance * it.scale, contacts.any_closed(), anderson);
+        ++attempt.iterations;
+        // No line search with the elastic matrix (the initial-stress iteration): its full steps
+        // converge while the largest nodal force may rise on the way.
+        const bool search = newton && (it.yielding > 0 || matrix == ElementMatrix::Tangent);
+        const double step = search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale, monitor.polishing()) : 1.0;
+        d += step * delta;
+        last_correction = step * delta.cwiseAbs().maxCoeff();
+        // The factor is kept while it contracts the out-of-balance force well enough.
+        if (k > 0 && newton && b.norm > keep_factor_contraction * previous) factor_valid = false;
+        previous = b.norm;
+    }
+}
+
+Eigen::VectorXd Simulation::correction(const Eigen::VectorXd& d, const Balance& b, bool newton, double force_tolerance,
+                                       bool any_closed, AndersonMixing& anderson) {
+    Eigen::VectorXd delta = solve_reduced(b.rhs);
+    // With the elastic matrix (non-associated flow, or a tangent that is not positive definite)
+    // the iteration is a fixed point d ← d + K⁻¹R(d) that contracts slowly once much of the
+    // model yields: Anderson acceleration (Walker & Ni 2011) mixes the last corrections; it
+    // costs a small least-squares problem per iteration. Once the force is within tolerance only
+    // the displacement is settling: plain corrections then where contacts are closed (mixed ones
+    // wander along directions the force hardly sees, such as a loosened block); without closed
+    // contacts mixing goes on (plain corrections of a non-associated plastic zone can drift for
+    // hundreds of iterations when no mass term damps them, as in a small-strain static
+    // analysis: Salençon's tunnel).
+    if (!newton && b.evaluation.yielding > 0 && (b.norm > force_tolerance || !any_closed))
+        return anderson.next(d, delta);
+    anderson.reset();
+    return delta;
+}
+
+void Simulation::observe_iteration(double out_of_balance, double tolerance, int yielding) {
+    if (!iteration_observer_) return;
+    ++iterating_.iteration;
+    iterating_.out_of_balance = out_of_balance;
+    iterating_.tolerance = tolerance;
+    iterating_.yielding = yielding;
+    iteration_observer_(iterating_);
+}
+
+Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs) {
+    const auto start = Clock::now();
+    const double factorizing = system_.factorization_seconds();
+    const Eigen::VectorXd solution = system_.solve(rhs);
+    Eigen::VectorXd d(state_.displacement.size());
+    for (Eigen::Index dof = 0; dof < d.size(); ++dof) d[dof] = bc_.equation[dof] >= 0 ? solution[bc_.equation[dof]] : 0.0;
+    // (less a factorisation the solve fell back to: it counts as one)
+    timings_.solve += seconds_since(start) - (system_.factorization_seconds() - factorizing);
+    return d;
+}
+
+}  // namespace mcdda

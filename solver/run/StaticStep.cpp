@@ -1,0 +1,226 @@
+// A static step (Simulation.hpp's file comment): the step's load in increments, each tried and
+// then accepted, applied in a smaller share, or retried with a smaller Δt; a static DDA step then
+// relaxes to equilibrium at its loads.
+
+#include "run/Simulation.hpp"
+
+#include "contact/ContactDetection.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace mcdda {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// A plastic step of a model with contacts is a collapse only below this fraction of the set Δt.
+constexpr double plastic_collapse_time_step = 1e-4;
+constexpr int max_time_step_cuts = 30;
+/// Relaxation increments a static step may take, and how many may pass without halving the
+/// out-of-balance ratio before the state counts as moving (a mechanism: the step ends unbalanced).
+constexpr int max_relaxation_increments = 60;
+constexpr int relaxation_window = 12;
+
+std::string describe_position(double position) {
+    const int step = static_cast<int>(std::floor(position + 1e-12));
+    const double fraction = position - step;
+    if (fraction < 1e-9) return "step " + std::to_string(step);
+    return "step " + std::to_string(step + 1) + " at " + std::to_string(static_cast<int>(std::round(100 * fraction))) +
+           " % of its load increment";
+}
+
+}  // namespace
+
+std::vector<Contact> Simulation::detect_step_contacts(const Eigen::VectorXd& predicted) {
+    const auto t0 = Clock::now();
+    std::vector<Contact> contacts = detect_contacts(element_nodes(), mesh_, topology_, 2.5 * displacement_limit_,
+                                                    state_.contacts, predicted, contact_tolerance_);
+    drop_absent(contacts);
+    timings_.contact += seconds_since(t0);
+    return contacts;
+}
+
+double Simulation::time_step_cut(const Attempt& attempt, double largest, double singular_factor) const {
+    // Too large a step for the contact linearisation: Δt scaled so that the next one fits
+    // (displacements grow with Δt²); contacts that do not settle: half.
+    if (attempt.outcome == Outcome::Converged) return std::clamp(0.9 * std::sqrt(displacement_limit_ / largest), 0.1, 0.5);
+    return attempt.outcome == Outcome::Singular ? singular_factor : 0.5;
+}
+
+Simulation::StaticResponse Simulation::judge_static(const Attempt& attempt, double increment, double dt,
+                                                    double largest) const {
+    const double floor = model_.analysis.min_load_fraction;
+    const bool above_floor = increment > floor * (1.0 + 1e-9);
+    const bool too_large = attempt.outcome == Outcome::Converged && largest > displacement_limit_;
+    const bool equilibrium_only = is_equilibrium_only();
+    // Static DDA (deformed geometry) has its mass term: a block set loose by a wrong guess of its
+    // contacts' states (it flies off, or its iterations fail while some rock elsewhere yields)
+    // is held by inertia at a smaller Δt and settles in the relaxation (relax), as in Shi's
+    // static DDA. Only once Δt is tiny, or without contacts, is it a load question.
+    const bool any_closed = std::any_of(attempt.contacts.begin(), attempt.contacts.end(),
+                                        [](const Contact& c) { return c.state != ContactState::Open; });
+    const bool contact_question =
+        !equilibrium_only && (too_large || (attempt.outcome != Outcome::Converged && any_closed &&
+                                            dt >= plastic_collapse_time_step * model_.analysis.time_step));
+    // A matrix that is singular while the material yields is a mechanism forming: a load
+    // question too (a block without supports and yielding nothing gets a smaller Δt below).
+    const bool plastic_failure = !contact_question && (attempt.outcome == Outcome::NotConverged ||
+                                                       (attempt.outcome == Outcome::Singular && attempt.yielding > 0) ||
+                                                       (too_large && attempt.yielding > 0));
+    if (plastic_failure && !(too_large && increment <= floor))
+        return above_floor ? StaticResponse::SmallerLoad : StaticResponse::Collapse;
+    // Small-strain static: there is no mass term, so a smaller Δt changes nothing; an increment
+    // beyond the displacement limit (which guards contact detection) takes a smaller share of
+    // the load instead, and is accepted at the floor.
+    if (too_large && attempt.yielding == 0 && equilibrium_only && above_floor) return StaticResponse::SmallerShare;
+    // Contacts that do not settle, a block held by nothing but inertia, or a step too large for
+    // the contact linearisation: a smaller Δt (Shi's static DDA). Plasticity is not involved.
+    if (contact_question || (attempt.outcome == Outcome::Singular && attempt.yielding == 0) ||
+        attempt.outcome == Outcome::Unsettled)
+        return StaticResponse::SmallerTimeStep;
+    return StaticResponse::Accept;
+}
+
+Simulation::Attempt Simulation::try_static_increment(double increment) {
+    const double from = state_.step + state_.step_fraction;
+    const double to = from + increment;
+    const double time = state_.time + increment * model_.analysis.time_step;  // follows the load position
+    iterating_.load_fraction = to - state_.step;
+    std::vector<Contact> contacts = detect_step_contacts(Eigen::VectorXd());
+    // The loads at the increment's start matter only when it is a part of what remains.
+    const double lambda = increment / (1.0 - state_.step_fraction);
+    Eigen::VectorXd start_external;
+    if (lambda < 1.0) start_external = applied_forces(from, state_.time);
+    return solve_increments(applied_forces(to, time), lambda < 1.0 ? &start_external : nullptr, lambda,
+                            state_.time_step, std::move(contacts), prescribed_increments(to, time));
+}
+
+StepReport Simulation::advance_static() {
+    StepReport report;
+    report.load_increments = 0;
+    const double floor = model_.analysis.min_load_fraction;
+    LoadSteps steps{1.0 - state_.step_fraction};
+    while (true) {
+        steps.increment = std::min(steps.increment, 1.0 - state_.step_fraction);
+        const double dt = state_.time_step, from = state_.step + state_.step_fraction;
+        Attempt attempt = try_static_increment(steps.increment);
+        report.plastic_iterations += attempt.iterations;
+        const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
+        switch (judge_static(attempt, steps.increment, dt, largest)) {
+            case StaticResponse::SmallerLoad:
+                // Smaller load increments, never a smaller Δt: inertia must not carry the load.
+                steps.failed_end = from + steps.increment;
+                steps.increment = std::max(floor, 0.5 * steps.increment);
+                ++timings_.load_cuts;
+                continue;
+            case StaticResponse::Collapse:
+                // The iterations spent count, whether or not the step was carried.
+                timings_.iterations += report.plastic_iterations;
+                timings_.max_iterations = std::max(timings_.max_iterations, report.plastic_iterations);
+                throw PlasticCollapse("the load could not be carried beyond " + describe_position(from) + " (" +
+                                          attempt.why + " for a load increment of " + std::to_string(steps.increment) +
+                                          " of a step)",
+                                      from, from + steps.increment);
+            case StaticResponse::SmallerShare:
+                steps.increment = std::max(floor, std::min(0.5, 0.9 * displacement_limit_ / largest) * steps.increment);
+                ++timings_.load_cuts;
+                continue;
+            case StaticResponse::SmallerTimeStep:
+                cut_static_time_step(attempt, largest, report, steps);
+                continue;
+            case StaticResponse::Accept: break;
+        }
+        if (accept_static(attempt, largest, dt, report, steps)) return report;
+    }
+}
+
+void Simulation::cut_static_time_step(const Attempt& attempt, double largest, StepReport& report, LoadSteps& steps) {
+    const double largest_step = model_.analysis.time_step;
+    last_singular_ = attempt.outcome == Outcome::Singular ? attempt.why : std::string();
+    state_.time_step *= time_step_cut(attempt, largest, 0.5);
+    report.time_step_cuts++;
+    if (++steps.time_step_cuts > max_time_step_cuts || state_.time_step < 1e-9 * largest_step)
+        throw std::runtime_error("the time step fell below its floor at step " + std::to_string(state_.step + 1) +
+                                 (last_singular_.empty() ? " (contacts do not settle)" : ": " + last_singular_));
+}
+
+bool Simulation::accept_static(const Attempt& attempt, double largest, double dt, StepReport& report, LoadSteps& steps) {
+    const double largest_step = model_.analysis.time_step, floor = model_.analysis.min_load_fraction;
+    commit(attempt.d, dt, attempt.contacts, attempt.bolts);
+    record_reactions(attempt.residual);
+    ++report.load_increments;
+    report.open_close_iterations += attempt.open_close_iterations;
+    report.max_increment = std::max(report.max_increment, largest);
+    state_.time += steps.increment * largest_step;
+    state_.step_fraction += steps.increment;
+    if (largest < 0.5 * displacement_limit_ && attempt.open_close_iterations <= 2)
+        state_.time_step = std::min(largest_step, dt * 1.25);
+    if (state_.step_fraction >= 1.0 - 1e-9) {
+        state_.step += 1;
+        state_.step_fraction = 0.0;
+        report.time_step = dt;
+        if (!is_equilibrium_only()) relax(report);
+        finish_report(report, largest, attempt.residual);
+        return true;
+    }
+    steps.increment = std::min(2.0 * steps.increment, 1.0 - state_.step_fraction);  // grow back after a cut
+    // The load where a try failed is approached in two halves, not reached again at once from
+    // the first success short of it (Salençon's excavation, elastic over its first half, failed
+    // its second half just as it failed the whole).
+    const double position = state_.step_fraction;
+    const double failed_at = steps.failed_end - state_.step;  // within this step
+    if (steps.failed_end >= 0.0 && position + steps.increment >= failed_at - 1e-9 && failed_at > position) {
+        steps.increment = std::max(floor, 0.5 * (failed_at - position));
+        steps.failed_end = -1.0;
+    }
+    return false;
+}
+
+// Shi's static DDA carries part of every increment by the mass term M/(βΔt²) and resets the
+// velocities each step: the state an increment reaches balances the loads only together with
+// that inertia, so how near equilibrium a run ended depended on how many steps it took (a block
+// on an incline, "unbalanced" after 3 steps and in equilibrium after 10). A static step therefore
+// ends by relaxing: increments at the step's loads from the state reached, Δt doubled after
+// each that went easily (in a static analysis Δt only weighs the mass term: pseudo-time, so the
+// iteration tends to the equilibrium solve), cut where a block moves too far, until the
+// unbalanced-force ratio is within the equilibrium iterations' tolerance or stops falling.
+void Simulation::relax(StepReport& report) {
+    const double largest_step = model_.analysis.time_step;
+    double dt = state_.time_step, best = std::numeric_limits<double>::infinity();
+    int best_at = 0;
+    for (int k = 0; k < max_relaxation_increments; ++k) {
+        const double ratio = unbalanced_ratio();
+        if (ratio <= model_.analysis.plastic_tolerance) break;
+        if (ratio < 0.5 * best) {
+            best = ratio;
+            best_at = k;
+        } else if (k - best_at >= relaxation_window) {
+            break;
+        }
+        const Attempt attempt = solve_increments(applied_forces(state_.step, state_.time), nullptr, 1.0, dt,
+                                                 detect_step_contacts(Eigen::VectorXd()),
+                                                 prescribed_increments(state_.step, state_.time));
+        report.plastic_iterations += attempt.iterations;
+        const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
+        if (attempt.outcome != Outcome::Converged || largest > displacement_limit_) {
+            // More inertia: a smaller Δt. A state that cannot be moved at all stays as it is.
+            dt *= time_step_cut(attempt, largest, 0.5);
+            if (dt < 1e-9 * largest_step) break;
+            continue;
+        }
+        commit(attempt.d, dt, attempt.contacts, attempt.bolts);
+        record_reactions(attempt.residual);
+        ++report.relaxation_increments;
+        report.max_increment = std::max(report.max_increment, largest);
+        if (attempt.open_close_iterations <= 2) dt *= 2.0;
+    }
+    state_.time_step = std::min(largest_step, dt);
+}
+
+}  // namespace mcdda
