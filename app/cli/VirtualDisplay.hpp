@@ -1,6 +1,6 @@
 #pragma once
 /// \file VirtualDisplay.hpp
-/// Debian's VTK renders through X only (docs/architecture.md): without DISPLAY it aborts. Commands that
+/// Debian's VTK renders through X only (docs/architecture.md, platform facts): without DISPLAY it aborts. Commands that
 /// render re-run themselves under `xvfb-run -a` instead.
 
 #include <string>

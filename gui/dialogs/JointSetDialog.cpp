@@ -64,7 +64,7 @@ JointSetDialog::JointSetDialog(const Model& model, QWidget* parent) : QDialog(pa
     convention->setWordWrap(true);
     spacing_ = spin(QStringLiteral("spacingBox"), 0.0, 1e6, 1.0, QStringLiteral(" m"));
     spacing_->setToolTip(tr("Normal distance between neighbouring traces"));
-    // The box's centre: through a model corner a trace would cut a sliver of a block (item 4).
+    // The box's centre: through a model corner a trace would cut a sliver of a block (a sliver too thin to mesh).
     origin_x_ = spin(QStringLiteral("originXBox"), -1e9, 1e9, to_mm((box[0] + box[2]) / 2), QStringLiteral(" m"));
     origin_y_ = spin(QStringLiteral("originYBox"), -1e9, 1e9, to_mm((box[1] + box[3]) / 2), QStringLiteral(" m"));
     use_extent_ = new QCheckBox(tr("Limit to a box"), this);

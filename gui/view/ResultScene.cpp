@@ -384,25 +384,18 @@ bool on_grid(vtkUnstructuredGrid* grid, double x, double y)
     return false;
 }
 
-void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options,
-                ResultProbe* probe = nullptr, ResultInfo* info = nullptr)
+/// The cells as drawn: their points displaced by the deformation scale, their polygons, and the
+/// elements that scale turned inside out (ResultInfo).
+struct DrawnCells {
+    vtkSmartPointer<vtkPoints> points;
+    vtkSmartPointer<vtkPolyData> fill;
+    double deform = 0.0;
+    vtkIdType point_count = 0;
+};
+
+DrawnCells displaced_cells(vtkUnstructuredGrid* grid, const ResultOptions& options, const Box& box, bool record,
+                           ResultProbe& shown, ResultInfo& drew)
 {
-    ResultInfo unused_info;
-    ResultInfo& drew = info ? *info : unused_info;
-    drew = ResultInfo{};
-    ResultProbe unused;
-    ResultProbe& shown = probe ? *probe : unused;  // what the picture shows, for value queries
-    shown = ResultProbe{};
-    vtkUnstructuredGrid* grid = r.grid;
-    const FieldInfo& field = *r.field;
-    const double pixel = dpi_of(renderer) / 72.0;
-    const Box box = model_box(model);
-    const double z_step = (box.size() > 0.0 ? box.size() : 1.0) * 1e-3;
-
-    renderer->SetBackground(white.data());
-    renderer->GradientBackgroundOff();
-
-    // Points, displaced when asked.
     vtkDataArray* displacement = grid->GetPointData()->GetArray("displacement");
     const vtkIdType point_count = grid->GetNumberOfPoints();
     if (displacement != nullptr)
@@ -424,7 +417,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             q[1] += deform * displacement->GetComponent(i, 1);
         }
         points->InsertNextPoint(q[0], q[1], 0.0);
-        if (probe) shown.points.push_back({q[0], q[1]});
+        if (record) shown.points.push_back({q[0], q[1]});
     }
     vtkNew<vtkCellArray> polys;
     vtkNew<vtkIdList> ids;
@@ -434,7 +427,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         // The probe interpolates on the corners (the first, third and fifth point of a six-node
         // cell's boundary): exact for cell data, linear for point data.
         const int stride = ids->GetNumberOfIds() == 6 ? 2 : 1;
-        if (probe && (ids->GetNumberOfIds() == 3 || ids->GetNumberOfIds() == 6))
+        if (record && (ids->GetNumberOfIds() == 3 || ids->GetNumberOfIds() == 6))
             shown.triangles.push_back({static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(stride)),
                                         static_cast<int>(ids->GetId(2 * stride))});
     }
@@ -454,114 +447,140 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             if (before != 0.0 && after * (before > 0.0 ? 1.0 : -1.0) <= 0.0) ++drew.inverted_elements;
         }
     }
-    vtkNew<vtkPolyData> fill;
-    fill->SetPoints(points);
-    fill->SetPolys(polys);
+    DrawnCells out;
+    out.points = points.Get();
+    out.fill = vtkSmartPointer<vtkPolyData>::New();
+    out.fill->SetPoints(points);
+    out.fill->SetPolys(polys);
+    out.deform = deform;
+    out.point_count = point_count;
+    return out;
+}
 
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(fill);
-    vtkDataArray* source = find_array(grid, field);
-    const bool categorical = std::string(field.name) == "plastic_state";
+/// How the field colours the cells: the mapper and its table, the range shown (widened to round
+/// numbers) and the unit.
+struct Colouring {
+    vtkSmartPointer<vtkPolyDataMapper> mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    vtkSmartPointer<vtkLookupTable> table = vtkSmartPointer<vtkLookupTable>::New();
     double range[2] = {0.0, 1.0};
-    std::string units = field.units;
-    bool uniform = false;
+    std::string units;
+    bool categorical = false;  ///< plastic state: a colour per state, no scale
+    bool uniform = false;      ///< one value everywhere: shown as that value
     double uniform_value = 0.0, tick_step = 0.0;
-    vtkNew<vtkLookupTable> table;
-    if (categorical) {
-        vtkNew<vtkUnsignedCharArray> colors;
-        colors->SetNumberOfComponents(3);
-        for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-            const int s = std::clamp(static_cast<int>(std::lround(source->GetComponent(c, 0))), 0, 2);
-            unsigned char b[3];
-            for (int k = 0; k < 3; ++k) b[k] = static_cast<unsigned char>(std::lround(state_colors[s][k] * 255.0));
-            colors->InsertNextTypedTuple(b);
-            if (probe) shown.values.push_back(s);
-        }
-        fill->GetCellData()->SetScalars(colors);
-        mapper->SetScalarModeToUseCellData();
-        mapper->SetColorModeToDirectScalars();
-    } else {
-        vtkNew<vtkDoubleArray> values;
-        const vtkIdType n = source->GetNumberOfTuples();
-        range[0] = std::numeric_limits<double>::infinity();
-        range[1] = -range[0];
-        for (vtkIdType i = 0; i < n; ++i) {
-            const double v = value_of(source, field, i, options.stress_sign);
-            values->InsertNextValue(v);
-            if (std::isfinite(v)) range[0] = std::min(range[0], v), range[1] = std::max(range[1], v);
-        }
-        if (!(range[0] <= range[1])) range[0] = 0.0, range[1] = 1.0;
-        double scale = 1.0;
-        if (units == "Pa") {  // stresses in the unit chosen; automatic: kPa, or MPa from 1 MPa on
-            const bool mpa = options.stress_unit == StressUnit::MPa ||
-                             (options.stress_unit == StressUnit::Automatic &&
-                              std::max(std::abs(range[0]), std::abs(range[1])) >= 1e6);
-            scale = mpa ? 1e-6 : 1e-3;
-            units = mpa ? "MPa" : "kPa";
-        } else if (units == "m" && options.length_unit == LengthUnit::Millimetre) {
-            scale = 1e3;
-            units = "mm";
-        }
-        if (scale != 1.0) {
-            for (vtkIdType i = 0; i < n; ++i) values->SetValue(i, values->GetValue(i) * scale);
-            range[0] *= scale, range[1] *= scale;
-        }
-        // Labels at round numbers (1, 2 or 5 × 10ⁿ apart), the scale widened to them; a uniform
-        // field shows its one value, not −1…1.
-        uniform = range[1] - range[0] <= 1e-9 * std::max(std::abs(range[0]), std::abs(range[1])) ||
-                  range[1] - range[0] < 1e-300;
-        if (std::isfinite(options.range_min) && std::isfinite(options.range_max) && options.range_min < options.range_max) {
-            range[0] = options.range_min, range[1] = options.range_max;
-            uniform = false;
-            tick_step = nice_step((range[1] - range[0]) / 5.0);
-        } else if (uniform) {
-            uniform_value = range[0];
-            const double pad = std::max(1e-3 * std::abs(range[0]), 1e-12);
-            range[0] -= pad, range[1] += pad;
-        } else {
-            tick_step = nice_step((range[1] - range[0]) / 5.0);
-            range[0] = std::floor(range[0] / tick_step + 1e-9) * tick_step;
-            range[1] = std::ceil(range[1] / tick_step - 1e-9) * tick_step;
-        }
-        if (probe)
-            for (vtkIdType i = 0; i < n; ++i) shown.values.push_back(values->GetValue(i));
-        if (field.point_data) {
-            fill->GetPointData()->SetScalars(values);
-            mapper->SetScalarModeToUsePointData();
-        } else {
-            fill->GetCellData()->SetScalars(values);
-            mapper->SetScalarModeToUseCellData();
-        }
-        const int colours = options.bands > 0 ? std::min(options.bands, 256) : 256;
-        table->SetNumberOfTableValues(colours);
-        table->SetTableRange(range);
-        table->Build();
-        for (int k = 0; k < colours; ++k) {
-            const Rgb c = map_colour(options.colour_map, colours > 1 ? k / (colours - 1.0) : 0.5);
-            table->SetTableValue(k, c[0], c[1], c[2], 1.0);
-        }
-        table->UseBelowRangeColorOff();
-        table->UseAboveRangeColorOff();
-        mapper->SetLookupTable(table);
-        mapper->SetScalarRange(range);
-        mapper->InterpolateScalarsBeforeMappingOn();
-    }
-    // Which sign the stresses have is said wherever they are named.
-    const std::string sign_note = !is_stress(field) ? std::string()
-                                  : options.stress_sign == StressSign::CompressionPositive
-                                      ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "compression +"))
-                                      : picture_text(QT_TRANSLATE_NOOP("mcdda::view", "tension +"));
-    shown.point_values = field.point_data;
-    shown.categorical = categorical;
-    shown.title = picture_text(field.title) + (sign_note.empty() ? std::string() : " (" + sign_note + ")");
-    shown.units = units;
-    drew.range_min = range[0], drew.range_max = range[1];
-    vtkNew<vtkActor> fill_actor;
-    fill_actor->SetMapper(mapper);
-    fill_actor->GetProperty()->LightingOff();
-    renderer->AddActor(fill_actor);
+};
 
-    // Block boundaries: edges of one cell only, or between cells of different blocks.
+/// The plastic state: a colour per state, straight onto the cells.
+void colour_states(vtkUnstructuredGrid* grid, vtkDataArray* source, vtkPolyData* fill, bool record, ResultProbe& shown,
+                   Colouring& out)
+{
+    vtkNew<vtkUnsignedCharArray> colors;
+    colors->SetNumberOfComponents(3);
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        const int s = std::clamp(static_cast<int>(std::lround(source->GetComponent(c, 0))), 0, 2);
+        unsigned char b[3];
+        for (int k = 0; k < 3; ++k) b[k] = static_cast<unsigned char>(std::lround(state_colors[s][k] * 255.0));
+        colors->InsertNextTypedTuple(b);
+        if (record) shown.values.push_back(s);
+    }
+    fill->GetCellData()->SetScalars(colors);
+    out.mapper->SetScalarModeToUseCellData();
+    out.mapper->SetColorModeToDirectScalars();
+}
+
+/// The range of the values shown in the unit chosen (stresses: kPa, or MPa from 1 MPa on, unless
+/// the options say), with labels at round numbers (1, 2 or 5 × 10ⁿ apart) and the scale widened
+/// to them; a uniform field shows its one value, not −1…1.
+void set_value_range(vtkDoubleArray* values, const ResultOptions& options, Colouring& c)
+{
+    const vtkIdType n = values->GetNumberOfTuples();
+    c.range[0] = std::numeric_limits<double>::infinity();
+    c.range[1] = -c.range[0];
+    for (vtkIdType i = 0; i < n; ++i)
+        if (const double v = values->GetValue(i); std::isfinite(v))
+            c.range[0] = std::min(c.range[0], v), c.range[1] = std::max(c.range[1], v);
+    if (!(c.range[0] <= c.range[1])) c.range[0] = 0.0, c.range[1] = 1.0;
+    double scale = 1.0;
+    if (c.units == "Pa") {
+        const bool mpa = options.stress_unit == StressUnit::MPa ||
+                         (options.stress_unit == StressUnit::Automatic &&
+                          std::max(std::abs(c.range[0]), std::abs(c.range[1])) >= 1e6);
+        scale = mpa ? 1e-6 : 1e-3;
+        c.units = mpa ? "MPa" : "kPa";
+    } else if (c.units == "m" && options.length_unit == LengthUnit::Millimetre) {
+        scale = 1e3;
+        c.units = "mm";
+    }
+    if (scale != 1.0) {
+        for (vtkIdType i = 0; i < n; ++i) values->SetValue(i, values->GetValue(i) * scale);
+        c.range[0] *= scale, c.range[1] *= scale;
+    }
+    c.uniform = c.range[1] - c.range[0] <= 1e-9 * std::max(std::abs(c.range[0]), std::abs(c.range[1])) ||
+                c.range[1] - c.range[0] < 1e-300;
+    if (std::isfinite(options.range_min) && std::isfinite(options.range_max) && options.range_min < options.range_max) {
+        c.range[0] = options.range_min, c.range[1] = options.range_max;
+        c.uniform = false;
+        c.tick_step = nice_step((c.range[1] - c.range[0]) / 5.0);
+    } else if (c.uniform) {
+        c.uniform_value = c.range[0];
+        const double pad = std::max(1e-3 * std::abs(c.range[0]), 1e-12);
+        c.range[0] -= pad, c.range[1] += pad;
+    } else {
+        c.tick_step = nice_step((c.range[1] - c.range[0]) / 5.0);
+        c.range[0] = std::floor(c.range[0] / c.tick_step + 1e-9) * c.tick_step;
+        c.range[1] = std::ceil(c.range[1] / c.tick_step - 1e-9) * c.tick_step;
+    }
+}
+
+/// A field's values through the colour map chosen (banded when asked).
+void colour_values(vtkDataArray* source, const FieldInfo& field, const ResultOptions& options, vtkPolyData* fill,
+                   bool record, ResultProbe& shown, Colouring& c)
+{
+    vtkNew<vtkDoubleArray> values;
+    const vtkIdType n = source->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < n; ++i) values->InsertNextValue(value_of(source, field, i, options.stress_sign));
+    set_value_range(values, options, c);
+    if (record)
+        for (vtkIdType i = 0; i < n; ++i) shown.values.push_back(values->GetValue(i));
+    if (field.point_data) {
+        fill->GetPointData()->SetScalars(values);
+        c.mapper->SetScalarModeToUsePointData();
+    } else {
+        fill->GetCellData()->SetScalars(values);
+        c.mapper->SetScalarModeToUseCellData();
+    }
+    const int colours = options.bands > 0 ? std::min(options.bands, 256) : 256;
+    c.table->SetNumberOfTableValues(colours);
+    c.table->SetTableRange(c.range);
+    c.table->Build();
+    for (int k = 0; k < colours; ++k) {
+        const Rgb colour = map_colour(options.colour_map, colours > 1 ? k / (colours - 1.0) : 0.5);
+        c.table->SetTableValue(k, colour[0], colour[1], colour[2], 1.0);
+    }
+    c.table->UseBelowRangeColorOff();
+    c.table->UseAboveRangeColorOff();
+    c.mapper->SetLookupTable(c.table);
+    c.mapper->SetScalarRange(c.range);
+    c.mapper->InterpolateScalarsBeforeMappingOn();
+}
+
+Colouring colour_cells(vtkUnstructuredGrid* grid, const FieldInfo& field, const ResultOptions& options, vtkPolyData* fill,
+                       bool record, ResultProbe& shown)
+{
+    Colouring c;
+    c.units = field.units;
+    c.categorical = std::string(field.name) == "plastic_state";
+    vtkDataArray* source = find_array(grid, field);
+    c.mapper->SetInputData(fill);
+    if (c.categorical) colour_states(grid, source, fill, record, shown, c);
+    else colour_values(source, field, options, fill, record, shown, c);
+    return c;
+}
+
+/// Block boundaries: edges of one cell only, or between cells of different blocks.
+void add_block_outlines(vtkRenderer* renderer, vtkUnstructuredGrid* grid, vtkPoints* points, vtkIdType point_count,
+                        double z_step, double pixel)
+{
+    vtkNew<vtkIdList> ids;
     vtkDataArray* block = grid->GetCellData()->GetArray("block");
     std::map<std::pair<vtkIdType, vtkIdType>, std::pair<int, double>> edges;  // edge -> (uses, block)
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
@@ -590,11 +609,17 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     outline->SetPoints(line_points);
     outline->SetLines(lines);
     renderer->AddActor(flat_actor(outline, palette::block_outline, 1.5 * pixel));
+}
 
-    // Joints of the model where they are in rock; only undeformed (they are not part of the .vtu).
+/// Joints of the model where they are in rock; only undeformed (they are not part of the .vtu).
+/// True when drawn.
+bool add_joints(vtkRenderer* renderer, const Preprocessed& model, vtkUnstructuredGrid* grid, const ResultOptions& options,
+                double deform, double z_step, double pixel)
+{
     const bool joints = options.show_joints && deform == 0.0 && !model.model.joints.empty();
     const bool staged = grid->GetNumberOfCells() < static_cast<vtkIdType>(model.mesh.triangles.size());
-    if (joints) {
+    if (!joints) return false;
+    {
         vtkNew<vtkPoints> joint_points;
         vtkNew<vtkCellArray> joint_lines;
         for (const Joint& j : model.model.joints)
@@ -613,169 +638,219 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
         data->SetLines(joint_lines);
         renderer->AddActor(flat_actor(data, joint_color, 3.0 * pixel));
     }
+    return true;
+}
 
-    // Contact forces and bolts (docs/running.md, the contacts files).
-    const bool contact_forces = r.contacts != nullptr;
+/// What the contact marks showed, for the legend.
+struct ContactMarks {
+    bool drawn = false;
     double largest_force = 0.0, largest_slip = 0.0, largest_opening = 0.0;
     bool any_bolt = false;
-    if (contact_forces) {
-        vtkPolyData* c = r.contacts;
-        vtkDataArray* force = c->GetPointData()->GetArray("force");
-        vtkCellArray* verts = c->GetVerts();
-        vtkNew<vtkIdList> vertex;
-        std::vector<vtkIdType> at;
-        verts->InitTraversal();
-        while (verts->GetNextCell(vertex) != 0)
-            if (vertex->GetNumberOfIds() > 0) at.push_back(vertex->GetId(0));
-        for (vtkIdType p : at) largest_force = std::max(largest_force, std::hypot(force->GetComponent(p, 0), force->GetComponent(p, 1)));
-        const double scale = largest_force > 0.0 ? 0.06 * box.size() / largest_force : 0.0;
-        vtkNew<vtkPoints> force_points;
-        vtkNew<vtkCellArray> force_lines;
+};
+
+/// The contact vertices of a contacts file.
+std::vector<vtkIdType> contact_vertices(vtkPolyData* c)
+{
+    vtkCellArray* verts = c->GetVerts();
+    vtkNew<vtkIdList> vertex;
+    std::vector<vtkIdType> at;
+    verts->InitTraversal();
+    while (verts->GetNextCell(vertex) != 0)
+        if (vertex->GetNumberOfIds() > 0) at.push_back(vertex->GetId(0));
+    return at;
+}
+
+/// Contact forces as ticks from each contact's vertex, the largest 6 % of the model long.
+/// Returns the largest force.
+double add_force_ticks(vtkRenderer* renderer, vtkPolyData* c, const std::vector<vtkIdType>& at, const Box& box,
+                       double z_step, double pixel)
+{
+    vtkDataArray* force = c->GetPointData()->GetArray("force");
+    double largest_force = 0.0;
+    for (vtkIdType p : at) largest_force = std::max(largest_force, std::hypot(force->GetComponent(p, 0), force->GetComponent(p, 1)));
+    const double scale = largest_force > 0.0 ? 0.06 * box.size() / largest_force : 0.0;
+    vtkNew<vtkPoints> force_points;
+    vtkNew<vtkCellArray> force_lines;
+    for (vtkIdType p : at) {
+        const double fx = force->GetComponent(p, 0), fy = force->GetComponent(p, 1);
+        if (fx == 0.0 && fy == 0.0) continue;
+        double q[3];
+        c->GetPoint(p, q);
+        const vtkIdType l[2] = {force_points->InsertNextPoint(q[0], q[1], 4.0 * z_step),
+                                force_points->InsertNextPoint(q[0] + scale * fx, q[1] + scale * fy, 4.0 * z_step)};
+        force_lines->InsertNextCell(2, l);
+    }
+    vtkNew<vtkPolyData> lines_data;
+    lines_data->SetPoints(force_points);
+    lines_data->SetLines(force_lines);
+    renderer->AddActor(flat_actor(lines_data, contact_force_color, 1.5 * pixel));
+    return largest_force;
+}
+
+/// Joint slip and opening marks; the largest of each goes into `m`.
+void add_slip_and_opening(vtkRenderer* renderer, vtkPolyData* c, const std::vector<vtkIdType>& at, const Box& box,
+                          double z_step, double pixel, ContactMarks& m)
+{
+    // Joint slip (UDEC's jdisp) along the joint and opening across it, centred on each
+    // contact's vertex, the largest of each 6 % of the model long.
+    vtkDataArray* normal = c->GetPointData()->GetArray("normal");
+    for (const char* name : {"slip", "opening"}) {
+        vtkDataArray* value = c->GetPointData()->GetArray(name);
+        if (value == nullptr || normal == nullptr) continue;
+        const bool along = std::string(name) == "slip";
+        double& largest = along ? m.largest_slip : m.largest_opening;
+        for (vtkIdType p : at) largest = std::max(largest, std::fabs(value->GetTuple1(p)));
+        // Round-off gaps and creep (a millionth of the model) are not drawn as if they mattered.
+        if (largest <= 1e-6 * box.size()) {
+            largest = 0.0;
+            continue;
+        }
+        vtkNew<vtkPoints> points_of;
+        vtkNew<vtkCellArray> lines_of;
         for (vtkIdType p : at) {
-            const double fx = force->GetComponent(p, 0), fy = force->GetComponent(p, 1);
-            if (fx == 0.0 && fy == 0.0) continue;
+            const double v = std::fabs(value->GetTuple1(p));
+            if (v < 0.01 * largest) continue;
+            const double nx = normal->GetComponent(p, 0), ny = normal->GetComponent(p, 1);
+            const double dx = along ? -ny : nx, dy = along ? nx : ny;
+            const double half = 0.03 * box.size() * v / largest;
             double q[3];
             c->GetPoint(p, q);
-            const vtkIdType l[2] = {force_points->InsertNextPoint(q[0], q[1], 4.0 * z_step),
-                                    force_points->InsertNextPoint(q[0] + scale * fx, q[1] + scale * fy, 4.0 * z_step)};
-            force_lines->InsertNextCell(2, l);
+            const vtkIdType l[2] = {points_of->InsertNextPoint(q[0] - half * dx, q[1] - half * dy, 4.5 * z_step),
+                                    points_of->InsertNextPoint(q[0] + half * dx, q[1] + half * dy, 4.5 * z_step)};
+            lines_of->InsertNextCell(2, l);
         }
-        vtkNew<vtkPolyData> lines_data;
-        lines_data->SetPoints(force_points);
-        lines_data->SetLines(force_lines);
-        renderer->AddActor(flat_actor(lines_data, contact_force_color, 1.5 * pixel));
-        // Joint slip (UDEC's jdisp) along the joint and opening across it, centred on each
-        // contact's vertex, the largest of each 6 % of the model long.
-        vtkDataArray* normal = c->GetPointData()->GetArray("normal");
-        for (const char* name : {"slip", "opening"}) {
-            vtkDataArray* value = c->GetPointData()->GetArray(name);
-            if (value == nullptr || normal == nullptr) continue;
-            const bool along = std::string(name) == "slip";
-            double& largest = along ? largest_slip : largest_opening;
-            for (vtkIdType p : at) largest = std::max(largest, std::fabs(value->GetTuple1(p)));
-            // Round-off gaps and creep (a millionth of the model) are not drawn as if they mattered.
-            if (largest <= 1e-6 * box.size()) {
-                largest = 0.0;
-                continue;
-            }
-            vtkNew<vtkPoints> points_of;
-            vtkNew<vtkCellArray> lines_of;
-            for (vtkIdType p : at) {
-                const double v = std::fabs(value->GetTuple1(p));
-                if (v < 0.01 * largest) continue;
-                const double nx = normal->GetComponent(p, 0), ny = normal->GetComponent(p, 1);
-                const double dx = along ? -ny : nx, dy = along ? nx : ny;
-                const double half = 0.03 * box.size() * v / largest;
-                double q[3];
-                c->GetPoint(p, q);
-                const vtkIdType l[2] = {points_of->InsertNextPoint(q[0] - half * dx, q[1] - half * dy, 4.5 * z_step),
-                                        points_of->InsertNextPoint(q[0] + half * dx, q[1] + half * dy, 4.5 * z_step)};
-                lines_of->InsertNextCell(2, l);
-            }
-            vtkNew<vtkPolyData> data_of;
-            data_of->SetPoints(points_of);
-            data_of->SetLines(lines_of);
-            renderer->AddActor(flat_actor(data_of, along ? slip_color : opening_color, 2.5 * pixel));
-        }
-        // Bolts: the poly data's lines, between their anchors.
-        vtkNew<vtkPoints> bolt_points;
-        vtkNew<vtkCellArray> bolt_lines;
-        vtkCellArray* lines_in = c->GetLines();
-        vtkNew<vtkIdList> line;
-        lines_in->InitTraversal();
-        while (lines_in->GetNextCell(line) != 0) {
-            if (line->GetNumberOfIds() < 2) continue;
-            double a[3], b[3];
-            c->GetPoint(line->GetId(0), a);
-            c->GetPoint(line->GetId(1), b);
-            const vtkIdType l[2] = {bolt_points->InsertNextPoint(a[0], a[1], 5.0 * z_step),
-                                    bolt_points->InsertNextPoint(b[0], b[1], 5.0 * z_step)};
-            bolt_lines->InsertNextCell(2, l);
-        }
-        vtkNew<vtkPolyData> bolts_data;
-        bolts_data->SetPoints(bolt_points);
-        bolts_data->SetLines(bolt_lines);
-        renderer->AddActor(flat_actor(bolts_data, bolt_color, 3.0 * pixel));
-        any_bolt = bolt_lines->GetNumberOfCells() > 0;
+        vtkNew<vtkPolyData> data_of;
+        data_of->SetPoints(points_of);
+        data_of->SetLines(lines_of);
+        renderer->AddActor(flat_actor(data_of, along ? slip_color : opening_color, 2.5 * pixel));
     }
+}
 
-    // Legend.
+/// Bolts: the poly data's lines, between their anchors. True when there is one.
+bool add_bolt_lines(vtkRenderer* renderer, vtkPolyData* c, double z_step, double pixel)
+{
+    // Bolts: the poly data's lines, between their anchors.
+    vtkNew<vtkPoints> bolt_points;
+    vtkNew<vtkCellArray> bolt_lines;
+    vtkCellArray* lines_in = c->GetLines();
+    vtkNew<vtkIdList> line;
+    lines_in->InitTraversal();
+    while (lines_in->GetNextCell(line) != 0) {
+        if (line->GetNumberOfIds() < 2) continue;
+        double a[3], b[3];
+        c->GetPoint(line->GetId(0), a);
+        c->GetPoint(line->GetId(1), b);
+        const vtkIdType l[2] = {bolt_points->InsertNextPoint(a[0], a[1], 5.0 * z_step),
+                                bolt_points->InsertNextPoint(b[0], b[1], 5.0 * z_step)};
+        bolt_lines->InsertNextCell(2, l);
+    }
+    vtkNew<vtkPolyData> bolts_data;
+    bolts_data->SetPoints(bolt_points);
+    bolts_data->SetLines(bolt_lines);
+    renderer->AddActor(flat_actor(bolts_data, bolt_color, 3.0 * pixel));
+    return bolt_lines->GetNumberOfCells() > 0;
+}
+
+/// Contact forces, joint slip and opening, and bolts (docs/running.md, the contacts files).
+ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, const Box& box, double z_step, double pixel)
+{
+    ContactMarks m;
+    m.drawn = c != nullptr;
+    if (!m.drawn) return m;
+    const std::vector<vtkIdType> at = contact_vertices(c);
+    m.largest_force = add_force_ticks(renderer, c, at, box, z_step, pixel);
+    add_slip_and_opening(renderer, c, at, box, z_step, pixel, m);
+    m.any_bolt = add_bolt_lines(renderer, c, z_step, pixel);
+    return m;
+}
+
+/// The legend of the plastic state: a swatch per state and the lines drawn. Returns the width it
+/// takes (pixels).
+double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool joints, const ContactMarks& marks)
+{
+    const double dpi = dpi_of(renderer);
+    std::vector<LegendEntry> entries;
+    for (int s = 0; s < 3; ++s) entries.push_back({LegendEntry::Icon::Swatch, state_colors[s], picture_text(state_labels[s])});
+    entries.push_back({LegendEntry::Icon::Line, palette::block_outline,
+                       picture_text(QT_TRANSLATE_NOOP("mcdda::view", "block boundary"))});
+    if (joints)
+        entries.push_back({LegendEntry::Icon::Line, joint_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint"))});
+    if (marks.drawn) {
+        char largest[64];
+        std::snprintf(largest, sizeof largest, " (%.3g kN/m)", marks.largest_force / 1e3);
+        entries.push_back({LegendEntry::Icon::Line, contact_force_color,
+                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "contact force, largest")) + largest});
+        if (marks.any_bolt)
+            entries.push_back({LegendEntry::Icon::Line, bolt_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt"))});
+        if (marks.largest_slip > 0.0) {
+            std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * marks.largest_slip);
+            entries.push_back({LegendEntry::Icon::Line, slip_color,
+                               picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint slip, largest")) + largest});
+        }
+        if (marks.largest_opening > 0.0) {
+            std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * marks.largest_opening);
+            entries.push_back({LegendEntry::Icon::Line, opening_color,
+                               picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint opening, largest")) + largest});
+        }
+    }
+    const std::string title = picture_text(field.title);
+    add_legend(renderer, title, entries, dpi);
+    return legend_width(title, entries, dpi) + 2.0 * legend_margin(dpi);
+}
+
+/// The colour scale of a field, with its unit and sign in the title. Returns the width it takes.
+double add_scale_bar(vtkRenderer* renderer, const FieldInfo& field, const Colouring& c, const std::string& sign_note,
+                     const ResultOptions& options)
+{
+    const double pixel = dpi_of(renderer) / 72.0;
     const int* size = renderer->GetSize();
     const double width = std::max(1, size[0]);
-    double reserved = 0.0;
-    const double dpi = dpi_of(renderer);
-    if (categorical) {
-        std::vector<LegendEntry> entries;
-        for (int s = 0; s < 3; ++s) entries.push_back({LegendEntry::Icon::Swatch, state_colors[s], picture_text(state_labels[s])});
-        entries.push_back({LegendEntry::Icon::Line, palette::block_outline,
-                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "block boundary"))});
-        if (joints)
-            entries.push_back({LegendEntry::Icon::Line, joint_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint"))});
-        if (contact_forces) {
-            char largest[64];
-            std::snprintf(largest, sizeof largest, " (%.3g kN/m)", largest_force / 1e3);
-            entries.push_back({LegendEntry::Icon::Line, contact_force_color,
-                               picture_text(QT_TRANSLATE_NOOP("mcdda::view", "contact force, largest")) + largest});
-            if (any_bolt)
-                entries.push_back({LegendEntry::Icon::Line, bolt_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt"))});
-            if (largest_slip > 0.0) {
-                std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * largest_slip);
-                entries.push_back({LegendEntry::Icon::Line, slip_color,
-                                   picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint slip, largest")) + largest});
-            }
-            if (largest_opening > 0.0) {
-                std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * largest_opening);
-                entries.push_back({LegendEntry::Icon::Line, opening_color,
-                                   picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint opening, largest")) + largest});
-            }
-        }
-        const std::string title = picture_text(field.title);
-        add_legend(renderer, title, entries, dpi);
-        reserved = legend_width(title, entries, dpi) + 2.0 * legend_margin(dpi);
+    vtkNew<vtkScalarBarActor> bar;
+    bar->SetLookupTable(c.table);
+    // Two lines: the field, then its unit and sign (the bar's column is narrow).
+    std::string title = picture_text(field.title) + "\n(" + c.units + (sign_note.empty() ? "" : ", " + sign_note) + ")";
+    vtkNew<vtkDoubleArray> labels;
+    if (c.uniform) {
+        char value[48];
+        std::snprintf(value, sizeof value, "%.4g", c.uniform_value);
+        title += "\n" + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "c.uniform:")) + " " + value;
+        labels->InsertNextValue(c.uniform_value);
     } else {
-        vtkNew<vtkScalarBarActor> bar;
-        bar->SetLookupTable(table);
-        // Two lines: the field, then its unit and sign (the bar's column is narrow).
-        std::string title = picture_text(field.title) + "\n(" + units + (sign_note.empty() ? "" : ", " + sign_note) + ")";
-        vtkNew<vtkDoubleArray> labels;
-        if (uniform) {
-            char value[48];
-            std::snprintf(value, sizeof value, "%.4g", uniform_value);
-            title += "\n" + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "uniform:")) + " " + value;
-            labels->InsertNextValue(uniform_value);
-        } else {
-            for (double t = range[0]; t <= range[1] + 1e-9 * tick_step; t += tick_step)
-                labels->InsertNextValue(std::abs(t) < 1e-9 * tick_step ? 0.0 : t);  // no "-0"
-        }
-        bar->SetTitle(title.c_str());
-        bar->SetUseCustomLabels(true);
-        bar->SetCustomLabels(labels);
-        bar->SetLabelFormat("%-.4g");
-        bar->SetMaximumNumberOfColors(options.bands > 0 ? options.bands : 256);
-        bar->UnconstrainedFontSizeOn();
-        bar->SetTextPad(static_cast<int>(std::lround(4 * pixel)));
-        for (vtkTextProperty* t : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
-            t->SetColor(0.0, 0.0, 0.0);
-            t->SetFontFamilyToArial();
-            t->ShadowOff();
-            t->ItalicOff();
-            t->BoldOff();
-            t->SetFontSize(t == bar->GetTitleTextProperty() ? 14 : 12);
-        }
-        bar->GetTitleTextProperty()->BoldOn();
-        const double bar_width = std::clamp(170.0 * pixel / width, 0.1, 0.3);
-        bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-        bar->GetPositionCoordinate()->SetValue(1.0 - bar_width - 0.01, 0.08);
-        bar->GetPosition2Coordinate()->SetValue(bar_width, 0.84);
-        bar->SetBarRatio(0.25);
-        renderer->AddActor2D(bar);
-        reserved = (bar_width + 0.02) * width;
+        for (double t = c.range[0]; t <= c.range[1] + 1e-9 * c.tick_step; t += c.tick_step)
+            labels->InsertNextValue(std::abs(t) < 1e-9 * c.tick_step ? 0.0 : t);  // no "-0"
     }
+    bar->SetTitle(title.c_str());
+    bar->SetUseCustomLabels(true);
+    bar->SetCustomLabels(labels);
+    bar->SetLabelFormat("%-.4g");
+    bar->SetMaximumNumberOfColors(options.bands > 0 ? options.bands : 256);
+    bar->UnconstrainedFontSizeOn();
+    bar->SetTextPad(static_cast<int>(std::lround(4 * pixel)));
+    for (vtkTextProperty* t : {bar->GetTitleTextProperty(), bar->GetLabelTextProperty()}) {
+        t->SetColor(0.0, 0.0, 0.0);
+        t->SetFontFamilyToArial();
+        t->ShadowOff();
+        t->ItalicOff();
+        t->BoldOff();
+        t->SetFontSize(t == bar->GetTitleTextProperty() ? 14 : 12);
+    }
+    bar->GetTitleTextProperty()->BoldOn();
+    const double bar_width = std::clamp(170.0 * pixel / width, 0.1, 0.3);
+    bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    bar->GetPositionCoordinate()->SetValue(1.0 - bar_width - 0.01, 0.08);
+    bar->GetPosition2Coordinate()->SetValue(bar_width, 0.84);
+    bar->SetBarRatio(0.25);
+    renderer->AddActor2D(bar);
+    return (bar_width + 0.02) * width;
+}
 
-    // The title: field, step, stage and time (exported pictures say what they show).
+/// The title: field, step, stage and time (exported pictures say what they show).
+std::string result_title(const Preprocessed& model, const Result& r, const ResultOptions& options,
+                         const std::string& shown_title, double deform)
+{
     std::string title = options.title;
     if (title.empty()) {
-        title = shown.title;
+        title = shown_title;
         char part[96];
         // A strength reduction trial is named by its factor (its step number and time only
         // order the saved trials).
@@ -801,7 +876,51 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
             title += part;
         }
     }
+    return title;
+}
+
+void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options,
+                ResultProbe* probe = nullptr, ResultInfo* info = nullptr)
+{
+    ResultInfo unused_info;
+    ResultInfo& drew = info ? *info : unused_info;
+    drew = ResultInfo{};
+    ResultProbe unused;
+    ResultProbe& shown = probe ? *probe : unused;  // what the picture shows, for value queries
+    shown = ResultProbe{};
+    vtkUnstructuredGrid* grid = r.grid;
+    const FieldInfo& field = *r.field;
+    const double pixel = dpi_of(renderer) / 72.0;
+    const Box box = model_box(model);
+    const double z_step = (box.size() > 0.0 ? box.size() : 1.0) * 1e-3;
+
+    renderer->SetBackground(white.data());
+    renderer->GradientBackgroundOff();
+    const DrawnCells cells = displaced_cells(grid, options, box, probe != nullptr, shown, drew);
+    const Colouring colouring = colour_cells(grid, field, options, cells.fill, probe != nullptr, shown);
+    // Which sign the stresses have is said wherever they are named.
+    const std::string sign_note = !is_stress(field) ? std::string()
+                                  : options.stress_sign == StressSign::CompressionPositive
+                                      ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "compression +"))
+                                      : picture_text(QT_TRANSLATE_NOOP("mcdda::view", "tension +"));
+    shown.point_values = field.point_data;
+    shown.categorical = colouring.categorical;
+    shown.title = picture_text(field.title) + (sign_note.empty() ? std::string() : " (" + sign_note + ")");
+    shown.units = colouring.units;
+    drew.range_min = colouring.range[0], drew.range_max = colouring.range[1];
+    vtkNew<vtkActor> fill_actor;
+    fill_actor->SetMapper(colouring.mapper);
+    fill_actor->GetProperty()->LightingOff();
+    renderer->AddActor(fill_actor);
+
+    add_block_outlines(renderer, grid, cells.points, cells.point_count, z_step, pixel);
+    const bool joints = add_joints(renderer, model, grid, options, cells.deform, z_step, pixel);
+    const ContactMarks marks = add_contact_marks(renderer, r.contacts, box, z_step, pixel);
+    const double reserved = colouring.categorical ? add_state_legend(renderer, field, joints, marks)
+                                                  : add_scale_bar(renderer, field, colouring, sign_note, options);
+    const std::string title = result_title(model, r, options, shown.title, cells.deform);
     drew.title = title;
+    const double dpi = dpi_of(renderer);
     vtkNew<vtkTextActor> heading;
     heading->SetInput(title.c_str());
     vtkTextProperty* t = heading->GetTextProperty();

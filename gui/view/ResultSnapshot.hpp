@@ -1,7 +1,7 @@
 #pragma once
 /// \file ResultSnapshot.hpp
 /// One moment of a run, copied out of the solver's state on the worker thread and handed to the
-/// GUI thread as std::shared_ptr<const ResultSnapshot> (docs/architecture.md): plain data, no Qt, no VTK.
+/// GUI thread as std::shared_ptr<const ResultSnapshot> (docs/architecture.md, platform facts): plain data, no Qt, no VTK.
 /// Node and element order are those of the run's mesh (Preprocessed::mesh).
 
 #include <array>

@@ -67,7 +67,7 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<
     view::set_picture_translator([](const char* english) {
         return QCoreApplication::translate("mcdda::view", english).toStdString();
     });
-    // Native-child-window route (docs/architecture.md): our own X window that VTK draws into; Qt must not paint it.
+    // Native-child-window route (docs/architecture.md, platform facts): our own X window that VTK draws into; Qt must not paint it.
     setAttribute(Qt::WA_NativeWindow);
     setAttribute(Qt::WA_PaintOnScreen);
     setAttribute(Qt::WA_NoSystemBackground);

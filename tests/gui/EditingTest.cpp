@@ -539,7 +539,7 @@ void EditingTest::stageListShowsAndEditsStages()
     const Model& model = window.document()->model();
     QCOMPARE(list->count(), static_cast<int>(model.stages.size()) + 1);  // and "as drawn"
     QVERIFY(list->item(2)->text().contains(QStringLiteral("top heading")));
-    // Item 7: the tree gives the overburden as the forms do, 2 MPa (not "2e+06 Pa").
+    // The tree gives the overburden as the forms do, 2 MPa (not "2e+06 Pa").
     QVERIFY(!window.modelTree()->findItems(QStringLiteral("pressure 2 MPa"), Qt::MatchRecursive, 1).isEmpty());
     gui::ModelView* view = window.modelView();
     view::SceneOptions plain = view->sceneOptions();
@@ -579,7 +579,7 @@ void EditingTest::stageListShowsAndEditsStages()
     QCOMPARE(installed, 5);
     list->setCurrentRow(0);  // the model as drawn
     QVERIFY(guitest::count_around(*view, heading.x, heading.y, rock) > 40);
-    // Item 9: at the default window size the legend leaves the model's top-right corner in sight.
+    // At the default window size the legend leaves the model's top-right corner in sight.
     const Block* corner = nullptr;
     for (const Block& b : view->scene()->blocks)
         if (b.region == 0 && std::all_of(b.outer.begin(), b.outer.end(), [](const Point2& q) { return q.x > 8.0 && q.y > 8.0; }) &&

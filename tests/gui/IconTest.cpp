@@ -77,6 +77,19 @@ private slots:
             renderer.render(&painter, QRectF(gap + i * (size + gap), gap, size, size));
         }
         painter.end();
+        // Every cell holds a drawing: ink (pixels far from the white ground) covering a fair
+        // share of it, and none spills into the gaps between cells.
+        for (int i = 0; i < count; ++i) {
+            int ink = 0;
+            for (int y = gap; y < gap + size; ++y)
+                for (int x = gap + i * (size + gap); x < gap + i * (size + gap) + size; ++x)
+                    ink += qGray(sheet.pixel(x, y)) < 200;
+            QVERIFY2(ink > size * size / 50, qPrintable(QStringLiteral("icon %1 is (nearly) blank: %2 ink pixels")
+                                                             .arg(QString::fromLatin1(icon_names[i]))
+                                                             .arg(ink)));
+            for (int y = 0; y < sheet.height(); ++y)
+                QCOMPARE(qGray(sheet.pixel(gap + i * (size + gap) + size + gap / 2, y)), 255);
+        }
         QVERIFY(sheet.save(QStringLiteral(MCDDA_TEST_OUTPUT_DIR "/icons.png")));
     }
 };

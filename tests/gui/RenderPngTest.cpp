@@ -305,6 +305,16 @@ TEST_F(RenderPng, HiddenJointsLeaveNoRed)
     view::render_png(p, options, width, height, path);
     Picture picture(path);
     EXPECT_EQ(picture.count_in(0, 0, width, height, is_red), 0);
+    // Not a blank picture: the same rock and outlines as with the joints shown, whose red the
+    // test would otherwise never have seen.
+    const std::string shown_path = output_path("render_with_joints.png");
+    view::render_png(p, {}, width, height, shown_path);
+    Picture shown(shown_path);
+    EXPECT_GT(shown.count_in(0, 0, width, height, is_red), 200);
+    const int total = width * height;
+    const int plain = picture.count_in(0, 0, width, height, [](const Rgb8& c) { return near(c, background); });
+    EXPECT_LT(plain, total * 9 / 10) << "the rock should cover a good part of the picture";
+    EXPECT_GT(picture.count_in(0, 0, width, height, is_dark), total / 200) << "outlines, mesh and legend text";
 }
 
 // Every example model renders to a picture that shows rock, outlines and a legend. The PNGs

@@ -261,7 +261,7 @@ void RunTest::closingStopsTheRun()
     QVERIFY(summary.readAll().contains("cancelled"));
 }
 
-// The path through the window: File ▸ Open an example, Run ▸ Mesh, a few steps of Run,
+// A first user's path through the window: File ▸ Open an example, Run ▸ Mesh, a few steps of Run,
 // and the plastic zone around the tunnel in the picture (yellow/red cells near the wall, grey
 // ones far away).
 void RunTest::salenconOpenMeshRunShowsPlasticZone()

@@ -169,3 +169,29 @@ TEST(Equilibrium, KirschReachesARatioBelow1e5AndTheSlidingWedgeIsReportedUnbalan
     EXPECT_NE(end.message.find("not in equilibrium"), std::string::npos);
     EXPECT_GT(wedge.state().unbalanced_ratio, 0.05);
 }
+
+// examples/jointed-tunnel-staged.json: the top heading released over 10 steps (as shipped), over 2
+// and 5, and the whole model on a mesh twice as coarse all stand: every stage completes and the
+// last ends in equilibrium. Whether the tunnel stands must not depend on how fast the excavation
+// is released or on the mesh (static DDA relaxes every step to equilibrium). Label: slow.
+namespace {
+
+void expect_staged_tunnel_stands(const std::vector<std::string>& overrides) {
+    auto run = test::run_example("jointed-tunnel-staged.json", overrides);
+    ASSERT_TRUE(run.simulation);
+    const Simulation& s = *run.simulation;
+    EXPECT_TRUE(s.finished());
+    for (const StageRecord& r : s.stages()) EXPECT_TRUE(r.finished) << r.name;
+    std::cout << "staged tunnel: unbalanced-force ratio " << s.state().unbalanced_ratio << " after step "
+              << s.state().step << "\n";
+    EXPECT_LT(s.state().unbalanced_ratio, s.analysis().equilibrium_ratio);
+}
+
+}  // namespace
+
+TEST(StagedTunnel, StandsWithItsReleaseOver10Steps) { expect_staged_tunnel_stands({}); }
+TEST(StagedTunnel, StandsWithItsReleaseOver5Steps) { expect_staged_tunnel_stands({"/stages/1/release/steps=5"}); }
+TEST(StagedTunnel, StandsWithItsReleaseOver2Steps) { expect_staged_tunnel_stands({"/stages/1/release/steps=2"}); }
+TEST(StagedTunnel, StandsOnAMeshTwiceAsCoarse) {
+    expect_staged_tunnel_stands({"/mesh/size=2.4", "/mesh/local/0/size=0.6"});
+}

@@ -1,0 +1,107 @@
+// The verdicts of the equilibrium iterations (solver/run/ConvergenceMonitor), rule by rule.
+
+#include "run/ConvergenceMonitor.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using mcdda::ConvergenceMonitor;
+using Verdict = ConvergenceMonitor::Verdict;
+
+namespace {
+
+ConvergenceMonitor::Iteration at(int k, double norm, double correction = 1.0, bool newton = false, int yielding = 1) {
+    ConvergenceMonitor::Iteration it;
+    it.k = k;
+    it.norm = norm;
+    it.scale = 1.0;
+    it.last_correction = correction;
+    it.yardstick = 1.0;
+    it.largest = 0.0;
+    it.yielding = yielding;
+    it.newton = newton;
+    return it;
+}
+
+}  // namespace
+
+TEST(ConvergenceMonitor, ConvergedNeedsSmallForceAndSmallCorrectionAfterTheFirstIteration) {
+    ConvergenceMonitor m(1e-4, 200, 1.0);
+    EXPECT_FALSE(m.converged(at(0, 1e-6, 1e-6), false));  // nothing solved yet
+    EXPECT_TRUE(m.converged(at(1, 1e-6, 1e-6), false));
+    EXPECT_FALSE(m.converged(at(1, 1e-6, 1e-2), false));  // force small, displacement still moving
+    EXPECT_FALSE(m.converged(at(1, 1e-2, 1e-6), false));
+}
+
+TEST(ConvergenceMonitor, ALinearIterationHasConvergedAfterOneSolve) {
+    ConvergenceMonitor m(1e-4, 200, 1.0);
+    EXPECT_FALSE(m.converged(at(0, 1.0, 0.0, false, 0), true));
+    // Its correction was large (it solved the whole increment) but exact.
+    EXPECT_TRUE(m.converged(at(1, 1e-9, 0.5, false, 0), true));
+    ConvergenceMonitor yielded(1e-4, 200, 1.0);
+    EXPECT_FALSE(yielded.converged(at(0, 1.0, 0.0, false, 3), true));
+    EXPECT_FALSE(yielded.converged(at(1, 1e-9, 0.5, false, 0), true));  // something yielded at the start
+}
+
+TEST(ConvergenceMonitor, StallsWhenTheForceIsNotHalvedWithinTheWindow) {
+    ConvergenceMonitor elastic(1e-4, 1000, 1.0);
+    int k = 0;
+    Verdict v = Verdict::Continue;
+    for (; k < 100 && v == Verdict::Continue; ++k) v = elastic.assess(at(k, 1.0 - 0.001 * k));
+    EXPECT_EQ(v, Verdict::Stalled);
+    EXPECT_EQ(k - 1, 30);  // the elastic iteration's window
+    ConvergenceMonitor newton(1e-4, 1000, 1.0);
+    v = Verdict::Continue;
+    for (k = 0; k < 100 && v == Verdict::Continue; ++k) v = newton.assess(at(k, 1.0 - 0.001 * k, 1.0, true));
+    EXPECT_EQ(v, Verdict::Stalled);
+    EXPECT_EQ(k - 1, 11);  // Newton's, counted from its first correction (iteration 1)
+    // Halving every few iterations never stalls.
+    ConvergenceMonitor converging(1e-12, 1000, 1.0);
+    for (k = 0; k < 120; ++k) ASSERT_EQ(converging.assess(at(k, std::pow(0.5, k / 5.0))), Verdict::Continue) << k;
+}
+
+TEST(ConvergenceMonitor, DivergenceMechanismAndCap) {
+    ConvergenceMonitor m(1e-4, 200, 1.0);
+    EXPECT_EQ(m.assess(at(0, 1.0)), Verdict::Continue);
+    EXPECT_EQ(m.assess(at(1, std::numeric_limits<double>::quiet_NaN())), Verdict::Diverging);
+    ConvergenceMonitor growing(1e-4, 200, 1.0);
+    EXPECT_EQ(growing.assess(at(0, 1.0)), Verdict::Continue);
+    EXPECT_EQ(growing.assess(at(2, 1e7)), Verdict::Continue);  // a contact change may start large
+    EXPECT_EQ(growing.assess(at(3, 1e7)), Verdict::Diverging);
+    ConvergenceMonitor mech(1e-4, 200, 1.0);
+    auto it = at(0, 1.0);
+    it.largest = 2.0;
+    EXPECT_EQ(mech.assess(it), Verdict::Mechanism);
+    it.yielding = 0;  // a large move without yielding is a contact question, not a mechanism
+    ConvergenceMonitor rigid(1e-4, 200, 1.0);
+    EXPECT_EQ(rigid.assess(it), Verdict::Continue);
+    ConvergenceMonitor capped(1e-12, 5, 1.0);
+    Verdict v = Verdict::Continue;
+    int k = 0;
+    for (; v == Verdict::Continue; ++k) v = capped.assess(at(k, std::pow(0.1, k)));
+    EXPECT_EQ(v, Verdict::Capped);
+    EXPECT_EQ(k - 1, 5);
+    EXPECT_NE(capped.why(v, at(5, 1e-5)).find("reached their limit"), std::string::npos);
+}
+
+TEST(ConvergenceMonitor, PolishingGetsAFreshWindowAndItsOwnCap) {
+    ConvergenceMonitor m(1e-12, 40, 1.0);
+    Verdict v = Verdict::Continue;
+    int k = 0;
+    for (; v == Verdict::Continue; ++k) v = m.assess(at(k, 1.0));
+    --k;
+    ASSERT_EQ(v, Verdict::Stalled);
+    ASSERT_TRUE(m.hands_over_to_newton(v, at(k, 1.0)));
+    EXPECT_FALSE(m.hands_over_to_newton(v, at(k, 1.0, 1.0, false, 0)));  // nothing yields: nothing to polish
+    m.start_polishing(at(k, 1.0, 1.0, true));
+    EXPECT_TRUE(m.polishing());
+    EXPECT_FALSE(m.hands_over_to_newton(Verdict::Stalled, at(k, 1.0)));  // once only
+    // Newton quartering the force every iteration runs until its cap of 30 iterations.
+    int n = 0;
+    v = Verdict::Continue;
+    for (; v == Verdict::Continue; ++n) v = m.assess(at(k + n, std::pow(0.25, n), std::pow(0.25, n), true));
+    EXPECT_EQ(v, Verdict::Capped);
+    EXPECT_EQ(n - 1, 30);
+}
