@@ -1,0 +1,100 @@
+// The contacts of one try (contact/ContactSet.hpp) on two blocks: a 10 m square cut by a
+// horizontal joint at y = 5. Detection finds the joint's contacts touching; pressing the upper
+// block down gives contact forces that push it back up and balance; pulling it away opens them.
+
+#include "TestModels.hpp"
+#include "contact/ContactDetection.hpp"
+#include "contact/ContactSet.hpp"
+#include "fem/MeshTopology.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace mcdda;
+
+namespace {
+
+struct TwoBlocks {
+    Preprocessed p;
+    MeshTopology topology;
+    std::vector<Contact> contacts;
+};
+
+TwoBlocks two_blocks() {
+    TwoBlocks t;
+    t.p = test::preprocess_text(test::square_model_json(), {"/joints=[{\"name\": \"j\", \"points\": [[0,5],[10,5]]}]"});
+    EXPECT_TRUE(t.p.ok) << test::all_messages(t.p.diagnostics);
+    t.topology = build_topology(t.p.mesh, t.p.blocks);
+    t.contacts = detect_contacts(t.p.mesh.nodes, t.p.mesh, t.topology, 0.05, {}, Eigen::VectorXd(), 1e-9);
+    return t;
+}
+
+/// Increments moving every node of the upper block (joint nodes included) by (ux, uy).
+Eigen::VectorXd upper_block_moves(const TwoBlocks& t, double ux, double uy) {
+    const Mesh& mesh = t.p.mesh;
+    int upper = -1;
+    for (std::size_t n = 0; n < mesh.nodes.size() && upper < 0; ++n)
+        if (mesh.nodes[n].y > 5.5) upper = mesh.node_block[n];
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(mesh.nodes.size()));
+    for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+        if (mesh.node_block[n] == upper) {
+            d[2 * n] = ux;
+            d[2 * n + 1] = uy;
+        }
+    return d;
+}
+
+ContactSet contact_set_of(const TwoBlocks& t) {
+    return ContactSet(t.contacts, [&](const Contact& c) { return contact_kinematics(c, t.p.mesh.nodes, t.topology); },
+                      t.p.model, t.topology, 4e9);
+}
+
+}  // namespace
+
+TEST(ContactSet, TheJointsContactsStartClosedAndCarryNothing) {
+    const TwoBlocks t = two_blocks();
+    ASSERT_EQ(t.p.blocks.size(), 2u);
+    ASSERT_GE(t.contacts.size(), 10u);  // every joint vertex of either block against the other
+    const ContactSet set = contact_set_of(t);
+    EXPECT_TRUE(set.any_closed());
+    EXPECT_EQ(set.count(ContactState::Open), 0);
+    Eigen::VectorXd force = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(t.p.mesh.nodes.size()));
+    set.add_forces(upper_block_moves(t, 0.0, 0.0), force);
+    EXPECT_LT(force.cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST(ContactSet, PressingTheBlocksTogetherPushesThemApartInBalance) {
+    const TwoBlocks t = two_blocks();
+    const ContactSet set = contact_set_of(t);
+    const Eigen::VectorXd d = upper_block_moves(t, 0.0, -1e-4);
+    Eigen::VectorXd force = Eigen::VectorXd::Zero(d.size());
+    set.add_forces(d, force);
+    double up = 0.0, down = 0.0, sum_x = 0.0, sum_y = 0.0;
+    for (Eigen::Index n = 0; 2 * n < d.size(); ++n) {
+        sum_x += force[2 * n];
+        sum_y += force[2 * n + 1];
+        if (d[2 * n + 1] < 0.0) up += force[2 * n + 1];  // on the pressed (upper) block
+        else down += force[2 * n + 1];
+    }
+    EXPECT_GT(up, 0.0);
+    EXPECT_LT(down, 0.0);
+    EXPECT_NEAR(sum_y, 0.0, 1e-9 * up);  // action and reaction
+    EXPECT_NEAR(sum_x, 0.0, 1e-9 * up);
+    // Penalty springs: about 4e9 N/m × 1e-4 m per contact.
+    EXPECT_NEAR(up / set.count(ContactState::Locked), 4e5, 2e5);
+}
+
+TEST(ContactSet, PullingTheBlocksApartOpensEveryContactAndUndoKeepsNothingMarginal) {
+    const TwoBlocks t = two_blocks();
+    ContactSet set = contact_set_of(t);
+    const ContactSet::Update u = set.update_states(upper_block_moves(t, 0.0, 1e-2), false);
+    EXPECT_EQ(u.changes, static_cast<int>(t.contacts.size()));
+    EXPECT_EQ(set.count(ContactState::Open), static_cast<int>(t.contacts.size()));
+    EXPECT_FALSE(set.any_closed());
+    set.undo_marginal();  // the changes were significant: nothing to undo
+    EXPECT_EQ(set.count(ContactState::Open), static_cast<int>(t.contacts.size()));
+    Eigen::VectorXd force = Eigen::VectorXd::Zero(2 * static_cast<Eigen::Index>(t.p.mesh.nodes.size()));
+    set.add_forces(upper_block_moves(t, 0.0, -1e-4), force);
+    EXPECT_EQ(force.cwiseAbs().maxCoeff(), 0.0);  // open contacts add nothing
+}
