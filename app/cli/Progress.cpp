@@ -19,7 +19,10 @@ void Progress::update(const StepReport& r) {
         if (terminal_ && drawn_) std::fprintf(stderr, "\r\033[K");
         for (const std::string& e : r.events) std::fprintf(stderr, "%s\n", e.c_str());
     }
-    char line[360];
+    char line[400];
+    // Static DDA: the increments that relaxed the step to equilibrium at its loads.
+    const std::string relaxed =
+        r.relaxation_increments > 0 ? " + " + std::to_string(r.relaxation_increments) + " relaxing" : std::string();
     const int width = 24;
     const int filled = total_ > 0 ? width * r.step / total_ : width;
     char bar[width + 1];
@@ -27,9 +30,10 @@ void Progress::update(const StepReport& r) {
     bar[width] = '\0';
     std::snprintf(line, sizeof line,
                   "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  open-close %d  "
-                  "equilibrium iterations %d in %d load increment%s  yielding %d  unbalanced %.2e",
+                  "equilibrium iterations %d in %d load increment%s%s  yielding %d  unbalanced %.2e",
                   bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations,
-                  r.plastic_iterations, r.load_increments, r.load_increments == 1 ? "" : "s", r.yielding, r.unbalanced_ratio);
+                  r.plastic_iterations, r.load_increments, r.load_increments == 1 ? "" : "s", relaxed.c_str(), r.yielding,
+                  r.unbalanced_ratio);
     if (terminal_) {
         if (now - last_draw_ < std::chrono::milliseconds(100) && r.step != total_) return;
         std::fprintf(stderr, "\r%s\033[K", line);

@@ -17,8 +17,13 @@
 ///   3. commit: coordinates += d, stresses as returned, velocities, contact springs.
 /// A static step whose equilibrium iterations fail is retried with a smaller load increment
 /// (bisection to analysis.min_load_fraction of a step); failing there is a collapse between the
-/// last load carried and the first not carried. Δt is never cut for plasticity in a static
-/// analysis: inertia (M/βΔt²) must not carry load there. Dynamic steps cut Δt (Shi).
+/// last load carried and the first not carried. In a small-strain static analysis Δt is never
+/// cut for plasticity: inertia (M/βΔt²) must not carry load there. Static DDA (deformed
+/// geometry) cuts Δt where a wrong contact guess sets a block loose, and every static DDA step
+/// ends by relaxing to equilibrium at its loads (StaticStep.cpp). Dynamic steps cut Δt (Shi).
+/// The parts live in their own files: StaticStep, DynamicStep, OpenCloseIteration (one try),
+/// EquilibriumIterations (and ConvergenceMonitor), StageSetup; this file sets a run up, commits
+/// steps and measures the out-of-balance force.
 
 #include "Preprocess.hpp"
 #include "contact/Contact.hpp"

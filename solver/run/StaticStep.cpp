@@ -26,6 +26,9 @@ constexpr int max_time_step_cuts = 30;
 /// out-of-balance ratio before the state counts as moving (a mechanism: the step ends unbalanced).
 constexpr int max_relaxation_increments = 60;
 constexpr int relaxation_window = 12;
+/// Tries in a row that fail (even with more inertia) before the relaxation gives up: the state
+/// is moving, and each failed try costs a whole set of equilibrium iterations.
+constexpr int max_failed_relaxations = 3;
 
 std::string describe_position(double position) {
     const int step = static_cast<int>(std::floor(position + 1e-12));
@@ -193,7 +196,7 @@ bool Simulation::accept_static(const Attempt& attempt, double largest, double dt
 void Simulation::relax(StepReport& report) {
     const double largest_step = model_.analysis.time_step;
     double dt = state_.time_step, best = std::numeric_limits<double>::infinity();
-    int best_at = 0;
+    int best_at = 0, failed = 0;
     for (int k = 0; k < max_relaxation_increments; ++k) {
         const double ratio = unbalanced_ratio();
         if (ratio <= model_.analysis.plastic_tolerance) break;
@@ -211,9 +214,10 @@ void Simulation::relax(StepReport& report) {
         if (attempt.outcome != Outcome::Converged || largest > displacement_limit_) {
             // More inertia: a smaller Δt. A state that cannot be moved at all stays as it is.
             dt *= time_step_cut(attempt, largest, 0.5);
-            if (dt < 1e-9 * largest_step) break;
+            if (dt < 1e-9 * largest_step || ++failed >= max_failed_relaxations) break;
             continue;
         }
+        failed = 0;
         commit(attempt.d, dt, attempt.contacts, attempt.bolts);
         record_reactions(attempt.residual);
         ++report.relaxation_increments;
