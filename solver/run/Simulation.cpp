@@ -65,7 +65,6 @@ void element_averages(const PointStates& points, int per_element, SimulationStat
     }
 }
 
-
 Simulation::Simulation(const Preprocessed& p, double strength_factor)
     : model_(p.model), mesh_(p.mesh), base_model_(p.model), strength_factor_(strength_factor) {
     if (mesh_.triangles.empty()) throw std::runtime_error("the model has no mesh");
