@@ -2,15 +2,6 @@
 
 namespace mcdda {
 
-Matrix3 plane_strain_elasticity(double E, double nu) {
-    const double f = E / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    Matrix3 D;
-    D << f * (1.0 - nu), f * nu, 0.0,
-         f * nu, f * (1.0 - nu), 0.0,
-         0.0, 0.0, f * (1.0 - 2.0 * nu) / 2.0;
-    return D;
-}
-
 TriangleShape triangle_shape(const Point2& a, const Point2& b, const Point2& c) {
     TriangleShape s;
     const double twice_area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);

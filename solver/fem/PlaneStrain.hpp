@@ -1,8 +1,10 @@
 #pragma once
 /// \file PlaneStrain.hpp
-/// The three-node triangle (CST) in plane strain, thickness 1: B, D, stiffness, mass, stresses.
+/// The three-node triangle (CST) in plane strain, thickness 1: B, stiffness, mass, stresses (D is
+/// material/Elasticity.hpp).
 /// Voigt order (xx, yy, xy) with engineering shear strain γxy; stress tension positive.
 
+#include "material/Elasticity.hpp"  // D, for the element matrices
 #include "model/Model.hpp"
 
 #include <Eigen/Dense>
@@ -14,9 +16,6 @@ using Vector3 = Eigen::Vector3d;
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using StrainMatrix = Eigen::Matrix<double, 3, 6>;
-
-/// Plane-strain elasticity matrix D (paper eq. 10–11), Pa.
-Matrix3 plane_strain_elasticity(double young_modulus, double poisson_ratio);
 
 /// Area and strain–displacement matrix of a triangle (nodes counter-clockwise).
 struct TriangleShape {

@@ -1,6 +1,6 @@
 #include "material/ConstitutiveLaw.hpp"
 
-#include "fem/PlaneStrain.hpp"
+#include "material/Elasticity.hpp"
 #include "material/ElasticLaw.hpp"
 #include "material/MohrCoulomb.hpp"
 

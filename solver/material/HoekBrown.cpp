@@ -1,6 +1,6 @@
 #include "material/HoekBrown.hpp"
 
-#include "fem/PlaneStrain.hpp"
+#include "material/Elasticity.hpp"
 #include "material/PrincipalFrame.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "material/MohrCoulomb.hpp"
 
-#include "fem/PlaneStrain.hpp"
+#include "material/Elasticity.hpp"
 #include "material/PrincipalFrame.hpp"
 
 #include <Eigen/Dense>
