@@ -4,6 +4,7 @@
 
 #include "run/ConvergenceMonitor.hpp"
 #include "run/Simulation.hpp"
+#include "run/Stopwatch.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -13,10 +14,6 @@
 namespace mcdda {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /// Below this contraction of the out-of-balance force per iteration the factor in use is kept
 /// (a back-substitution is much cheaper than a factorisation); above it the tangent is

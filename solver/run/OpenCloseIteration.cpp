@@ -2,6 +2,7 @@
 // around the equilibrium iterations, with bolts that break on the way.
 
 #include "run/Simulation.hpp"
+#include "run/Stopwatch.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,10 +11,6 @@
 namespace mcdda {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /// A contact that keeps opening and closing in a static equilibrium step with more than this share
 /// of the largest contact force in play holds a block that cannot be held (the wedge's crest

@@ -1,4 +1,5 @@
 #include "run/Simulation.hpp"
+#include "run/Stopwatch.hpp"
 
 #include "model/StrengthReduction.hpp"
 
@@ -8,16 +9,6 @@
 #include <stdexcept>
 
 namespace mcdda {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-}  // namespace
 
 void initial_stresses(const Model& model, const Mesh& mesh, const ElementAssembly& elements, PointStates& points) {
     const int per_element = elements.points_per_element();

@@ -3,6 +3,7 @@
 // relaxes to equilibrium at its loads.
 
 #include "run/Simulation.hpp"
+#include "run/Stopwatch.hpp"
 
 #include "contact/ContactDetection.hpp"
 
@@ -14,10 +15,6 @@
 namespace mcdda {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /// A plastic step of a model with contacts is a collapse only below this fraction of the set Δt.
 constexpr double plastic_collapse_time_step = 1e-4;
