@@ -585,7 +585,7 @@ void MainWindow::onRunFinished(RunStatus status, const QString& message)
     if (factor_found_) {
         const Model& m = view_->scene()->model;
         const bool yields = m.analysis.plasticity && std::any_of(m.materials.begin(), m.materials.end(),
-                                                                 [](const Material& x) { return x.plastic; });
+                                                                 [](const Material& x) { return x.may_yield(); });
         result_bar_->setField(yields ? QStringLiteral("plastic_strain_increment")
                                      : QStringLiteral("displacement_increment"));
     }

@@ -8,7 +8,7 @@
 #include "io/ModelReader.hpp"
 #include "mesh/BlockMesher.hpp"
 #include "mesh/QuadraticMesh.hpp"
-#include "model/ModelValidator.hpp"
+#include "check/ModelValidator.hpp"
 
 #include <chrono>
 #include <exception>

@@ -2,7 +2,7 @@
 
 #include "Preprocess.hpp"
 #include "io/VtuWriter.hpp"
-#include "model/ModelValidator.hpp"
+#include "check/ModelValidator.hpp"
 #ifdef MCDDA_HAVE_VIEW
 #include "view/OffscreenRender.hpp"
 #include "view/ResultScene.hpp"

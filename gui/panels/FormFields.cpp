@@ -4,6 +4,7 @@
 #include "panels/DeclaredFields.hpp"
 #include "session/DisplayUnits.hpp"
 
+#include <algorithm>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -138,9 +139,18 @@ void set_unit(QDoubleSpinBox* box, const FormUnit& u)
 
 }  // namespace
 
+/// The form unit of a field, its range wide enough for the field's own bounds (GSI up to 100).
+FormUnit field_unit(const NumberField& field)
+{
+    FormUnit u = form_unit(field.quantity);
+    if (field.upper) u.range = std::max(u.range, field.upper->value / u.factor);
+    if (field.physical_limit > 0.0) u.range = std::max(u.range, field.physical_limit / u.factor);
+    return u;
+}
+
 QDoubleSpinBox* declared_number(const NumberField& field, const QString& prefix, QFormLayout* form, QWidget* parent)
 {
-    const FormUnit u = form_unit(field.quantity);
+    const FormUnit u = field_unit(field);
     QDoubleSpinBox* box = number(prefix + QString::fromLatin1(field.key), u.unit, -u.range, u.range, u.decimals, parent);
     if (field.quantity == Quantity::Ratio) box->setSingleStep(0.001);
     QString label = QCoreApplication::translate("ModelFields", field.label);
@@ -158,7 +168,7 @@ double form_unit_factor(Quantity quantity) { return form_unit(quantity).factor; 
 
 void display_declared(QDoubleSpinBox* box, const NumberField& field, double model_value)
 {
-    const FormUnit u = form_unit(field.quantity);
+    const FormUnit u = field_unit(field);
     set_unit(box, u);
     display(box, model_value / u.factor);
 }

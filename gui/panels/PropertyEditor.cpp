@@ -1,9 +1,10 @@
 #include "panels/PropertyEditor.hpp"
 
 #include "document/ModelDocument.hpp"
-#include "model/ModelValidator.hpp"
+#include "check/ModelValidator.hpp"
 #include "panels/BoltForm.hpp"
 #include "panels/FormFields.hpp"
+#include "panels/LawFields.hpp"
 #include "panels/LoadForm.hpp"
 #include "panels/MeshForm.hpp"
 #include "session/DisplayUnits.hpp"
@@ -52,7 +53,8 @@ QWidget* buttons_row(QPushButton* a, QPushButton* b, QWidget* parent)
 
 bool same(const Material& a, const Material& b)
 {
-    return a.name == b.name && a.plastic == b.plastic && a.reduce == b.reduce && same_fields(a, b, material_fields());
+    return a.name == b.name && a.law == b.law && a.parameters == b.parameters && a.reduce == b.reduce &&
+           same_fields(a, b, material_fields());
 }
 
 bool same(const JointMaterial& a, const JointMaterial& b)
@@ -141,21 +143,24 @@ QWidget* PropertyEditor::createMaterialForm()
     form->addRow(tr("Name"), mat_name_);
     explain(mat_name_, tr("Name of the material, as the tree and the legend show it"));
     mat_fields_ = std::make_unique<form::DeclaredFields<Material>>(material_fields(), QStringLiteral("material_"), form, page);
-    mat_plastic_ = new QCheckBox(tr("Plastic (Mohr–Coulomb)"), page);
-    mat_plastic_->setObjectName(QStringLiteral("materialPlastic"));
-    form->addRow(QString(), mat_plastic_);
-    explain(mat_plastic_, tr("Whether the material yields (Mohr–Coulomb); off = elastic whatever the stress"));
+    mat_law_ = std::make_unique<form::LawFields>(QStringLiteral("material_"), form, page);
+    // A new law shows its fields at once; it is applied with them (Apply, or a field's edit).
+    connect(mat_law_->chooser(), &QComboBox::currentIndexChanged, this, [this] {
+        if (!loading_) mat_law_->showChosenLaw();
+    });
     mat_reduce_ = new QCheckBox(tr("Reduced in a strength reduction"), page);
     mat_reduce_->setObjectName(QStringLiteral("materialReduce"));
     form->addRow(QString(), mat_reduce_);
-    explain(mat_reduce_, tr("Whether a strength reduction divides this material's c and tan φ; off for a footing or a lining that must not fail in the search"));
+    explain(mat_reduce_, tr("Whether a strength reduction divides this material's strength; off for a footing or a lining that must not fail in the search"));
     auto* apply = new QPushButton(tr("Apply"), page);
     apply->setObjectName(QStringLiteral("materialApply"));
     connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyMaterial);
     form->addRow(QString(), apply);
     mat_status_ = status_label(QStringLiteral("materialStatus"), page);
     form->addRow(mat_status_);
-    for (QDoubleSpinBox* box : mat_fields_->boxes())
+    std::vector<QDoubleSpinBox*> boxes = mat_fields_->boxes();
+    for (QDoubleSpinBox* box : mat_law_->boxes()) boxes.push_back(box);
+    for (QDoubleSpinBox* box : boxes)
         connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
     connect(mat_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
     connect(mat_reduce_, &QCheckBox::toggled, this, [this] { if (!loading_) applyMaterial(); });
@@ -355,7 +360,7 @@ void PropertyEditor::loadMaterial()
     const Material& x = m.materials[static_cast<std::size_t>(i)];
     mat_name_->setText(to_qt(x.name));
     mat_fields_->show(x);
-    mat_plastic_->setChecked(x.plastic);
+    mat_law_->show(x);
     mat_reduce_->setChecked(x.reduce);
     loading_ = false;
 }
@@ -478,8 +483,7 @@ bool PropertyEditor::newMaterial()
         material.young_modulus = 10e9;
         material.poisson_ratio = 0.25;
         material.density = 2600.0;
-        material.cohesion = 1e6;
-        material.friction_angle = 35.0 * deg;
+        material.parameters = {{"cohesion", 1e6}, {"friction_angle", 35.0 * deg}};
     }
     material.name.clear();  // the document names it
     const int index = document_->addMaterial(material);
@@ -535,7 +539,7 @@ bool PropertyEditor::applyMaterial()
     Material x = old;
     x.name = mat_name_->text().toStdString();
     mat_fields_->read(old, x);
-    x.plastic = mat_plastic_->isChecked();
+    mat_law_->read(old, x);
     x.reduce = mat_reduce_->isChecked();
     if (same(x, old)) return true;
     Model candidate = m;

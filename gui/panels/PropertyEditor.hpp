@@ -13,6 +13,7 @@
 #include "document/ModelItems.hpp"
 #include "model/Model.hpp"
 #include "panels/DeclaredFields.hpp"
+#include "panels/LawFields.hpp"
 
 #include <QString>
 #include <QWidget>
@@ -107,7 +108,7 @@ private:
     QComboBox* material_box_ = nullptr;
     QLineEdit* mat_name_ = nullptr;
     std::unique_ptr<form::DeclaredFields<Material>> mat_fields_;
-    QCheckBox* mat_plastic_ = nullptr;
+    std::unique_ptr<form::LawFields> mat_law_;  ///< the law and its own fields
     QCheckBox* mat_reduce_ = nullptr;  ///< divided by a strength reduction
     QCheckBox* jm_reduce_ = nullptr;
     QPushButton* mat_new_ = nullptr;

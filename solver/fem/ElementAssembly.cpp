@@ -1,6 +1,7 @@
 #include "fem/ElementAssembly.hpp"
 
 #include "fem/PlaneStrain.hpp"
+#include "material/MaterialLaws.hpp"
 #include "parallel/ParallelFor.hpp"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 
 #include "geometry/BlockFeatures.hpp"
 #include "geometry/PolygonChecks.hpp"
-#include "model/ModelValidator.hpp"
+#include "model/Model.hpp"
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>

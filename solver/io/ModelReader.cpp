@@ -2,6 +2,7 @@
 
 #include "io/JsonOverrides.hpp"
 #include "Version.hpp"
+#include "material/MaterialLaws.hpp"
 #include "model/Defaults.hpp"
 #include "model/ModelFields.hpp"
 
@@ -338,6 +339,28 @@ void read_fields_over(Parser& p, const json& o, const std::string& path, const s
     }
 }
 
+/// The law a material names: "law", or the older `"plastic": false` (elastic) and true
+/// (Mohr–Coulomb); Mohr–Coulomb when it says nothing.
+const MaterialLaw* material_law(Parser& p, const json& o, const std::string& path) {
+    if (o.contains("law") && o.contains("plastic")) {
+        p.error(path, "give either \"law\" or the older \"plastic\", not both");
+        return nullptr;
+    }
+    if (o.contains("plastic")) return find_material_law(p.boolean(o, path, "plastic", true) ? "mohr-coulomb" : "elastic");
+    const std::string key = p.string(o, path, "law", std::string(material_laws().front()->key));
+    const MaterialLaw* law = find_material_law(key);
+    if (!law) p.error(path + "/law", "unknown law " + json(key).dump() + " (the laws are " + material_law_keys() + ")");
+    return law;
+}
+
+/// The keys a material with `law` may have. `"plastic": false` files of the earlier format
+/// may still carry Mohr–Coulomb strengths; they are read past.
+std::vector<const char*> material_keys(const MaterialLaw& law, bool legacy_elastic) {
+    std::vector<const char*> keys = keys_of(material_fields(), {"name", "law", "unit_weight", "plastic", "reduce"});
+    for (const NumberField& f : (legacy_elastic ? *find_material_law("mohr-coulomb") : law).fields) keys.push_back(f.key);
+    return keys;
+}
+
 void parse_materials(Parser& p, const json& root, Model& m) {
     const json& list = p.array(root, "", "materials");
     if (list.empty()) p.error("/materials", "at least one material is required");
@@ -345,14 +368,20 @@ void parse_materials(Parser& p, const json& root, Model& m) {
         const std::string path = "/materials/" + std::to_string(i);
         const json& o = list[i];
         Material mat;
-        if (!p.is_object(o, path)) { m.materials.push_back(mat); continue; }
-        p.check_keys(o, path, keys_of(material_fields(), {"name", "unit_weight", "plastic", "reduce"}));
+        const MaterialLaw* law = p.is_object(o, path) ? material_law(p, o, path) : nullptr;
+        if (!law) { m.materials.push_back(mat); continue; }
+        mat.law = law->key;
+        p.check_keys(o, path, material_keys(*law, o.contains("plastic")));
         mat.name = p.string(o, path, "name", std::nullopt);
         read_fields(p, o, path, material_fields(), mat);
+        for (const NumberField& f : law->fields) {
+            std::optional<double> fallback;
+            if (f.default_value) fallback = to_file_unit(f.quantity, *f.default_value);
+            mat.parameters[f.key] = from_file_unit(f.quantity, p.number(o, path, f.key, fallback));
+        }
         if (o.contains("density") && o.contains("unit_weight"))
             p.error(path, "give either density or unit_weight, not both");
         if (o.contains("unit_weight")) mat.density = p.number(o, path, "unit_weight", 0.0) / standard_gravity;
-        mat.plastic = p.boolean(o, path, "plastic", true);
         mat.reduce = p.boolean(o, path, "reduce", true);
         m.materials.push_back(mat);
     }

@@ -2,11 +2,13 @@
 
 #include "io/AtomicFile.hpp"
 #include "Version.hpp"
+#include "material/MaterialLaws.hpp"
 #include "model/Defaults.hpp"
 #include "model/ModelFields.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -80,8 +82,11 @@ json to_json(const Model& m) {
     for (const Material& mat : m.materials) {
         json o;
         o["name"] = mat.name;
+        o["law"] = mat.law;
         write_fields(mat, material_fields(), o);
-        o["plastic"] = mat.plastic;
+        if (const MaterialLaw* law = find_material_law(mat.law))
+            for (const NumberField& f : law->fields)
+                if (const double v = law_value(mat, f); std::isfinite(v)) o[f.key] = to_file_unit(f.quantity, v);
         if (!mat.reduce) o["reduce"] = false;
         materials.push_back(std::move(o));
     }

@@ -2,8 +2,8 @@
 /// \file ConstitutiveLaw.hpp
 /// What element assembly needs from a material: its elastic stiffness, the return of a trial
 /// stress onto what the material can carry, and the algorithmic tangent of that return. Mohr–
-/// Coulomb (MohrCoulomb.hpp) is one implementation, linear elasticity (ElasticLaw.hpp) another;
-/// make_constitutive_law picks one per material. Laws are const: they hold no per-point state.
+/// Coulomb (MohrCoulomb.hpp), Hoek–Brown (HoekBrown.hpp) and linear elasticity (ElasticLaw.hpp)
+/// implement it; make_constitutive_law (MaterialLaws.hpp) picks one per material. Laws are const: they hold no per-point state.
 
 #include "model/Model.hpp"
 
@@ -43,8 +43,5 @@ public:
     /// True when the tangent is symmetric (associated flow): a Cholesky factor can use it.
     virtual bool symmetric_tangent() const = 0;
 };
-
-/// The law of a material: Mohr–Coulomb when it is plastic and `plasticity` is on, elastic otherwise.
-std::unique_ptr<ConstitutiveLaw> make_constitutive_law(const Material& material, bool plasticity);
 
 }  // namespace mcdda

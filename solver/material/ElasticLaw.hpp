@@ -1,9 +1,11 @@
 #pragma once
 /// \file ElasticLaw.hpp
-/// Linear elasticity in plane strain: the trial stress is the stress, the tangent is D. For
-/// materials marked `"plastic": false` and for analyses with plasticity off.
+/// Linear elasticity in plane strain: the trial stress is the stress, the tangent is D. The law
+/// "elastic" (also what `"plastic": false` reads as) and every material of an analysis with
+/// plasticity off.
 
 #include "material/ConstitutiveLaw.hpp"
+#include "material/MaterialLaw.hpp"
 
 namespace mcdda {
 
@@ -19,5 +21,8 @@ public:
 private:
     Eigen::Matrix3d elasticity_;
 };
+
+/// Its declaration: no fields of its own.
+const MaterialLaw& elastic_law();
 
 }  // namespace mcdda

@@ -2,6 +2,7 @@
 
 #include "material/Elasticity.hpp"
 #include "material/PrincipalFrame.hpp"
+#include "model/Defaults.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -233,6 +234,48 @@ ReturnResult HoekBrown::return_map(const PlaneStress& trial, Eigen::Matrix3d* ta
     result.equivalent_plastic_strain = std::sqrt(2.0 / 3.0) * std::hypot(best.flow[0], best.flow[1], best.flow[2]);
     if (tangent) *tangent = frame.tangent(best.derivative, returned, elasticity_, shear_modulus_, tolerance_);
     return result;
+}
+
+namespace {
+
+std::unique_ptr<ConstitutiveLaw> create_hoek_brown(const Material& m) {
+    const HoekBrownParameters p = hoek_brown_parameters(m.parameter("gsi"), m.parameter("mi"), m.parameter("disturbance"));
+    return std::make_unique<HoekBrown>(m.young_modulus, m.poisson_ratio, m.parameter("uniaxial_strength"), p,
+                                       m.parameter("dilation_angle"), m.parameter("tensile_strength"));
+}
+
+}  // namespace
+
+const MaterialLaw& hoek_brown_law() {
+    static const MaterialLaw law{
+        "hoek-brown", MCDDA_TRANSLATABLE("ModelFields", "Hoek–Brown"),
+        MCDDA_TRANSLATABLE("ModelFields", "Generalised Hoek–Brown rock mass (2002): strength from σci, GSI, mi and the disturbance D"),
+        {
+            {"uniaxial_strength", "uniaxial compressive strength", MCDDA_TRANSLATABLE("ModelFields", "Intact strength σci"),
+             Quantity::Stress, std::nullopt, Bound{0.0, false}, std::nullopt, max_stress, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Uniaxial compressive strength σci of the intact rock, > 0")},
+            {"gsi", "GSI", MCDDA_TRANSLATABLE("ModelFields", "GSI"), Quantity::Ratio, std::nullopt, Bound{0.0, true},
+             Bound{100.0, true}, 0.0, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Geological Strength Index of the rock mass, 0 to 100 (100: intact rock)")},
+            {"mi", "mi", MCDDA_TRANSLATABLE("ModelFields", "Intact constant mi"), Quantity::Ratio, std::nullopt, Bound{0.0, false},
+             std::nullopt, 100.0, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Hoek–Brown constant mi of the intact rock, > 0 (about 4 for claystone to 33 for granite)")},
+            {"disturbance", "disturbance factor", MCDDA_TRANSLATABLE("ModelFields", "Disturbance D"), Quantity::Ratio, 0.0,
+             Bound{0.0, true}, Bound{1.0, true}, 0.0, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Disturbance factor D by blasting and stress relaxation, 0 (undisturbed) to 1")},
+            {"dilation_angle", "dilation angle", MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ"), Quantity::Angle, 0.0,
+             Bound{0.0, true}, Bound{pi / 2, false}, 0.0, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ of the plastic flow (constant), in [0°, 90°)")},
+            {"tensile_strength", "tensile strength", MCDDA_TRANSLATABLE("ModelFields", "Tension cut-off"), Quantity::Stress, 0.0,
+             Bound{0.0, true}, std::nullopt, max_stress, MCDDA_TRANSLATABLE("ModelFields", "the Hoek–Brown tensile strength"),
+             MCDDA_TRANSLATABLE("ModelFields", "A tension cut-off below the Hoek–Brown tensile strength s σci/mb, ≥ 0; 0 = none but the criterion's own")},
+        },
+        nullptr,
+        nullptr,
+        [](const Material&) { return true; },
+        create_hoek_brown,
+    };
+    return law;
 }
 
 }  // namespace mcdda

@@ -17,6 +17,7 @@
 /// never associated; tension cut-off σ1 ≤ σt when 0 < σt < s σci/mb.
 
 #include "material/ConstitutiveLaw.hpp"
+#include "material/MaterialLaw.hpp"
 
 #include <Eigen/Dense>
 
@@ -119,5 +120,9 @@ private:
     std::array<Corner, 8> corners_;  ///< with a cut-off: by size, then as Mohr–Coulomb orders its planes
     int corner_count_ = 0;
 };
+
+/// Its declaration: "hoek-brown", with "uniaxial_strength", "gsi", "mi", "disturbance",
+/// "dilation_angle" and "tensile_strength".
+const MaterialLaw& hoek_brown_law();
 
 }  // namespace mcdda

@@ -1,6 +1,8 @@
 #include "material/MohrCoulomb.hpp"
 
 #include "material/Elasticity.hpp"
+#include "material/StrengthReduction.hpp"
+#include "model/Defaults.hpp"
 #include "material/PrincipalFrame.hpp"
 
 #include <Eigen/Dense>
@@ -103,8 +105,8 @@ MohrCoulomb::MohrCoulomb(double E, double nu, double c, double phi, double psi, 
 }
 
 MohrCoulomb::MohrCoulomb(const Material& m)
-    : MohrCoulomb(m.young_modulus, m.poisson_ratio, m.cohesion, m.friction_angle, m.dilation_angle,
-                  m.tensile_strength) {}
+    : MohrCoulomb(m.young_modulus, m.poisson_ratio, m.parameter("cohesion"), m.parameter("friction_angle"),
+                  m.parameter("dilation_angle"), m.parameter("tensile_strength")) {}
 
 std::array<double, 3> MohrCoulomb::principal(const PlaneStress& s) {
     const double centre = 0.5 * (s.xx + s.yy);
@@ -217,6 +219,65 @@ ReturnResult MohrCoulomb::return_map(const PlaneStress& trial, Eigen::Matrix3d* 
 
     if (tangent) *tangent = frame.tangent(sorted_derivative, returned, elasticity_, shear_modulus_, tolerance_);
     return result;
+}
+
+namespace {
+
+std::string degrees(double radians) { return value_text(Quantity::Angle, radians); }
+
+void check_mohr_coulomb(const Material& m, bool plasticity, std::vector<LawProblem>& problems) {
+    const double phi = m.parameter("friction_angle"), psi = m.parameter("dilation_angle");
+    if (psi >= 0.0 && psi > phi)
+        problems.push_back({"dilation_angle", "dilation angle " + degrees(psi) + " exceeds the friction angle " + degrees(phi)});
+    if (plasticity && m.parameter("cohesion") == 0.0 && phi == 0.0)
+        problems.push_back({"", "a plastic material needs cohesion or friction (both are zero)"});
+}
+
+/// c/F, atan(tan φ/F), σt/F and ψ ≤ the reduced φ; with Davis's treatment of non-associated
+/// flow the associated equivalent of those (material/StrengthReduction.hpp).
+Material reduced_mohr_coulomb(const Material& m, double factor, AnalysisSettings::NonAssociatedFlow flow) {
+    Material r = m;
+    double c = m.parameter("cohesion") / factor;
+    double phi = std::atan(std::tan(m.parameter("friction_angle")) / factor);
+    double psi = std::min(m.parameter("dilation_angle"), phi);
+    if (flow == AnalysisSettings::NonAssociatedFlow::Davis && psi < phi) {
+        const double beta = davis_factor(phi, psi);
+        c *= beta;
+        phi = std::atan(beta * std::tan(phi));
+        psi = phi;
+    }
+    r.parameters["cohesion"] = c;
+    r.parameters["friction_angle"] = phi;
+    r.parameters["dilation_angle"] = psi;
+    r.parameters["tensile_strength"] = m.parameter("tensile_strength") / factor;
+    return r;
+}
+
+}  // namespace
+
+const MaterialLaw& mohr_coulomb_law() {
+    static const MaterialLaw law{
+        "mohr-coulomb", MCDDA_TRANSLATABLE("ModelFields", "Mohr–Coulomb"),
+        MCDDA_TRANSLATABLE("ModelFields", "Perfectly plastic with cohesion c and friction angle φ, non-associated flow by ψ, optional tension cut-off"),
+        {
+            {"cohesion", "cohesion", MCDDA_TRANSLATABLE("ModelFields", "Cohesion c"), Quantity::Stress, 0.0, Bound{0.0, true},
+             std::nullopt, max_stress, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Mohr–Coulomb cohesion c, ≥ 0")},
+            {"friction_angle", "friction angle", MCDDA_TRANSLATABLE("ModelFields", "Friction angle φ"), Quantity::Angle, 0.0,
+             Bound{0.0, true}, Bound{pi / 2, false}, 0.0, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Mohr–Coulomb friction angle φ, in [0°, 90°)")},
+            {"dilation_angle", "dilation angle", MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ"), Quantity::Angle, 0.0,
+             Bound{0.0, true}, std::nullopt, 0.0, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)")},
+            {"tensile_strength", "tensile strength", MCDDA_TRANSLATABLE("ModelFields", "Tensile strength"), Quantity::Stress, 0.0,
+             Bound{0.0, true}, std::nullopt, max_stress, nullptr,
+             MCDDA_TRANSLATABLE("ModelFields", "Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension")},
+        },
+        check_mohr_coulomb,
+        reduced_mohr_coulomb,
+        [](const Material& m) { return m.parameter("dilation_angle") < m.parameter("friction_angle"); },
+        [](const Material& m) -> std::unique_ptr<ConstitutiveLaw> { return std::make_unique<MohrCoulomb>(m); },
+    };
+    return law;
 }
 
 }  // namespace mcdda

@@ -11,6 +11,7 @@
 /// plastic potential g: the same with ψ; tension cut-off σ1 ≤ σt when σt > 0.
 
 #include "material/ConstitutiveLaw.hpp"
+#include "material/MaterialLaw.hpp"
 #include "model/Model.hpp"
 
 #include <Eigen/Dense>
@@ -76,5 +77,9 @@ private:
     std::array<ActiveSet, 41> sets_;  ///< the regular sets of ≤ 3 planes, by size, then by mask
     int set_count_ = 0;
 };
+
+/// Its declaration: "mohr-coulomb", with "cohesion", "friction_angle", "dilation_angle" and
+/// "tensile_strength".
+const MaterialLaw& mohr_coulomb_law();
 
 }  // namespace mcdda

@@ -9,9 +9,8 @@ Material default_rock(const std::string& name)
     rock.young_modulus = 10e9;
     rock.poisson_ratio = 0.25;
     rock.density = 25.5e3 / standard_gravity;
-    rock.cohesion = 1e6;
-    rock.friction_angle = 35.0 * degree;
-    rock.dilation_angle = 0.0;
+    rock.law = "mohr-coulomb";
+    rock.parameters = {{"cohesion", 1e6}, {"friction_angle", 35.0 * degree}, {"dilation_angle", 0.0}, {"tensile_strength", 0.0}};
     return rock;
 }
 

@@ -55,10 +55,22 @@ std::array<double, 4> Model::bounds() const {
     return box;
 }
 
+std::string joint_path(const Model& model, int joint) {
+    if (joint < 0 || joint >= static_cast<int>(model.joints.size())) return "";
+    const Joint& j = model.joints[joint];
+    if (j.joint_set >= 0) return "/joint_sets/" + std::to_string(j.joint_set);
+    return "/joints/" + std::to_string(joint);
+}
+
+double Material::parameter(const std::string& key, double fallback) const {
+    const auto it = parameters.find(key);
+    return it == parameters.end() ? fallback : it->second;
+}
+
 ElementType Model::element() const {
     if (mesh.element != ElementType::Automatic) return mesh.element;
     const bool may_yield = analysis.plasticity && std::any_of(materials.begin(), materials.end(),
-                                                              [](const Material& m) { return m.plastic; });
+                                                              [](const Material& m) { return m.may_yield(); });
     return may_yield ? ElementType::T6 : ElementType::T3;
 }
 

@@ -11,6 +11,7 @@
 ///  - Voigt order of plane stress components: (xx, yy, xy).
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,18 +30,26 @@ double distance_to_segment(Point2 p, Point2 a, Point2 b);
 /// A closed ring of vertices; the closing edge (last → first) is implicit.
 using Ring = std::vector<Point2>;
 
-/// Rock or soil of a region: linear elastic, Mohr–Coulomb perfectly plastic.
+/// Rock or soil of a region: its elasticity and weight, and the constitutive law that says what
+/// stress it can carry. The law's own numbers (c and φ for Mohr–Coulomb, σci and GSI for
+/// Hoek–Brown) are kept by their keys in the model file; the law declares which they are, their
+/// units, ranges and defaults (material/MaterialLaw.hpp), so this record does not change when a
+/// law is added.
 struct Material {
     std::string name;
+    std::string law = "mohr-coulomb";  ///< key of its constitutive law (material/MaterialLaws.hpp)
     double young_modulus = 0.0;     ///< E (Pa), > 0
     double poisson_ratio = 0.0;     ///< ν, in (−1, 0.5)
     double density = 0.0;           ///< ρ (kg/m³); from unit weight as γ/g when given so
-    double cohesion = 0.0;          ///< c (Pa), ≥ 0
-    double friction_angle = 0.0;    ///< φ (rad), in [0, π/2)
-    double dilation_angle = 0.0;    ///< ψ (rad), in [0, φ]
-    double tensile_strength = 0.0;  ///< tension cut-off (Pa), ≥ 0; 0 = no cut-off beyond MC apex
-    bool plastic = true;            ///< false: stays elastic whatever the stress
+    /// The law's parameters by key, in the model's units (Pa, radians): for Mohr–Coulomb
+    /// "cohesion", "friction_angle", "dilation_angle", "tensile_strength".
+    std::map<std::string, double> parameters;
     bool reduce = true;             ///< strength reduction divides its strength (false: a footing, a lining)
+
+    /// The parameter `key`, or `fallback` when the material does not give it.
+    double parameter(const std::string& key, double fallback = 0.0) const;
+    /// Whether its law can yield: every law but "elastic" (the law that never leaves the elastic range).
+    bool may_yield() const { return law != "elastic"; }
 };
 
 /// Strength and stiffness of the contacts along a joint (or a region interface).
@@ -303,6 +312,9 @@ struct Model {
     /// plasticity is on and some material may yield (T3 locks under plastic flow), T3 otherwise.
     ElementType element() const;
 };
+
+/// JSON pointer of a joint: "/joints/i" for explicit joints, "/joint_sets/k" for generated ones.
+std::string joint_path(const Model& model, int joint);
 
 /// The regions absent while stage `stage` runs, after its own excavations and activations: those
 /// excavated by it or an earlier stage and not activated again since, and those a later stage

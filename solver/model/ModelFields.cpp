@@ -29,18 +29,6 @@ const std::vector<RecordField<Material>>& material_fields()
         {{"density", "density", MCDDA_TRANSLATABLE("ModelFields", "Unit weight γ"), Quantity::Density, 0.0, from(0.0), std::nullopt, max_density,
           nullptr, MCDDA_TRANSLATABLE("ModelFields", "Unit weight γ = ρ g (the density is γ / 9.81 m/s²); loads the model through gravity")},
          &Material::density},
-        {{"cohesion", "cohesion", MCDDA_TRANSLATABLE("ModelFields", "Cohesion c"), Quantity::Stress, 0.0, from(0.0), std::nullopt, max_stress, nullptr,
-          MCDDA_TRANSLATABLE("ModelFields", "Mohr–Coulomb cohesion c, ≥ 0")},
-         &Material::cohesion},
-        {{"friction_angle", "friction angle", MCDDA_TRANSLATABLE("ModelFields", "Friction angle φ"), Quantity::Angle, 0.0, from(0.0), below(pi / 2),
-          0.0, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Mohr–Coulomb friction angle φ, in [0°, 90°)")},
-         &Material::friction_angle},
-        {{"dilation_angle", "dilation angle", MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ"), Quantity::Angle, 0.0, from(0.0), std::nullopt,
-          0.0, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)")},
-         &Material::dilation_angle},
-        {{"tensile_strength", "tensile strength", MCDDA_TRANSLATABLE("ModelFields", "Tensile strength"), Quantity::Stress, 0.0, from(0.0),
-          std::nullopt, max_stress, nullptr, MCDDA_TRANSLATABLE("ModelFields", "Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension")},
-         &Material::tensile_strength},
     };
     return fields;
 }

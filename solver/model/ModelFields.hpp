@@ -58,6 +58,8 @@ struct RecordField {
     double Record::*member;
 };
 
+/// The fields every material has (elasticity and weight); a law's own fields are declared by the
+/// law (material/MaterialLaw.hpp).
 const std::vector<RecordField<Material>>& material_fields();
 const std::vector<RecordField<JointMaterial>>& joint_material_fields();
 const std::vector<RecordField<Bolt>>& bolt_fields();

@@ -1,7 +1,7 @@
 #include "run/Simulation.hpp"
 #include "run/Stopwatch.hpp"
 
-#include "model/StrengthReduction.hpp"
+#include "material/StrengthReduction.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -99,7 +99,7 @@ void Simulation::set_material_scales(const std::vector<int>& materials) {
     double stiffest = 0.0;
     for (int i : materials) {
         const Material& m = model_.materials[i];
-        may_yield_ = may_yield_ || (model_.analysis.plasticity && m.plastic);
+        may_yield_ = may_yield_ || (model_.analysis.plasticity && m.may_yield());
         stiffest = std::max(stiffest, m.young_modulus);
     }
     // Automatic penalty: four times the stiffest Young's modulus (N/m per m thickness). The

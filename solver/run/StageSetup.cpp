@@ -4,7 +4,7 @@
 
 #include "run/Simulation.hpp"
 
-#include "model/StrengthReduction.hpp"
+#include "material/StrengthReduction.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,7 @@
 #include "run/StrengthReduction.hpp"
 
+#include "material/MaterialLaws.hpp"
+
 #include <algorithm>
 
 #include <chrono>
@@ -146,7 +148,8 @@ RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callback
         safety_stage_ >= 0 ? model_.model.stages[safety_stage_].analysis : model_.model.analysis;
     const bool non_associated = std::any_of(model_.model.materials.begin(), model_.model.materials.end(),
                                             [](const Material& m) {
-                                                return m.reduce && m.plastic && m.dilation_angle < m.friction_angle;
+                                                const MaterialLaw* law = find_material_law(m.law);
+                                                return m.reduce && law && law->non_associated && law->non_associated(m);
                                             });
     if (non_associated && settings.plasticity)
         factor_.non_associated_flow = non_associated_flow_name(settings.non_associated_flow);

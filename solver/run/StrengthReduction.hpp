@@ -1,7 +1,7 @@
 #pragma once
 /// \file StrengthReduction.hpp
 /// The factor of safety by strength reduction (Griffiths & Lane 1999; as RS2, PLAXIS and FLAC
-/// compute it): the model's strengths are divided by trial factors F (model/StrengthReduction.hpp)
+/// compute it): the model's strengths are divided by trial factors F (material/StrengthReduction.hpp)
 /// and the model is solved again for each; the largest F at which it stands is its factor of
 /// safety. The search brackets the factor (×1.5 or ÷1.5 from 1 until one trial stands and one
 /// does not; factors below 1 too) and bisects the bracket until it is narrower than

@@ -212,7 +212,7 @@ private slots:
         Material m = original.materials[0];
         m.name = "changed";
         m.young_modulus *= 2;
-        m.friction_angle = 0.5;
+        m.parameters["friction_angle"] = 0.5;
         document.setMaterial(0, m);
         AnalysisSettings a = original.analysis;
         a.steps = 1234;

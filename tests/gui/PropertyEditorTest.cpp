@@ -5,6 +5,7 @@
 #include "MainWindow.hpp"
 #include "WindowProbe.hpp"
 #include "document/ModelDocument.hpp"
+#include "material/MaterialLaws.hpp"
 #include "model/ModelFields.hpp"
 #include "panels/BoltForm.hpp"
 #include "panels/PropertyEditor.hpp"
@@ -52,6 +53,7 @@ private slots:
     void viewFollowsEditsOffTheGuiThread();
     void everyFieldExplainsItself();
     void formsFollowTheFieldDeclarations();
+    void theMaterialFormShowsTheFieldsOfTheChosenLaw();
     void boltFormEditsBolts();
     void unitsChosenReachFormsAndTree();
 };
@@ -85,12 +87,12 @@ void PropertyEditorTest::refusesImpossibleValues()
     QCOMPARE(doc->undoStack()->count(), commands);
 
     nu->setValue(before.poisson_ratio);
-    auto* phi = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_friction_angle"));
+    auto* phi = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_mohr_coulomb_friction_angle"));
     QVERIFY(phi->suffix().contains(QStringLiteral("°")));
     phi->setValue(90.0);
     QVERIFY(!editor->applyMaterial());
     QVERIFY2(editor->materialStatus().contains(QStringLiteral("friction")), qPrintable(editor->materialStatus()));
-    QCOMPARE(doc->model().materials[0].friction_angle, before.friction_angle);
+    QCOMPARE(doc->model().materials[0].parameter("friction_angle"), before.parameter("friction_angle"));
 
     phi->setValue(35.0);
     auto* e = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_young_modulus"));
@@ -108,26 +110,26 @@ void PropertyEditorTest::appliesCohesionWithUndo()
     QVERIFY(window);
     gui::ModelDocument* doc = window->document();
     PropertyEditor* editor = window->propertyEditor();
-    const double old_cohesion = doc->model().materials[0].cohesion;
+    const double old_cohesion = doc->model().materials[0].parameter("cohesion");
     const double old_e = doc->model().materials[0].young_modulus;
     const double old_density = doc->model().materials[0].density;
-    auto* c = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_cohesion"));
+    auto* c = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_mohr_coulomb_cohesion"));
     QVERIFY(c);
     QVERIFY(c->suffix().contains(QStringLiteral("kPa")));
     QCOMPARE(c->value(), old_cohesion / 1e3);
     c->setValue(200.0);
     editor->findChild<QPushButton*>(QStringLiteral("materialApply"))->click();
-    QCOMPARE(doc->model().materials[0].cohesion, 2e5);
+    QCOMPARE(doc->model().materials[0].parameter("cohesion"), 2e5);
     QCOMPARE(doc->model().materials[0].young_modulus, old_e);   // untouched fields stay exact
     QCOMPARE(doc->model().materials[0].density, old_density);
     QVERIFY(editor->materialStatus().contains(QStringLiteral("Applied")));
     QAction* undo = window->findChild<QAction*>(QStringLiteral("undoAction"));
     QVERIFY(undo->text().contains(QStringLiteral("material")));
     undo->trigger();
-    QCOMPARE(doc->model().materials[0].cohesion, old_cohesion);
+    QCOMPARE(doc->model().materials[0].parameter("cohesion"), old_cohesion);
     QCOMPARE(c->value(), old_cohesion / 1e3);  // the form follows the undo
     window->findChild<QAction*>(QStringLiteral("redoAction"))->trigger();
-    QCOMPARE(doc->model().materials[0].cohesion, 2e5);
+    QCOMPARE(doc->model().materials[0].parameter("cohesion"), 2e5);
     QTRY_VERIFY(settled(*window));
 }
 
@@ -309,7 +311,7 @@ void PropertyEditorTest::viewFollowsEditsOffTheGuiThread()
     const auto before = window->modelView()->scene();
 
     // An edit returns at once; the previous picture stays until the new one is ready.
-    auto* c = window->propertyEditor()->findChild<QDoubleSpinBox*>(QStringLiteral("material_cohesion"));
+    auto* c = window->propertyEditor()->findChild<QDoubleSpinBox*>(QStringLiteral("material_mohr_coulomb_cohesion"));
     c->setValue(200.0);
     QVERIFY(window->propertyEditor()->applyMaterial());
     QVERIFY(window->isPreprocessing());
@@ -330,9 +332,9 @@ void PropertyEditorTest::viewFollowsEditsOffTheGuiThread()
     QVERIFY(ticks > 0);
     const auto after = window->modelView()->scene();
     QVERIFY(after != before);
-    QCOMPARE(after->model.materials[0].cohesion, 3e5);
+    QCOMPARE(after->model.materials[0].parameter("cohesion"), 3e5);
     QVERIFY(window->statisticsText().contains(QStringLiteral("elements")));
-    QCOMPARE(doc->model().materials[0].cohesion, 3e5);
+    QCOMPARE(doc->model().materials[0].parameter("cohesion"), 3e5);
     QVERIFY(run->isEnabled());
 
     // Removing the region empties the picture (pixel check) after the background work.
@@ -396,6 +398,60 @@ void check_declared(PropertyEditor* editor, const std::vector<RecordField<Record
 }
 
 }  // namespace
+
+// The law chooser offers every law the solver declares; the form shows exactly the chosen law's
+// fields (label, help) and Apply stores the law with them.
+void PropertyEditorTest::theMaterialFormShowsTheFieldsOfTheChosenLaw()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    QTRY_VERIFY2(settled(*window), qPrintable(window->messages()));
+    PropertyEditor* editor = window->propertyEditor();
+    window->show();
+    auto* chooser = editor->findChild<QComboBox*>(QStringLiteral("materialLaw"));
+    QVERIFY(chooser);
+    QCOMPARE(chooser->count(), static_cast<int>(material_laws().size()));
+    auto visible_fields = [&](const MaterialLaw& law) {
+        const QString prefix = QStringLiteral("material_") + QString::fromLatin1(law.key).replace(QLatin1Char('-'), QLatin1Char('_')) + QLatin1Char('_');
+        int visible = 0;
+        for (const NumberField& f : law.fields) {
+            auto* box = editor->findChild<QDoubleSpinBox*>(prefix + QString::fromLatin1(f.key));
+            if (!box) return -1;
+            auto* label = qobject_cast<QLabel*>(qobject_cast<QFormLayout*>(box->parentWidget()->layout())->labelForField(box));
+            if (!label || !label->text().startsWith(QString::fromUtf8(f.label)) || box->toolTip() != QString::fromUtf8(f.help))
+                return -1;
+            if (!box->isHidden() && !label->isHidden()) ++visible;
+        }
+        return visible;
+    };
+    const MaterialLaw& mc = *find_material_law("mohr-coulomb");
+    const MaterialLaw& hb = *find_material_law("hoek-brown");
+    QCOMPARE(chooser->currentData().toString(), QStringLiteral("mohr-coulomb"));
+    QCOMPARE(visible_fields(mc), static_cast<int>(mc.fields.size()));
+    QCOMPARE(visible_fields(hb), 0);
+
+    chooser->setCurrentIndex(chooser->findData(QStringLiteral("hoek-brown")));
+    QCOMPARE(visible_fields(mc), 0);
+    QCOMPARE(visible_fields(hb), static_cast<int>(hb.fields.size()));
+    QCOMPARE(window->document()->model().materials[0].law, std::string("mohr-coulomb"));  // not applied yet
+    QVERIFY(!editor->applyMaterial());  // σci and mi are still 0
+    QVERIFY2(editor->materialStatus().contains(QStringLiteral("uniaxial compressive strength")), qPrintable(editor->materialStatus()));
+    editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_hoek_brown_uniaxial_strength"))
+        ->setValue(50e6 / gui::form::form_unit_factor(Quantity::Stress));
+    editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_hoek_brown_gsi"))->setValue(60.0);
+    editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_hoek_brown_mi"))->setValue(10.0);
+    QVERIFY2(editor->applyMaterial(), qPrintable(editor->materialStatus()));
+    const Material& applied = window->document()->model().materials[0];
+    QCOMPARE(applied.law, std::string("hoek-brown"));
+    QCOMPARE(applied.parameter("uniaxial_strength"), 50e6);
+    QCOMPARE(applied.parameter("gsi"), 60.0);
+    QCOMPARE(applied.parameter("disturbance"), 0.0);
+
+    chooser->setCurrentIndex(chooser->findData(QStringLiteral("elastic")));
+    QVERIFY(editor->applyMaterial());
+    QCOMPARE(window->document()->model().materials[0].law, std::string("elastic"));
+    QCOMPARE(visible_fields(mc) + visible_fields(hb), 0);
+}
 
 // The Material, Joint material and Bolts forms are built from the field declarations
 // the reader, writer and validator use (model/ModelFields.hpp).
@@ -473,7 +529,7 @@ void PropertyEditorTest::unitsChosenReachFormsAndTree()
     QTRY_VERIFY(settled(window));
     PropertyEditor* editor = window.propertyEditor();
     const Material rock = window.document()->model().materials[0];
-    auto* cohesion = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_cohesion"));
+    auto* cohesion = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_mohr_coulomb_cohesion"));
     auto* modulus = editor->findChild<QDoubleSpinBox*>(QStringLiteral("material_young_modulus"));
     auto* pressure = editor->findChild<QDoubleSpinBox*>(QStringLiteral("loadPressure"));
     QVERIFY(cohesion && modulus && pressure);
@@ -488,14 +544,14 @@ void PropertyEditorTest::unitsChosenReachFormsAndTree()
 
     mpa->trigger();
     QVERIFY2(cohesion->suffix().contains(QStringLiteral("MPa")), qPrintable(cohesion->suffix()));
-    QCOMPARE(cohesion->value(), rock.cohesion / 1e6);
+    QCOMPARE(cohesion->value(), rock.parameter("cohesion") / 1e6);
     QVERIFY(modulus->suffix().contains(QStringLiteral("MPa")));
     QVERIFY(editor->findChild<QDoubleSpinBox*>(QStringLiteral("stressXX"))->suffix().contains(QStringLiteral("MPa")));
     QVERIFY(pressure->suffix().contains(QStringLiteral("MPa")));
     QCOMPARE(pressure_row(QStringLiteral("MPa")), QStringLiteral("pressure 2 MPa"));
     cohesion->setValue(0.25);  // MPa
     QVERIFY(editor->applyMaterial());
-    QCOMPARE(window.document()->model().materials[0].cohesion, 0.25e6);
+    QCOMPARE(window.document()->model().materials[0].parameter("cohesion"), 0.25e6);
 
     kpa->trigger();
     QVERIFY(cohesion->suffix().contains(QStringLiteral("kPa")));

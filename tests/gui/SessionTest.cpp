@@ -266,7 +266,7 @@ void SessionTest::newModelDefaults()
     const Model m = new_model("rock", "joint");
     QCOMPARE(m.materials.size(), std::size_t(1));
     QCOMPARE(m.materials[0].density * standard_gravity, 25.5e3);  // typed as 25.5 kN/m³
-    QCOMPARE(m.materials[0].friction_angle, 35.0 * degree);
+    QCOMPARE(m.materials[0].parameter("friction_angle"), 35.0 * degree);
     QCOMPARE(m.joint_materials[0].friction_angle, 30.0 * degree);
     QCOMPARE(m.default_joint_material, 0);
     QCOMPARE(m.gravity.y, -standard_gravity);

@@ -15,9 +15,7 @@ Model tunnel_model()
     rock.young_modulus = 5e9;
     rock.poisson_ratio = 0.25;
     rock.density = 2500;
-    rock.cohesion = 2e6;
-    rock.friction_angle = 35 * degree;
-    rock.tensile_strength = 0.5e6;
+    rock.parameters = {{"cohesion", 2e6}, {"friction_angle", 35 * degree}, {"dilation_angle", 0.0}, {"tensile_strength", 0.5e6}};
     m.materials.push_back(rock);
 
     JointMaterial joint_material;

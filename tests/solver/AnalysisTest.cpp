@@ -49,9 +49,9 @@ TEST(Analysis, BadInputIsAModelErrorNamingThePlace) {
         EXPECT_TRUE(has_errors(e.diagnostics));
     }
     Analysis a = Analysis::from_file(incline);
-    const double before = a.model().materials[0].cohesion;
+    const double before = a.model().materials[0].parameter("cohesion");
     EXPECT_THROW(a.set({"/materials/0/cohesion=\"strong\""}), ModelError);
-    EXPECT_EQ(a.model().materials[0].cohesion, before);  // unchanged
+    EXPECT_EQ(a.model().materials[0].parameter("cohesion"), before);  // unchanged
     a.set({"/materials/0/poisson_ratio=0.5"});             // readable, but impossible:
     EXPECT_TRUE(has_errors(a.check()));
     EXPECT_FALSE(a.ok());

@@ -3,6 +3,7 @@
 
 #include "fem/PlaneStrain.hpp"
 #include "material/ConstitutiveLaw.hpp"
+#include "material/MaterialLaws.hpp"
 #include "material/ElasticLaw.hpp"
 #include "material/MohrCoulomb.hpp"
 
@@ -19,10 +20,9 @@ Material rock(bool plastic, double friction_deg, double dilation_deg) {
     m.name = "rock";
     m.young_modulus = 5e9;
     m.poisson_ratio = 0.2;
-    m.cohesion = 0.5e6;
-    m.friction_angle = friction_deg * M_PI / 180.0;
-    m.dilation_angle = dilation_deg * M_PI / 180.0;
-    m.plastic = plastic;
+    m.law = plastic ? "mohr-coulomb" : "elastic";
+    m.parameters = {{"cohesion", 0.5e6}, {"friction_angle", friction_deg * M_PI / 180.0},
+                    {"dilation_angle", dilation_deg * M_PI / 180.0}};
     return m;
 }
 

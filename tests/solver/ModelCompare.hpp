@@ -26,11 +26,10 @@ public:
             eq(p + "/young_modulus", x.young_modulus, y.young_modulus);
             eq(p + "/poisson_ratio", x.poisson_ratio, y.poisson_ratio);
             eq(p + "/density", x.density, y.density);
-            eq(p + "/cohesion", x.cohesion, y.cohesion);
-            eq(p + "/friction_angle", x.friction_angle, y.friction_angle);
-            eq(p + "/dilation_angle", x.dilation_angle, y.dilation_angle);
-            eq(p + "/tensile_strength", x.tensile_strength, y.tensile_strength);
-            eq(p + "/plastic", x.plastic, y.plastic);
+            eq(p + "/law", x.law, y.law);
+            eq(p + "/parameters", static_cast<long>(x.parameters.size()), static_cast<long>(y.parameters.size()));
+            for (const auto& [key, value] : x.parameters) eq(p + "/" + key, value, y.parameter(key, -1.0));
+            eq(p + "/reduce", x.reduce, y.reduce);
         });
         list("/joint_materials", a.joint_materials, b.joint_materials,
              [this](const std::string& p, const JointMaterial& x, const JointMaterial& y) {

@@ -6,8 +6,9 @@
 #include "io/ModelReader.hpp"
 #include "io/ModelWriter.hpp"
 #include "model/Defaults.hpp"
+#include "material/MaterialLaws.hpp"
 #include "model/ModelFields.hpp"
-#include "model/ModelValidator.hpp"
+#include "check/ModelValidator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -61,7 +62,7 @@ void expect_same(const Record& a, const Record& b, const std::vector<RecordField
 TEST(ModelFields, EveryFieldRoundTripsThroughTheFile) {
     Model m = bolted_model();
     set_all(m.materials[0], material_fields());
-    m.materials[0].dilation_angle = 0.5 * m.materials[0].friction_angle;  // ψ ≤ φ
+    m.materials[0].parameters["dilation_angle"] = 0.5 * m.materials[0].parameter("friction_angle");  // ψ ≤ φ
     set_all(m.joint_materials[0], joint_material_fields());
     set_all(m.bolts[0], bolt_fields());
     set_all(m.analysis, analysis_fields());
@@ -106,7 +107,7 @@ TEST(ModelFields, EveryLowerBoundIsChecked) {
 
 // Ranges read as engineers write them, in the file's units.
 TEST(ModelFields, MessagesInTheFileUnits) {
-    const NumberField& phi = material_fields()[4].field;
+    const NumberField& phi = find_material_law("mohr-coulomb")->fields[1];
     ASSERT_STREQ(phi.key, "friction_angle");
     EXPECT_EQ(range_error(phi, 95.0 * degree), "friction angle must lie in [0°, 90°) (got 95°)");
     EXPECT_EQ(range_error(phi, 30.0 * degree), "");
@@ -121,4 +122,101 @@ TEST(ModelFields, MessagesInTheFileUnits) {
 TEST(ModelFields, UnknownKeysListTheDeclaredOnes) {
     const ReadResult r = read_model_text(square_model_json(), {"/materials/0/young_modulu=1e9"});
     EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/materials/0/young_modulu", "tensile_strength")) << all_messages(r.diagnostics);
+}
+
+namespace {
+
+/// The test model with its material under `law`, every field of the law at an allowed value.
+Model model_with_law(const MaterialLaw& law)
+{
+    Model m = bolted_model();
+    Material& mat = m.materials[0];
+    mat.law = law.key;
+    mat.parameters.clear();
+    for (std::size_t k = 0; k < law.fields.size(); ++k)
+        mat.parameters[law.fields[k].key] = allowed_value(law.fields[k], static_cast<int>(k));
+    if (mat.parameters.count("friction_angle")) {  // ψ ≤ φ, in whole degrees that read back exactly
+        mat.parameters["friction_angle"] = 25.0 * degree;
+        mat.parameters["dilation_angle"] = 10.0 * degree;
+    }
+    return m;
+}
+
+}  // namespace
+
+// Every law's own fields survive write → read exactly, under the law's key.
+TEST(MaterialLaws, EveryLawsFieldsRoundTripThroughTheFile) {
+    ASSERT_GE(material_laws().size(), 3u);
+    for (const MaterialLaw* law : material_laws()) {
+        const Model m = model_with_law(*law);
+        std::vector<Diagnostic> d;
+        validate_model(m, d);
+        EXPECT_FALSE(has_errors(d)) << law->key << "\n" << all_messages(d);
+        const std::string text = write_model_text(m);
+        EXPECT_NE(text.find(std::string("\"law\": \"") + law->key + "\""), std::string::npos) << text;
+        const ReadResult back = read_model_text(text);
+        ASSERT_TRUE(back.model.has_value()) << all_messages(back.diagnostics);
+        EXPECT_EQ(back.model->materials[0].law, law->key);
+        EXPECT_EQ(back.model->materials[0].parameters, m.materials[0].parameters) << law->key;
+    }
+}
+
+// A value below a law field's lower bound is an error at that field, naming it; a required
+// field that is missing is named with its law.
+TEST(MaterialLaws, EveryLowerBoundAndEveryRequiredFieldIsChecked) {
+    for (const MaterialLaw* law : material_laws()) {
+        for (const NumberField& f : law->fields) {
+            Model m = model_with_law(*law);
+            const std::string path = std::string("/materials/0/") + f.key;
+            if (f.lower) {
+                m.materials[0].parameters[f.key] = f.lower->value - 1.0;
+                std::vector<Diagnostic> d;
+                validate_model(m, d);
+                EXPECT_TRUE(has_diagnostic(d, Severity::Error, path, f.name)) << path << "\n" << all_messages(d);
+            }
+            m = model_with_law(*law);
+            m.materials[0].parameters.erase(f.key);
+            std::vector<Diagnostic> d;
+            validate_model(m, d);
+            if (f.default_value) {
+                EXPECT_FALSE(has_diagnostic(d, Severity::Error, path, "required")) << path << " has a default\n" << all_messages(d);
+            } else {
+                EXPECT_TRUE(has_diagnostic(d, Severity::Error, path, std::string("required by the ") + law->label))
+                    << path << "\n" << all_messages(d);
+                const ReadResult r = read_model_text(write_model_text(m));
+                EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, path, "missing")) << all_messages(r.diagnostics);
+            }
+        }
+    }
+}
+
+// "law" names the law; the earlier `"plastic": false` still reads, as elastic, strengths and all;
+// both at once, an unknown law, or another law's field are refused at their place.
+TEST(MaterialLaws, TheLawKeyAndTheEarlierPlasticFlag) {
+    // The square model's material with `more` keys (its own: E, ν, ρ, c, φ, ψ).
+    auto material = [](const std::string& more, bool strengths = true) {
+        return std::string(R"(/materials/0={"name": "rock", "young_modulus": 1e9, "poisson_ratio": 0.25, "density": 2500)") +
+               (strengths ? R"(, "cohesion": 1e6, "friction_angle": 30)" : "") + more + "}";
+    };
+    auto law_of = [](const std::string& override) {
+        const ReadResult r = read_model_text(square_model_json(), {override});
+        return r.model ? r.model->materials[0].law : "(refused) " + all_messages(r.diagnostics);
+    };
+    EXPECT_EQ(law_of(material("")), "mohr-coulomb");
+    EXPECT_EQ(law_of(material(R"(, "plastic": false)")), "elastic");
+    EXPECT_EQ(law_of(material(R"(, "plastic": true)")), "mohr-coulomb");
+    EXPECT_EQ(law_of(material(R"(, "law": "elastic")", false)), "elastic");
+    EXPECT_EQ(law_of(material(R"(, "law": "hoek-brown", "uniaxial_strength": 50e6, "gsi": 60, "mi": 10)", false)), "hoek-brown");
+
+    auto refusal = [](const std::string& override) {
+        return read_model_text(square_model_json(), {override}).diagnostics;
+    };
+    const auto both = refusal(material(R"(, "plastic": false, "law": "elastic")"));
+    EXPECT_TRUE(has_diagnostic(both, Severity::Error, "/materials/0", "not both")) << all_messages(both);
+    const auto unknown = refusal(material(R"(, "law": "cam-clay")"));
+    EXPECT_TRUE(has_diagnostic(unknown, Severity::Error, "/materials/0/law", "\"hoek-brown\"")) << all_messages(unknown);
+    const auto foreign = refusal(material(R"(, "law": "hoek-brown", "uniaxial_strength": 50e6, "gsi": 60, "mi": 10)"));
+    EXPECT_TRUE(has_diagnostic(foreign, Severity::Error, "/materials/0/cohesion", "unknown key")) << all_messages(foreign);
+    const auto missing = refusal(material(R"(, "law": "hoek-brown", "uniaxial_strength": 50e6, "mi": 10)", false));
+    EXPECT_TRUE(has_diagnostic(missing, Severity::Error, "/materials/0/gsi", "missing")) << all_messages(missing);
 }

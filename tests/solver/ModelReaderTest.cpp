@@ -2,7 +2,7 @@
 
 #include "TestModels.hpp"
 #include "io/ModelReader.hpp"
-#include "model/ModelValidator.hpp"
+#include "check/ModelValidator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,8 +36,8 @@ TEST(ModelReader, ConvertsDegreesUnitWeightAndCompressionPositiveStress) {
     const ReadResult r = read_model_text(text);
     ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
     const Model& m = *r.model;
-    EXPECT_NEAR(m.materials[0].friction_angle, pi / 6, 1e-12);
-    EXPECT_NEAR(m.materials[0].dilation_angle, pi / 18, 1e-12);
+    EXPECT_NEAR(m.materials[0].parameter("friction_angle"), pi / 6, 1e-12);
+    EXPECT_NEAR(m.materials[0].parameter("dilation_angle"), pi / 18, 1e-12);
     EXPECT_NEAR(m.materials[0].density, 2500.0, 1e-9);  // γ / 9.81
     // Entered compression positive, stored tension positive.
     EXPECT_EQ(m.initial_stress.kind, InitialStress::Kind::Uniform);
@@ -124,7 +124,7 @@ TEST(ModelReader, FormatAndVersionAreChecked) {
 TEST(ModelReader, OverridesChangeFieldsAndReportBadPointers) {
     const ReadResult r = read_model_text(square_model_json(), {"/materials/0/cohesion=3.45e6", "/name=study 7"});
     ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
-    EXPECT_DOUBLE_EQ(r.model->materials[0].cohesion, 3.45e6);
+    EXPECT_DOUBLE_EQ(r.model->materials[0].parameter("cohesion"), 3.45e6);
     EXPECT_EQ(r.model->name, "study 7");  // not valid JSON, so taken as a string
 
     const ReadResult bad = read_model_text(square_model_json(), {"/materials/7/cohesion=1", "cohesion", "/regions/0/boundary/9=[1,2]"});

@@ -2,7 +2,7 @@
 // outside every region, nothing fixed. Every problem must name the item by its JSON pointer.
 
 #include "TestModels.hpp"
-#include "model/ModelValidator.hpp"
+#include "check/ModelValidator.hpp"
 
 #include <gtest/gtest.h>
 

@@ -163,10 +163,10 @@ TEST(ModelWriter, JointSetPersistenceIsWrittenOnlyWhenNotTheDefault) {
 
 TEST(ModelWriter, AnglesAreDegreesInTheFile) {
     Model m = everything_model();
-    m.materials[0].friction_angle = pi / 4;
+    m.materials[0].parameters["friction_angle"] = pi / 4;
     const ReadResult again = read_model_text(write_model_text(m));
     ASSERT_TRUE(again.model);
-    EXPECT_NEAR(again.model->materials[0].friction_angle, pi / 4, 1e-15);
+    EXPECT_NEAR(again.model->materials[0].parameter("friction_angle"), pi / 4, 1e-15);
     EXPECT_NE(write_model_text(m).find("\"friction_angle\": 45"), std::string::npos);
 }
 

@@ -37,7 +37,7 @@ Model elastic_model()
     rock.name = "rock";
     rock.young_modulus = 2e9;
     rock.poisson_ratio = 0.3;
-    rock.plastic = false;
+    rock.law = "elastic";
     model.materials.push_back(rock);
     model.analysis.plasticity = false;
     return model;

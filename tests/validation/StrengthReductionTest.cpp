@@ -9,7 +9,7 @@
 #include "RunModel.hpp"
 
 #include "Preprocess.hpp"
-#include "model/StrengthReduction.hpp"
+#include "material/StrengthReduction.hpp"
 
 #include <gtest/gtest.h>
 
@@ -127,17 +127,17 @@ TEST(StrengthReduction, SafetyStageOfAStagedTunnelReportsItsFactor) {
 
 TEST(StrengthReduction, ReducesCohesionFrictionAndTensionOfWhatIsReduced) {
     Material m;
-    m.cohesion = 10e3;
-    m.friction_angle = 30 * pi / 180;
-    m.dilation_angle = 30 * pi / 180;
-    m.tensile_strength = 5e3;
+    m.parameters["cohesion"] = 10e3;
+    m.parameters["friction_angle"] = 30 * pi / 180;
+    m.parameters["dilation_angle"] = 30 * pi / 180;
+    m.parameters["tensile_strength"] = 5e3;
     const Material r = reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis);  // ψ = φ: no β
-    EXPECT_DOUBLE_EQ(r.cohesion, 5e3);
-    EXPECT_NEAR(std::tan(r.friction_angle), std::tan(m.friction_angle) / 2.0, 1e-14);
-    EXPECT_DOUBLE_EQ(r.tensile_strength, 2.5e3);
-    EXPECT_DOUBLE_EQ(r.dilation_angle, r.friction_angle);  // ψ ≤ reduced φ
+    EXPECT_DOUBLE_EQ(r.parameter("cohesion"), 5e3);
+    EXPECT_NEAR(std::tan(r.parameter("friction_angle")), std::tan(m.parameter("friction_angle")) / 2.0, 1e-14);
+    EXPECT_DOUBLE_EQ(r.parameter("tensile_strength"), 2.5e3);
+    EXPECT_DOUBLE_EQ(r.parameter("dilation_angle"), r.parameter("friction_angle"));  // ψ ≤ reduced φ
     m.reduce = false;
-    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis).cohesion, 10e3);
+    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis).parameter("cohesion"), 10e3);
     JointMaterial j;
     j.cohesion = 1e3;
     j.friction_angle = 20 * pi / 180;
@@ -148,23 +148,23 @@ TEST(StrengthReduction, ReducesCohesionFrictionAndTensionOfWhatIsReduced) {
 
 TEST(StrengthReduction, DavisLowersNonAssociatedStrengthsAndMakesTheFlowAssociated) {
     Material m;
-    m.cohesion = 10e3;
-    m.friction_angle = 30 * pi / 180;
-    m.dilation_angle = 0.0;
-    m.tensile_strength = 5e3;
+    m.parameters["cohesion"] = 10e3;
+    m.parameters["friction_angle"] = 30 * pi / 180;
+    m.parameters["dilation_angle"] = 0.0;
+    m.parameters["tensile_strength"] = 5e3;
     const Material r = reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis);
     // Reduced: tan φ_F = tan 30° / 2, so φ_F = 16.10°; with ψ = 0, β = cos φ_F = 0.96077.
-    const double phi_f = std::atan(std::tan(m.friction_angle) / 2.0);
+    const double phi_f = std::atan(std::tan(m.parameter("friction_angle")) / 2.0);
     EXPECT_NEAR(davis_factor(phi_f, 0.0), 0.96077, 1e-5);
-    EXPECT_NEAR(r.cohesion, 0.96077 * 5e3, 0.1);
-    EXPECT_NEAR(std::tan(r.friction_angle), 0.96077 * std::tan(phi_f), 1e-5);
-    EXPECT_DOUBLE_EQ(r.dilation_angle, r.friction_angle);  // associated
-    EXPECT_DOUBLE_EQ(r.tensile_strength, 2.5e3);          // the cut-off flows associated already
+    EXPECT_NEAR(r.parameter("cohesion"), 0.96077 * 5e3, 0.1);
+    EXPECT_NEAR(std::tan(r.parameter("friction_angle")), 0.96077 * std::tan(phi_f), 1e-5);
+    EXPECT_DOUBLE_EQ(r.parameter("dilation_angle"), r.parameter("friction_angle"));  // associated
+    EXPECT_DOUBLE_EQ(r.parameter("tensile_strength"), 2.5e3);          // the cut-off flows associated already
     // Associated materials, and the law solved directly, are not changed.
-    m.dilation_angle = m.friction_angle;
-    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis).cohesion, 5e3);
-    m.dilation_angle = 0.0;
-    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Direct).cohesion, 5e3);
-    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Direct).dilation_angle, 0.0);
+    m.parameters["dilation_angle"] = m.parameter("friction_angle");
+    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Davis).parameter("cohesion"), 5e3);
+    m.parameters["dilation_angle"] = 0.0;
+    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Direct).parameter("cohesion"), 5e3);
+    EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Direct).parameter("dilation_angle"), 0.0);
     EXPECT_DOUBLE_EQ(davis_factor(0.3, 0.3), 1.0);
 }

@@ -15,7 +15,4 @@ namespace mcdda {
 /// Appends the problems of `model` to `diagnostics`.
 void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics);
 
-/// JSON pointer of a joint: "/joints/i" for explicit joints, "/joint_sets/k" for generated ones.
-std::string joint_path(const Model& model, int joint);
-
 }  // namespace mcdda

@@ -1,6 +1,7 @@
-#include "model/ModelValidator.hpp"
+#include "check/ModelValidator.hpp"
 
 #include "geometry/PolygonChecks.hpp"
+#include "material/MaterialLaws.hpp"
 #include "model/Defaults.hpp"
 #include "model/ModelFields.hpp"
 
@@ -61,16 +62,42 @@ void check_fields(Checker& c, const Record& record, const std::vector<RecordFiel
     }
 }
 
+/// A law's own fields: present (or defaulted), in range, within physical limits; then the
+/// checks the law makes across its fields.
+void check_law(Checker& c, const Material& mat, const MaterialLaw& law, bool plasticity, const std::string& path) {
+    for (const NumberField& f : law.fields) {
+        const double value = law_value(mat, f);
+        const std::string where = path + "/" + f.key;
+        if (std::isnan(value) && !mat.parameters.count(f.key))
+            c.error(where, std::string(f.name) + " is required by the " + law.label + " law");
+        else if (std::string why = range_error(f, value); !why.empty()) c.error(where, why);
+        else if (std::string why = limit_error(f, value); !why.empty()) c.error(where, why);
+    }
+    if (!law.check) return;
+    std::vector<LawProblem> problems;
+    law.check(mat, plasticity, problems);
+    for (const LawProblem& p : problems) c.error(p.field.empty() ? path : path + "/" + p.field, p.message);
+}
+
+bool any_strength_reduction(const Model& m) {
+    return m.analysis.strength_reduction ||
+           std::any_of(m.stages.begin(), m.stages.end(), [](const Stage& s) { return s.analysis.strength_reduction; });
+}
+
 void check_materials(Checker& c, const Model& m) {
     for (std::size_t i = 0; i < m.materials.size(); ++i) {
         const Material& mat = m.materials[i];
         const std::string path = "/materials/" + std::to_string(i);
         check_fields(c, mat, material_fields(), path);
-        if (mat.dilation_angle >= 0.0 && mat.dilation_angle > mat.friction_angle)
-            c.error(path + "/dilation_angle", "dilation angle " + deg(mat.dilation_angle) +
-                                                  " exceeds the friction angle " + deg(mat.friction_angle));
-        if (mat.plastic && m.analysis.plasticity && mat.cohesion == 0.0 && mat.friction_angle == 0.0)
-            c.error(path, "a plastic material needs cohesion or friction (both are zero)");
+        const MaterialLaw* law = find_material_law(mat.law);
+        if (!law) {
+            c.error(path + "/law", "unknown law \"" + mat.law + "\" (the laws are " + material_law_keys() + ")");
+        } else {
+            check_law(c, mat, *law, m.analysis.plasticity, path);
+            if (mat.reduce && law->create && !law->reduced && any_strength_reduction(m))
+                c.error(path + "/reduce", std::string("a strength reduction cannot reduce a ") + law->label +
+                                              " material; set \"reduce\": false to keep its strength");
+        }
         if (m.analysis.kind == AnalysisSettings::Kind::Dynamic && !(mat.density > 0.0))
             c.error(path + "/density", "a dynamic analysis needs a positive density (or unit weight)");
     }
@@ -341,13 +368,6 @@ void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics) {
     check_controls(c, model);
     check_bolts(c, model);
     check_stages(c, model);
-}
-
-std::string joint_path(const Model& model, int joint) {
-    if (joint < 0 || joint >= static_cast<int>(model.joints.size())) return "";
-    const Joint& j = model.joints[joint];
-    if (j.joint_set >= 0) return "/joint_sets/" + std::to_string(j.joint_set);
-    return "/joints/" + std::to_string(joint);
 }
 
 namespace {
