@@ -94,7 +94,7 @@ void check_materials(Checker& c, const Model& m) {
             c.error(path + "/law", "unknown law \"" + mat.law + "\" (the laws are " + material_law_keys() + ")");
         } else {
             check_law(c, mat, *law, m.analysis.plasticity, path);
-            if (mat.reduce && law->create && !law->reduced && any_strength_reduction(m))
+            if (mat.reduce && mat.may_yield() && !law->reduced && any_strength_reduction(m))
                 c.error(path + "/reduce", std::string("a strength reduction cannot reduce a ") + law->label +
                                               " material; set \"reduce\": false to keep its strength");
         }

@@ -66,10 +66,10 @@ class ModelTest(unittest.TestCase):
 
     def test_overrides_by_dict_and_by_list(self):
         a = mcdda.Analysis.from_file(INCLINE)
-        a.set({"/materials/0/cohesion": 2e5, "/analysis/steps": 7})
+        a.set({"/materials/0/young_modulus": 2e9, "/analysis/steps": 7})
         a.set(["/joint_materials/0/friction_angle=33"])
         model = a.to_dict()
-        self.assertEqual(model["materials"][0]["cohesion"], 2e5)
+        self.assertEqual(model["materials"][0]["young_modulus"], 2e9)
         self.assertEqual(model["analysis"]["steps"], 7)
         self.assertEqual(model["joint_materials"][0]["friction_angle"], 33)
 

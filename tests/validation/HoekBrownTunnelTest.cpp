@@ -1,0 +1,81 @@
+// A circular tunnel in a Hoek–Brown rock mass through the whole solver (examples/hoek-brown-tunnel.json:
+// quarter model, R = 1 m, p0 = 15 MPa, outer boundary at 50 m, σzz = 2ν p0, no support), against
+// the references of HoekBrownTunnel.hpp: Carranza-Torres & Fairhurst's closed form for a = 1/2
+// (GSI = 100) and the radial integration for a > 1/2 (GSI = 80). The plastic radius comes from the
+// area of the yielded elements, the wall displacement from the springline and crown points.
+
+#include "HoekBrownTunnel.hpp"
+#include "RunModel.hpp"
+#include "material/HoekBrown.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace mcdda;
+
+namespace {
+
+struct TunnelResult {
+    double plastic_radius = 0.0, wall_displacement = 0.0;
+};
+
+TunnelResult run_tunnel(double gsi, double sigma_ci) {
+    auto run = mcdda::test::run_example("hoek-brown-tunnel.json",
+                                        {"/materials/0/gsi=" + std::to_string(gsi),
+                                         "/materials/0/uniaxial_strength=" + std::to_string(sigma_ci)},
+                                        3);
+    EXPECT_TRUE(run.simulation);
+    if (!run.simulation) return {};
+    const Simulation& s = *run.simulation;
+    double yielded_area = 0.0;  // a quarter annulus π/4 (R_pl² − R²)
+    for (std::size_t e = 0; e < s.mesh().triangles.size(); ++e) {
+        if (s.state().plastic_state[e] == 0) continue;
+        const auto& t = s.mesh().triangles[e];
+        const Point2 &p0 = s.mesh().nodes[t[0]], &p1 = s.mesh().nodes[t[1]], &p2 = s.mesh().nodes[t[2]];
+        yielded_area += 0.5 * ((p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y));
+    }
+    const Point2 wall = run.history.points.back()[0], crown = run.history.points.back()[1];
+    return {std::sqrt(1.0 + 4.0 * yielded_area / M_PI), 0.5 * (-wall.x - crown.y)};
+}
+
+mcdda::test::HoekBrownTunnelSpec spec_of(double gsi, double sigma_ci) {
+    const HoekBrownParameters p = hoek_brown_parameters(gsi, 10.0, 0.0);
+    mcdda::test::HoekBrownTunnelSpec spec;
+    spec.p0 = 15e6;
+    spec.sigma_ci = sigma_ci;
+    spec.mb = p.mb;
+    spec.s = p.s;
+    spec.a = p.a;
+    spec.young_modulus = 5e9;
+    spec.poisson_ratio = 0.25;
+    return spec;
+}
+
+}  // namespace
+
+// GSI = 100 (a = 1/2, s = 1), σci = 3 MPa: Carranza-Torres & Fairhurst, within 1 %.
+TEST(HoekBrownTunnel, IntactRockMatchesCarranzaTorresAndFairhurst) {
+    const auto reference = mcdda::test::carranza_torres_fairhurst(spec_of(100, 3e6));
+    const TunnelResult fe = run_tunnel(100, 3e6);
+    std::cout << "Hoek–Brown tunnel, GSI 100: plastic radius " << fe.plastic_radius << " m (closed form "
+              << reference.plastic_radius << "), wall displacement " << fe.wall_displacement * 1e3 << " mm (closed form "
+              << reference.wall_displacement * 1e3 << ")\n";
+    EXPECT_GT(reference.plastic_radius, 2.0);  // a plastic zone the mesh resolves
+    EXPECT_NEAR(fe.plastic_radius, reference.plastic_radius, 0.01 * reference.plastic_radius);
+    EXPECT_NEAR(fe.wall_displacement, reference.wall_displacement, 0.01 * reference.wall_displacement);
+}
+
+// GSI = 80 (a = 0.5006), σci = 6 MPa, as shipped: the radial integration, within 2 %.
+TEST(HoekBrownTunnel, RockMassMatchesTheRadialIntegration) {
+    const auto spec = spec_of(80, 6e6);
+    ASSERT_GT(spec.a, 0.5);
+    const auto reference = mcdda::test::hoek_brown_tunnel_integration(spec);
+    const TunnelResult fe = run_tunnel(80, 6e6);
+    std::cout << "Hoek–Brown tunnel, GSI 80: plastic radius " << fe.plastic_radius << " m (integration "
+              << reference.plastic_radius << "), wall displacement " << fe.wall_displacement * 1e3 << " mm (integration "
+              << reference.wall_displacement * 1e3 << ")\n";
+    EXPECT_NEAR(fe.plastic_radius, reference.plastic_radius, 0.02 * reference.plastic_radius);
+    EXPECT_NEAR(fe.wall_displacement, reference.wall_displacement, 0.02 * reference.wall_displacement);
+}
