@@ -47,216 +47,312 @@
         <translation>Wichte γ = ρ g (die Dichte ist γ / 9,81 m/s²); belastet das Modell über die Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="32"/>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="260"/>
+        <source>Mohr–Coulomb</source>
+        <translation>Mohr–Coulomb</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="261"/>
+        <source>Perfectly plastic with cohesion c and friction angle φ, non-associated flow by ψ, optional tension cut-off</source>
+        <translation>Ideal plastisch mit Kohäsion c und Reibungswinkel φ, nicht-assoziiertes Fließen mit ψ, wahlweise Zugabschneidung</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="263"/>
         <source>Cohesion c</source>
         <translation>Kohäsion c</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="33"/>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="264"/>
         <source>Mohr–Coulomb cohesion c, ≥ 0</source>
         <translation>Mohr-Coulomb-Kohäsion c, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="35"/>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="265"/>
         <source>Friction angle φ</source>
         <translation>Reibungswinkel φ</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="36"/>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="267"/>
         <source>Mohr–Coulomb friction angle φ, in [0°, 90°)</source>
         <translation>Mohr-Coulomb-Reibungswinkel φ, in [0°, 90°)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="38"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="251"/>
+        <source>Hoek–Brown</source>
+        <translation>Hoek–Brown</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="252"/>
+        <source>Generalised Hoek–Brown rock mass (2002): strength from σci, GSI, mi and the disturbance D</source>
+        <translation>Verallgemeinertes Hoek–Brown-Gebirge (2002): Festigkeit aus σci, GSI, mi und dem Störungsgrad D</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="254"/>
+        <source>Intact strength σci</source>
+        <translation>Gesteinsfestigkeit σci</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="256"/>
+        <source>Uniaxial compressive strength σci of the intact rock, &gt; 0</source>
+        <translation>Einaxiale Druckfestigkeit σci des intakten Gesteins, &gt; 0</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="257"/>
+        <source>GSI</source>
+        <translation>GSI</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="259"/>
+        <source>Geological Strength Index of the rock mass, 0 to 100 (100: intact rock)</source>
+        <translation>Geological Strength Index des Gebirges, 0 bis 100 (100: intaktes Gestein)</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="260"/>
+        <source>Intact constant mi</source>
+        <translation>Gesteinskonstante mi</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="262"/>
+        <source>Hoek–Brown constant mi of the intact rock, &gt; 0 (about 4 for claystone to 33 for granite)</source>
+        <translation>Hoek–Brown-Konstante mi des intakten Gesteins, &gt; 0 (etwa 4 für Tonstein bis 33 für Granit)</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="263"/>
+        <source>Disturbance D</source>
+        <translation>Störungsgrad D</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="265"/>
+        <source>Disturbance factor D by blasting and stress relaxation, 0 (undisturbed) to 1</source>
+        <translation>Störungsgrad D durch Sprengen und Entspannung, 0 (ungestört) bis 1</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="266"/>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="268"/>
         <source>Dilation angle ψ</source>
         <translation>Dilatanzwinkel ψ</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="39"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="268"/>
+        <source>Dilation angle ψ of the plastic flow (constant), in [0°, 90°)</source>
+        <translation>Dilatanzwinkel ψ des plastischen Fließens (konstant), in [0°, 90°)</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="269"/>
+        <source>Tension cut-off</source>
+        <translation>Zugabschneidung</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="270"/>
+        <source>the Hoek–Brown tensile strength</source>
+        <translation>die Hoek–Brown-Zugfestigkeit</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/HoekBrown.cpp" line="271"/>
+        <source>A tension cut-off below the Hoek–Brown tensile strength s σci/mb, ≥ 0; 0 = none but the criterion&apos;s own</source>
+        <translation>Eine Zugabschneidung unter der Hoek–Brown-Zugfestigkeit s σci/mb, ≥ 0; 0 = nur die des Kriteriums</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="270"/>
         <source>Dilation angle ψ of the plastic flow, 0 ≤ ψ ≤ φ (ψ = φ: associated flow)</source>
         <translation>Dilatanzwinkel ψ des plastischen Fließens, 0 ≤ ψ ≤ φ (ψ = φ: assoziiertes Fließen)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="41"/>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="271"/>
         <source>Tensile strength</source>
         <translation>Zugfestigkeit</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="42"/>
+        <location filename="../solver/material/MohrCoulomb.cpp" line="273"/>
         <source>Tension cut-off of the Mohr–Coulomb surface, ≥ 0; 0 = no tension</source>
         <translation>Zugfestigkeitsgrenze der Mohr-Coulomb-Fläche, ≥ 0; 0 = kein Zug</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="51"/>
+        <location filename="../solver/model/ModelFields.cpp" line="39"/>
         <source>Friction angle φj</source>
         <translation>Reibungswinkel φj</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="52"/>
+        <location filename="../solver/model/ModelFields.cpp" line="40"/>
         <source>Coulomb friction angle of the joint surfaces, in [0°, 90°)</source>
         <translation>Coulomb-Reibungswinkel der Kluftflächen, in [0°, 90°)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="54"/>
+        <location filename="../solver/model/ModelFields.cpp" line="42"/>
         <source>Cohesion cj</source>
         <translation>Kohäsion cj</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="55"/>
+        <location filename="../solver/model/ModelFields.cpp" line="43"/>
         <source>Cohesion of the joint, ≥ 0; lost once the joint has slipped or opened</source>
         <translation>Kohäsion der Kluft, ≥ 0; geht verloren, sobald die Kluft gleitet oder sich öffnet</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="57"/>
+        <location filename="../solver/model/ModelFields.cpp" line="45"/>
         <source>Tensile strength tj</source>
         <translation>Zugfestigkeit tj</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="58"/>
+        <location filename="../solver/model/ModelFields.cpp" line="46"/>
         <source>Tensile strength of the joint, ≥ 0; 0 = the joint opens under any tension</source>
         <translation>Zugfestigkeit der Kluft, ≥ 0; 0 = die Kluft öffnet sich bei jedem Zug</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="60"/>
+        <location filename="../solver/model/ModelFields.cpp" line="48"/>
         <source>Normal stiffness kn</source>
         <translation>Normalsteifigkeit kn</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="61"/>
-        <location filename="../solver/model/ModelFields.cpp" line="64"/>
-        <location filename="../solver/model/ModelFields.cpp" line="100"/>
+        <location filename="../solver/model/ModelFields.cpp" line="49"/>
+        <location filename="../solver/model/ModelFields.cpp" line="52"/>
+        <location filename="../solver/model/ModelFields.cpp" line="88"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="61"/>
+        <location filename="../solver/model/ModelFields.cpp" line="49"/>
         <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
         <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="63"/>
+        <location filename="../solver/model/ModelFields.cpp" line="51"/>
         <source>Shear stiffness ks</source>
         <translation>Schubsteifigkeit ks</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="64"/>
+        <location filename="../solver/model/ModelFields.cpp" line="52"/>
         <source>Shear stiffness; 0 = automatic</source>
         <translation>Schubsteifigkeit; 0 = automatisch</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="73"/>
+        <location filename="../solver/model/ModelFields.cpp" line="61"/>
         <source>Axial stiffness EA</source>
         <translation>Dehnsteifigkeit EA</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="75"/>
+        <location filename="../solver/model/ModelFields.cpp" line="63"/>
         <source>Axial stiffness EA of the bolt per metre of model thickness (bolt EA over the spacing out of plane), &gt; 0</source>
         <translation>Dehnsteifigkeit EA des Ankers je Meter Modelldicke (EA des Ankers durch seinen Abstand senkrecht zur Ebene), &gt; 0</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="77"/>
+        <location filename="../solver/model/ModelFields.cpp" line="65"/>
         <source>Strength</source>
         <translation>Tragkraft</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="78"/>
+        <location filename="../solver/model/ModelFields.cpp" line="66"/>
         <source>unbreakable</source>
         <translation>unzerstörbar</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="78"/>
+        <location filename="../solver/model/ModelFields.cpp" line="66"/>
         <source>Axial force at which the bolt breaks, per metre of model thickness; 0 = unbreakable</source>
         <translation>Axialkraft, bei der der Anker reißt, je Meter Modelldicke; 0 = unzerstörbar</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="80"/>
+        <location filename="../solver/model/ModelFields.cpp" line="68"/>
         <source>Pretension</source>
         <translation>Vorspannung</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="81"/>
+        <location filename="../solver/model/ModelFields.cpp" line="69"/>
         <source>Axial force when installed, per metre of model thickness, pulling the ends together; ≥ 0</source>
         <translation>Axialkraft beim Einbau, je Meter Modelldicke, zieht die Enden zusammen; ≥ 0</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="91"/>
+        <location filename="../solver/model/ModelFields.cpp" line="79"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="93"/>
+        <location filename="../solver/model/ModelFields.cpp" line="81"/>
         <source>Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps</source>
         <translation>Anfänglicher und größter Zeitschritt; er wird automatisch verkleinert, wenn sich ein Schritt zu weit bewegt oder nicht konvergiert. In einer statischen Berechnung ordnet die Zeit nur die Laststufen</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="95"/>
+        <location filename="../solver/model/ModelFields.cpp" line="83"/>
         <source>Max displacement ratio</source>
         <translation>Max. Verschiebungsverhältnis</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="97"/>
+        <location filename="../solver/model/ModelFields.cpp" line="85"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="99"/>
+        <location filename="../solver/model/ModelFields.cpp" line="87"/>
         <source>Penalty</source>
         <translation>Kontaktsteifigkeit (Penalty)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="101"/>
+        <location filename="../solver/model/ModelFields.cpp" line="89"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="103"/>
+        <location filename="../solver/model/ModelFields.cpp" line="91"/>
         <source>Dynamic ratio</source>
         <translation>Dynamikfaktor</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="105"/>
+        <location filename="../solver/model/ModelFields.cpp" line="93"/>
         <source>Fraction of the velocity carried into the next step of a dynamic analysis (1: none lost)</source>
         <translation>Anteil der Geschwindigkeit, der in einer dynamischen Berechnung in den nächsten Schritt übernommen wird (1: nichts geht verloren)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="107"/>
+        <location filename="../solver/model/ModelFields.cpp" line="95"/>
         <source>Equilibrium tolerance</source>
         <translation>Gleichgewichtstoleranz</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="109"/>
+        <location filename="../solver/model/ModelFields.cpp" line="97"/>
         <source>Out-of-balance force, relative to the force scale, below which a step&apos;s equilibrium iterations stop</source>
         <translation>Ungleichgewichtskraft, bezogen auf die Kraftskala, unter der die Gleichgewichtsiterationen eines Schritts enden</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="111"/>
+        <location filename="../solver/model/ModelFields.cpp" line="99"/>
         <source>Smallest load increment</source>
         <translation>Kleinstes Lastinkrement</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="113"/>
+        <location filename="../solver/model/ModelFields.cpp" line="101"/>
         <source>A static step that does not converge is halved down to this fraction of a step; failing there is a collapse</source>
         <translation>Ein statischer Schritt, der nicht konvergiert, wird bis auf diesen Bruchteil eines Schritts halbiert; scheitert er auch dort, ist es ein Versagen</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="115"/>
+        <location filename="../solver/model/ModelFields.cpp" line="103"/>
         <source>Equilibrium ratio</source>
         <translation>Gleichgewichtsgrenze</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="117"/>
+        <location filename="../solver/model/ModelFields.cpp" line="105"/>
         <source>A run whose unbalanced-force ratio ends above this is reported as not in equilibrium</source>
         <translation>Eine Berechnung, deren Ungleichgewichtsverhältnis am Ende darüber liegt, wird als nicht im Gleichgewicht gemeldet</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="119"/>
+        <location filename="../solver/model/ModelFields.cpp" line="107"/>
         <source>Factor of safety tolerance</source>
         <translation>Toleranz des Sicherheitsfaktors</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="121"/>
+        <location filename="../solver/model/ModelFields.cpp" line="109"/>
         <source>Strength reduction: the search for the factor of safety stops once the factors that stand and that do not differ by less than this fraction</source>
         <translation>Festigkeitsreduktion: die Suche nach dem Sicherheitsfaktor endet, sobald sich die Faktoren, bei denen das Modell steht und bei denen nicht, um weniger als diesen Bruchteil unterscheiden</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/LawFields.cpp" line="27"/>
+        <source>Law</source>
+        <translation>Stoffgesetz</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/ElasticLaw.cpp" line="19"/>
+        <source>Linear elastic</source>
+        <translation>Linear elastisch</translation>
+    </message>
+    <message>
+        <location filename="../solver/material/ElasticLaw.cpp" line="20"/>
+        <source>Stays elastic whatever the stress: a lining, a footing, a stiff inclusion</source>
+        <translation>Bleibt bei jeder Spannung elastisch: eine Auskleidung, ein Fundament, ein steifer Einschluss</translation>
     </message>
 </context>
 <context>
@@ -2175,347 +2271,337 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="84"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="128"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="85"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="174"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="87"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="179"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="87"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="89"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="90"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="92"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="92"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="94"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="95"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="97"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="112"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="114"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="129"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
         <source>The material shown below; Assign to Selection gives it to the selected region</source>
         <translation>Das unten gezeigte Material; „Auswahl zuweisen“ gibt es dem gewählten Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="176"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="132"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="132"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="134"/>
         <source>Add a material (a copy of the one shown)</source>
         <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="134"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="466"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="470"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="472"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="138"/>
         <source>The region selected in the view or the Model tree is made of this material</source>
         <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="141"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="142"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
         <source>Name of the material, as the tree and the legend show it</source>
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="277"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <source>Whether a strength reduction divides this material&apos;s strength; off for a footing or a lining that must not fail in the search</source>
+        <translation>Ob eine Festigkeitsreduktion die Festigkeit dieses Materials teilt; aus für ein Fundament oder eine Auskleidung, die bei der Suche nicht versagen darf</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="293"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
-        <source>Plastic (Mohr–Coulomb)</source>
-        <translation>Plastisch (Mohr-Coulomb)</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="147"/>
-        <source>Whether the material yields (Mohr–Coulomb); off = elastic whatever the stress</source>
-        <translation>Ob das Material plastifiziert (Mohr-Coulomb); aus = elastisch bei jeder Spannung</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="148"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="191"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
         <source>Reduced in a strength reduction</source>
         <translation>In der Festigkeitsreduktion abgemindert</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
-        <source>Whether a strength reduction divides this material&apos;s c and tan φ; off for a footing or a lining that must not fail in the search</source>
-        <translation>Ob eine Festigkeitsreduktion c und tan φ dieses Materials teilt; aus für ein Fundament oder eine Auskleidung, die bei der Suche nicht versagen soll</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="152"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="298"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="303"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="175"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
         <source>The joint material shown below; Assign to Selection gives it to the selected joint</source>
         <translation>Das unten gezeigte Kluftmaterial; „Auswahl zuweisen“ gibt es der gewählten Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="178"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="183"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="182"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="188"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
         <source>Name of the joint material</source>
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
         <source>Whether a strength reduction divides this joint material&apos;s cohesion, tan φj and tensile strength</source>
         <translation>Ob eine Festigkeitsreduktion Kohäsion, tan φj und Zugfestigkeit dieses Kluftmaterials teilt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="213"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="269"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="219"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="224"/>
         <source>Steps [–]</source>
         <translation>Zeitschritte [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="225"/>
         <source>Number of time steps; the loads follow their tables over the time they cover</source>
         <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
         <source> steps</source>
         <translation> Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="228"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="229"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="230"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="236"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
         <source>Davis (associated, strength lowered)</source>
         <translation>Davis (assoziiert, Festigkeit abgemindert)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
         <source>Direct (ψ as given)</source>
         <translation>Direkt (ψ wie angegeben)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="239"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
         <source>Non-associated flow</source>
         <translation>Nicht-assoziiertes Fließen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="240"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
         <source>Strength reduction of materials whose dilation angle is below their friction angle. Davis: each trial&apos;s reduced c and tan φ are lowered by β = cos ψ cos φ / (1 − sin ψ sin φ) and solved with associated flow: a factor that converges with the mesh. Direct: ψ as given; the non-associated law has no unique limit load and its factor may depend on the mesh and the iteration where much of the ground yields</source>
         <translation>Festigkeitsreduktion von Materialien, deren Dilatanzwinkel unter dem Reibungswinkel liegt. Davis: die abgeminderten c und tan φ jedes Versuchs werden nochmals mit β = cos ψ cos φ / (1 − sin ψ sin φ) abgemindert und mit assoziiertem Fließen gerechnet: ein Faktor, der mit dem Netz konvergiert. Direkt: ψ wie angegeben; das nicht-assoziierte Gesetz hat keine eindeutige Traglast, und sein Faktor kann vom Netz und von der Iteration abhängen, wo ein großer Teil des Bodens plastifiziert</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="265"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="266"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="267"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="286"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="292"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="294"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="290"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="295"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="291"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="296"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="292"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="297"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="293"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="298"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="296"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="301"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="297"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="302"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="329"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="334"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="339"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="464"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="466"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="470"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="472"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="486"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="503"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="491"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="508"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="514"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="524"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="519"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="529"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="544"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="567"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="591"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="618"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="549"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="572"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="596"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="623"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="548"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="571"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="595"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="622"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="553"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="576"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="600"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="627"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -3439,52 +3525,52 @@
 <context>
     <name>mcdda::gui::form</name>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="54"/>
+        <location filename="../gui/panels/FormFields.cpp" line="55"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="121"/>
+        <location filename="../gui/panels/FormFields.cpp" line="122"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="122"/>
+        <location filename="../gui/panels/FormFields.cpp" line="123"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="123"/>
+        <location filename="../gui/panels/FormFields.cpp" line="124"/>
         <source>MN/m</source>
         <translation>MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="124"/>
+        <location filename="../gui/panels/FormFields.cpp" line="125"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="125"/>
+        <location filename="../gui/panels/FormFields.cpp" line="126"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="192"/>
+        <location filename="../gui/panels/FormFields.cpp" line="202"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="193"/>
+        <location filename="../gui/panels/FormFields.cpp" line="203"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="194"/>
+        <location filename="../gui/panels/FormFields.cpp" line="204"/>
         <source>Strength reduction</source>
         <translation>Festigkeitsreduktion</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="195"/>
+        <location filename="../gui/panels/FormFields.cpp" line="205"/>
         <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding. Strength reduction: the factor of safety, the largest factor c and tan φ can be divided by while the model still stands (of the whole model, or as the last stage: a safety stage starting from the stresses of the stages before)</source>
         <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten. Festigkeitsreduktion: der Sicherheitsfaktor, der größte Faktor, durch den c und tan φ geteilt werden können, während das Modell noch steht (des ganzen Modells oder als letzte Bauphase: eine Sicherheitsphase, die von den Spannungen der Bauphasen davor ausgeht)</translation>
     </message>
@@ -3570,67 +3656,67 @@
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="552"/>
+        <location filename="../gui/view/ResultScene.cpp" line="904"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="553"/>
+        <location filename="../gui/view/ResultScene.cpp" line="905"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="711"/>
+        <location filename="../gui/view/ResultScene.cpp" line="775"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="713"/>
+        <location filename="../gui/view/ResultScene.cpp" line="777"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="718"/>
+        <location filename="../gui/view/ResultScene.cpp" line="782"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="720"/>
+        <location filename="../gui/view/ResultScene.cpp" line="784"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="724"/>
+        <location filename="../gui/view/ResultScene.cpp" line="788"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="729"/>
+        <location filename="../gui/view/ResultScene.cpp" line="793"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="744"/>
+        <location filename="../gui/view/ResultScene.cpp" line="816"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="785"/>
+        <location filename="../gui/view/ResultScene.cpp" line="860"/>
         <source>strengths divided by</source>
         <translation>Festigkeiten geteilt durch</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="789"/>
+        <location filename="../gui/view/ResultScene.cpp" line="864"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="793"/>
+        <location filename="../gui/view/ResultScene.cpp" line="868"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="800"/>
+        <location filename="../gui/view/ResultScene.cpp" line="875"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>

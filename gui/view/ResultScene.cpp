@@ -813,7 +813,7 @@ double add_scale_bar(vtkRenderer* renderer, const FieldInfo& field, const Colour
     if (c.uniform) {
         char value[48];
         std::snprintf(value, sizeof value, "%.4g", c.uniform_value);
-        title += "\n" + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "c.uniform:")) + " " + value;
+        title += "\n" + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "uniform:")) + " " + value;
         labels->InsertNextValue(c.uniform_value);
     } else {
         for (double t = c.range[0]; t <= c.range[1] + 1e-9 * c.tick_step; t += c.tick_step)
