@@ -3,7 +3,8 @@
 /// What element assembly needs from a material: its elastic stiffness, the return of a trial
 /// stress onto what the material can carry, and the algorithmic tangent of that return. Mohr–
 /// Coulomb (MohrCoulomb.hpp), Hoek–Brown (HoekBrown.hpp) and linear elasticity (ElasticLaw.hpp)
-/// implement it; make_constitutive_law (MaterialLaws.hpp) picks one per material. Laws are const: they hold no per-point state.
+/// implement it; make_constitutive_law (MaterialLaws.hpp) picks one per material. Laws are
+/// const: they hold no per-point state.
 
 #include "model/Model.hpp"
 

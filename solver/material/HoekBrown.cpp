@@ -244,6 +244,18 @@ std::unique_ptr<ConstitutiveLaw> create_hoek_brown(const Material& m) {
                                        m.parameter("dilation_angle"), m.parameter("tensile_strength"));
 }
 
+/// The deviator the rock mass carries at every confinement divided by F:
+///   σ1 − σ3 = σci (mb σ3/σci + s)^a / F = (σci/F) ((mb/F) σ3/(σci/F) + s)^a,
+/// the same criterion with σci/F and mb/F (mi/F), s and a unchanged (docs/plasticity.md,
+/// "Hoek–Brown"); the tension cut-off σt/F; ψ as given.
+Material reduced_hoek_brown(const Material& m, double factor, AnalysisSettings::NonAssociatedFlow) {
+    Material r = m;
+    r.parameters["uniaxial_strength"] = m.parameter("uniaxial_strength") / factor;
+    r.parameters["mi"] = m.parameter("mi") / factor;
+    r.parameters["tensile_strength"] = m.parameter("tensile_strength") / factor;
+    return r;
+}
+
 }  // namespace
 
 const MaterialLaw& hoek_brown_law() {
@@ -271,7 +283,7 @@ const MaterialLaw& hoek_brown_law() {
              MCDDA_TRANSLATABLE("ModelFields", "A tension cut-off below the Hoek–Brown tensile strength s σci/mb, ≥ 0; 0 = none but the criterion's own")},
         },
         nullptr,
-        nullptr,
+        reduced_hoek_brown,
         [](const Material&) { return true; },
         create_hoek_brown,
     };

@@ -9,6 +9,8 @@
 #include "RunModel.hpp"
 
 #include "Preprocess.hpp"
+#include "material/HoekBrown.hpp"
+#include "material/MaterialLaws.hpp"
 #include "material/StrengthReduction.hpp"
 
 #include <gtest/gtest.h>
@@ -167,4 +169,43 @@ TEST(StrengthReduction, DavisLowersNonAssociatedStrengthsAndMakesTheFlowAssociat
     EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Direct).parameter("cohesion"), 5e3);
     EXPECT_DOUBLE_EQ(reduced_strength(m, 2.0, AnalysisSettings::NonAssociatedFlow::Direct).parameter("dilation_angle"), 0.0);
     EXPECT_DOUBLE_EQ(davis_factor(0.3, 0.3), 1.0);
+}
+
+// Hoek–Brown: the reduction divides the deviator the rock mass carries at every confinement by F
+// (σci/F and mi/F). Checked on the yield function of the reduced law at four confinements.
+TEST(StrengthReduction, HoekBrownDeviatorIsDividedAtEveryConfinement) {
+    Material m;
+    m.law = "hoek-brown";
+    m.young_modulus = 5e9;
+    m.poisson_ratio = 0.25;
+    m.parameters = {{"uniaxial_strength", 40e6}, {"gsi", 55}, {"mi", 12}, {"disturbance", 0.3}, {"dilation_angle", 0.0}};
+    const double F = 1.7;
+    const Material r = reduced_strength(m, F, AnalysisSettings::NonAssociatedFlow::Davis);
+    EXPECT_DOUBLE_EQ(r.parameter("uniaxial_strength"), 40e6 / F);
+    EXPECT_DOUBLE_EQ(r.parameter("gsi"), 55);
+    const HoekBrownParameters p = hoek_brown_parameters(55, 12, 0.3);
+    const auto reduced = make_constitutive_law(r, true);
+    const auto* law = dynamic_cast<const HoekBrown*>(reduced.get());
+    ASSERT_TRUE(law);
+    for (double confinement : {0.0, 1e6, 5e6, 20e6}) {
+        const double deviator = 40e6 * std::pow(p.mb * confinement / 40e6 + p.s, p.a) / F;
+        // σ3c = the confinement, σ1c = σ3c + the reduced deviator, σzz between them.
+        const PlaneStress at{-confinement, -(confinement + deviator), 0.0, -(confinement + 0.5 * deviator)};
+        EXPECT_NEAR(law->yield(at), 0.0, 1e-9 * deviator) << "σ3 = " << confinement;
+        const PlaneStress beyond{-confinement, -(confinement + 1.01 * deviator), 0.0, -(confinement + 0.5 * deviator)};
+        EXPECT_GT(law->yield(beyond), 0.0);
+    }
+}
+
+// With GSI = 100 and mi = 0.001 the Hoek–Brown criterion is Tresca's, σ1 − σ3 = σci, to 0.13 %
+// under the footing's stresses: the Prandtl footing of clay cu = σci/2 under a held 400 kPa then
+// has Prandtl's factor (2 + π) cu/q, as the Mohr–Coulomb clay has (both reductions divide cu by F).
+TEST(StrengthReduction, HoekBrownTrescaFootingHasPrandtlsFactor) {
+    const FactorOfSafety f = test::strength_reduction_of(
+        "prandtl-flexible-footing.json",
+        prandtl_held({R"(/materials/0={"name": "clay", "law": "hoek-brown", "young_modulus": 1e7, "poisson_ratio": 0.3,
+                       "uniaxial_strength": 200000, "gsi": 100, "mi": 1e-3})"}));
+    ASSERT_TRUE(f.found);
+    std::cout << "Hoek–Brown (Tresca limit) footing: F = " << f.value << " (Prandtl " << prandtl_factor << ")\n";
+    EXPECT_NEAR(f.value, prandtl_factor, 0.01 * prandtl_factor);
 }
