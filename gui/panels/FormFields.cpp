@@ -4,7 +4,6 @@
 #include "panels/DeclaredFields.hpp"
 #include "session/DisplayUnits.hpp"
 
-#include <algorithm>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -13,6 +12,7 @@
 #include <QLocale>
 #include <QVariant>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mcdda::gui::form {
