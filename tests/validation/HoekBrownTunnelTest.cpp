@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 using namespace mcdda;
 
@@ -21,11 +23,30 @@ struct TunnelResult {
     double plastic_radius = 0.0, wall_displacement = 0.0;
 };
 
-TunnelResult run_tunnel(double gsi, double sigma_ci) {
-    auto run = mcdda::test::run_example("hoek-brown-tunnel.json",
-                                        {"/materials/0/gsi=" + std::to_string(gsi),
-                                         "/materials/0/uniaxial_strength=" + std::to_string(sigma_ci)},
-                                        3);
+/// Overrides that excavate gradually: a pressure on each of the wall's 64 segments starting at
+/// p0 and falling linearly to 0 over `steps` steps (the far-field pressures kept).
+std::vector<std::string> gradual_release(int steps) {
+    std::string pressures = R"([{"name": "far field x", "from": [50, 0], "to": [50, 50], "pressure": 15e6},)"
+                            R"( {"name": "far field y", "from": [0, 50], "to": [50, 50], "pressure": 15e6})";
+    const int segments = 64;
+    for (int k = 0; k < segments; ++k) {
+        const double a0 = 0.5 * M_PI * k / segments, a1 = 0.5 * M_PI * (k + 1) / segments;
+        char text[240];
+        std::snprintf(text, sizeof text,
+                      R"(, {"name": "wall %d", "from": [%.17g, %.17g], "to": [%.17g, %.17g], "pressure": 15e6, "table": "release"})",
+                      k, std::cos(a0), std::sin(a0), std::cos(a1), std::sin(a1));
+        pressures += text;
+    }
+    return {"/edge_pressures=" + pressures + "]",
+            R"(/load_tables=[{"name": "release", "variable": "step", "points": [[0, 1], [)" + std::to_string(steps) + ", 0]]}]",
+            "/analysis/steps=" + std::to_string(steps)};
+}
+
+TunnelResult run_tunnel(double gsi, double sigma_ci, std::vector<std::string> more = {}) {
+    std::vector<std::string> overrides{"/materials/0/gsi=" + std::to_string(gsi),
+                                       "/materials/0/uniaxial_strength=" + std::to_string(sigma_ci)};
+    overrides.insert(overrides.end(), more.begin(), more.end());
+    auto run = mcdda::test::run_example("hoek-brown-tunnel.json", overrides, more.empty() ? 3 : 0);
     EXPECT_TRUE(run.simulation);
     if (!run.simulation) return {};
     const Simulation& s = *run.simulation;
@@ -78,4 +99,20 @@ TEST(HoekBrownTunnel, RockMassMatchesTheRadialIntegration) {
               << reference.wall_displacement * 1e3 << ")\n";
     EXPECT_NEAR(fe.plastic_radius, reference.plastic_radius, 0.02 * reference.plastic_radius);
     EXPECT_NEAR(fe.wall_displacement, reference.wall_displacement, 0.02 * reference.wall_displacement);
+}
+
+// The excavation released gradually through a falling wall pressure, over 10 and over 20 steps,
+// ends where the single increment does (a curved surface makes plasticity path-dependent in
+// general; here the unloading is monotonic and the result must not depend on the step count).
+TEST(HoekBrownTunnel, GradualReleaseEndsWhereTheSingleIncrementDoes) {
+    const auto reference = mcdda::test::hoek_brown_tunnel_integration(spec_of(80, 6e6));
+    const TunnelResult at_once = run_tunnel(80, 6e6);
+    for (int steps : {10, 20}) {
+        const TunnelResult gradual = run_tunnel(80, 6e6, gradual_release(steps));
+        std::cout << "Hoek–Brown tunnel, GSI 80, released over " << steps << " steps: wall displacement "
+                  << gradual.wall_displacement * 1e3 << " mm (at once " << at_once.wall_displacement * 1e3
+                  << ", integration " << reference.wall_displacement * 1e3 << ")\n";
+        EXPECT_NEAR(gradual.wall_displacement, at_once.wall_displacement, 0.005 * at_once.wall_displacement) << steps;
+        EXPECT_NEAR(gradual.wall_displacement, reference.wall_displacement, 0.02 * reference.wall_displacement) << steps;
+    }
 }
