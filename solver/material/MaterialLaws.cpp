@@ -4,7 +4,6 @@
 #include "material/HoekBrown.hpp"
 #include "material/MohrCoulomb.hpp"
 
-#include <cmath>
 #include <limits>
 
 namespace mcdda {
@@ -32,9 +31,7 @@ std::string material_law_keys() {
 }
 
 double law_value(const Material& material, const NumberField& field) {
-    const auto it = material.parameters.find(field.key);
-    if (it != material.parameters.end()) return it->second;
-    return field.default_value.value_or(std::numeric_limits<double>::quiet_NaN());
+    return material.parameter(field.key, field.default_value.value_or(std::numeric_limits<double>::quiet_NaN()));
 }
 
 std::unique_ptr<ConstitutiveLaw> make_constitutive_law(const Material& material, bool plasticity) {
