@@ -77,78 +77,78 @@
         <translation>Mohr-Coulomb-Reibungswinkel φ, in [0°, 90°)</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="251"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="263"/>
         <source>Hoek–Brown</source>
         <translation>Hoek–Brown</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="252"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="264"/>
         <source>Generalised Hoek–Brown rock mass (2002): strength from σci, GSI, mi and the disturbance D</source>
         <translation>Verallgemeinertes Hoek–Brown-Gebirge (2002): Festigkeit aus σci, GSI, mi und dem Störungsgrad D</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="254"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="266"/>
         <source>Intact strength σci</source>
         <translation>Gesteinsfestigkeit σci</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="256"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="268"/>
         <source>Uniaxial compressive strength σci of the intact rock, &gt; 0</source>
         <translation>Einaxiale Druckfestigkeit σci des intakten Gesteins, &gt; 0</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="257"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="269"/>
         <source>GSI</source>
         <translation>GSI</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="259"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="271"/>
         <source>Geological Strength Index of the rock mass, 0 to 100 (100: intact rock)</source>
         <translation>Geological Strength Index des Gebirges, 0 bis 100 (100: intaktes Gestein)</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="260"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="272"/>
         <source>Intact constant mi</source>
         <translation>Gesteinskonstante mi</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="262"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="274"/>
         <source>Hoek–Brown constant mi of the intact rock, &gt; 0 (about 4 for claystone to 33 for granite)</source>
         <translation>Hoek–Brown-Konstante mi des intakten Gesteins, &gt; 0 (etwa 4 für Tonstein bis 33 für Granit)</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="263"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="275"/>
         <source>Disturbance D</source>
         <translation>Störungsgrad D</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="265"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="277"/>
         <source>Disturbance factor D by blasting and stress relaxation, 0 (undisturbed) to 1</source>
         <translation>Störungsgrad D durch Sprengen und Entspannung, 0 (ungestört) bis 1</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="266"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="278"/>
         <location filename="../solver/material/MohrCoulomb.cpp" line="268"/>
         <source>Dilation angle ψ</source>
         <translation>Dilatanzwinkel ψ</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="268"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="280"/>
         <source>Dilation angle ψ of the plastic flow (constant), in [0°, 90°)</source>
         <translation>Dilatanzwinkel ψ des plastischen Fließens (konstant), in [0°, 90°)</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="269"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="281"/>
         <source>Tension cut-off</source>
         <translation>Zugabschneidung</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="270"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="282"/>
         <source>the Hoek–Brown tensile strength</source>
         <translation>die Hoek–Brown-Zugfestigkeit</translation>
     </message>
     <message>
-        <location filename="../solver/material/HoekBrown.cpp" line="271"/>
+        <location filename="../solver/material/HoekBrown.cpp" line="283"/>
         <source>A tension cut-off below the Hoek–Brown tensile strength s σci/mb, ≥ 0; 0 = none but the criterion&apos;s own</source>
         <translation>Eine Zugabschneidung unter der Hoek–Brown-Zugfestigkeit s σci/mb, ≥ 0; 0 = nur die des Kriteriums</translation>
     </message>
@@ -3751,37 +3751,42 @@
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="188"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="190"/>
+        <source>Joint ending in rock (not used)</source>
+        <translation>Im Gestein endende Kluft (nicht verwendet)</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="192"/>
         <source>Fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="195"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="199"/>
         <source>Fixed line (x and y)</source>
         <translation>Feste Linie (x und y)</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="197"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
         <source>Roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="199"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
         <source>Bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
         <source>Point load</source>
         <translation>Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="207"/>
         <source>Edge pressure</source>
         <translation>Kantendruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="209"/>
         <source>Measurement point</source>
         <translation>Messpunkt</translation>
     </message>

@@ -294,8 +294,9 @@ bool inside_region(const Region& r, const Point2& p)
     return std::none_of(r.holes.begin(), r.holes.end(), [&](const Ring& h) { return h.size() >= 3 && inside_ring(h, p); });
 }
 
-void add_joints(vtkRenderer* renderer, const Model& model, const Style& st)
+void add_joints(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
 {
+    const Model& model = p.model;
     // Not through regions hidden in the stage shown (an excavated opening).
     auto in_hidden_region = [&](const Point2& a, const Point2& b) {
         const Point2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
@@ -304,18 +305,35 @@ void add_joints(vtkRenderer* renderer, const Model& model, const Style& st)
                 return true;
         return false;
     };
-    Shapes inside, outside;
+    Shapes inside, outside, unused;
     for (const Joint& j : model.joints)
         for (std::size_t i = 0; i + 1 < j.points.size(); ++i)
             for (const SegmentPiece& piece : split_by_material(model, j.points[i], j.points[i + 1])) {
                 // A joint set's traces beyond the rock (openings, empty space) cut nothing: not
                 // drawn. An explicit joint's are, lightly, to show where it was drawn wrong.
                 if (!piece.in_material && j.joint_set >= 0) continue;
-                if (piece.in_material && in_hidden_region(piece.from, piece.to)) continue;
-                (piece.in_material ? inside : outside).lines.push_back({piece.from, piece.to});
+                if (!piece.in_material) outside.lines.push_back({piece.from, piece.to});
+                // Before the blocks are cut, the traces as drawn.
+                else if (p.blocks.empty() && !in_hidden_region(piece.from, piece.to))
+                    inside.lines.push_back({piece.from, piece.to});
             }
+    // Once cut, only what the analysis uses is drawn as a joint: the block edges on one. The
+    // pieces that separate nothing are drawn grey, so the picture never shows a joint the
+    // analysis does not have.
+    for (const Block& b : p.blocks) {
+        for (std::size_t r = 0; r < b.tags.size(); ++r) {
+            const Ring& ring = r == 0 ? b.outer : b.holes[r - 1];
+            for (std::size_t k = 0; k < ring.size() && k < b.tags[r].size(); ++k) {
+                const Point2 &from = ring[k], &to = ring[(k + 1) % ring.size()];
+                if (b.tags[r][k].joint >= 0 && !in_hidden_region(from, to)) inside.lines.push_back({from, to});
+            }
+        }
+        for (const Block::JointPiece& piece : b.unused_joint_pieces)
+            if (!in_hidden_region(piece.from, piece.to)) unused.lines.push_back({piece.from, piece.to});
+    }
     const double z = joint_layer * st.z_step;
     add_shapes(renderer, outside, palette::joint_outside, 1.5 * st.pixel, z);
+    add_shapes(renderer, unused, palette::joint_unused, 3.0 * st.pixel, z);
     add_shapes(renderer, inside, palette::joint, 3.0 * st.pixel, z);
 }
 
@@ -358,7 +376,7 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
     add_fill(renderer, p, st);
     if (options.show_mesh) add_mesh_edges(renderer, p, st);
     add_outlines(renderer, p, st);
-    if (options.show_joints) add_joints(renderer, p.model, st);
+    if (options.show_joints) add_joints(renderer, p, st);
 
     const double z = symbol_layer * st.z_step;
     // The supports, loads and bolts of the stage shown: a copy without those absent in it.

@@ -23,6 +23,13 @@ struct Block {
     std::vector<Ring> holes;
     std::vector<std::vector<EdgeTag>> tags;
     double area = 0.0;  ///< m²
+    /// A straight piece of a joint trace inside the block that separates nothing: it ends in the
+    /// rock (or floats in it), so the block is not cut along it and the analysis does not use it.
+    struct JointPiece {
+        Point2 from, to;
+        int joint = -1;  ///< index into Model::joints
+    };
+    std::vector<JointPiece> unused_joint_pieces;
 };
 
 }  // namespace mcdda

@@ -109,6 +109,19 @@ void ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, Ring& ring, std:
     } while (++c != first);
 }
 
+/// The joint edges of a boundary cycle with the same face on both sides (dangling ends, traces
+/// floating in the block), once each.
+void add_unused_joint_pieces(Arrangement::Ccb_halfedge_const_circulator first, std::vector<Block::JointPiece>& out) {
+    auto c = first;
+    do {
+        // The cycle passes such an edge in both directions: the one from the smaller address.
+        if (c->twin()->face() == c->face() && &*c < &*c->twin()) {
+            const auto joints = joints_of(c);
+            if (!joints.empty()) out.push_back({to_point(c->source()->point()), to_point(c->target()->point()), joints.front()});
+        }
+    } while (++c != first);
+}
+
 std::string length_text(double metres) {
     std::ostringstream out;
     out.precision(3);
@@ -316,7 +329,9 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
         b.material = model.regions[b.region].material;
         b.tags.emplace_back();
         ccb_ring(f->outer_ccb(), b.outer, b.tags.back());
+        add_unused_joint_pieces(f->outer_ccb(), b.unused_joint_pieces);
         for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) {
+            add_unused_joint_pieces(*h, b.unused_joint_pieces);
             Ring ring;
             std::vector<EdgeTag> tags;
             ccb_ring(*h, ring, tags);

@@ -70,6 +70,33 @@ TEST(BlockCutter, DanglingJointPiecesAreDroppedWithAWarning) {
     EXPECT_TRUE(p.blocks[0].holes.empty());
 }
 
+// What was dropped is known by place, so that a picture can show it as not used.
+TEST(BlockCutter, DroppedPiecesAreListedWithTheirBlockAndJoint) {
+    const Preprocessed p = cut({"/joints=[{\"name\": \"partial\", \"points\": [[-2,5],[4,5]]},"
+                                " {\"name\": \"inner\", \"points\": [[3,8],[6,8]]},"
+                                " {\"name\": \"across\", \"points\": [[-1,2],[11,2]]}]"});
+    ASSERT_TRUE(p.ok) << all_messages(p.diagnostics);
+    ASSERT_EQ(p.blocks.size(), 2u);
+    EXPECT_TRUE(p.blocks[0].unused_joint_pieces.empty());  // below "across": nothing dangles
+    const auto& pieces = p.blocks[1].unused_joint_pieces;
+    ASSERT_EQ(pieces.size(), 2u);
+    double partial = 0.0, inner = 0.0;
+    for (const Block::JointPiece& piece : pieces) {
+        const double length = std::hypot(piece.to.x - piece.from.x, piece.to.y - piece.from.y);
+        if (piece.joint == 0) {
+            partial += length;
+            EXPECT_NEAR(piece.from.y, 5.0, 1e-12);
+            EXPECT_NEAR(std::min(piece.from.x, piece.to.x), 0.0, 1e-12);  // from the boundary on
+        }
+        if (piece.joint == 1) {
+            inner += length;
+            EXPECT_NEAR(piece.from.y, 8.0, 1e-12);
+        }
+    }
+    EXPECT_NEAR(partial, 4.0, 1e-12);
+    EXPECT_NEAR(inner, 3.0, 1e-12);
+}
+
 TEST(BlockCutter, NonPersistentSetCrossingAPersistentOneCutsWhereItRunsJointToJoint) {
     // Vertical persistent traces at x = 3 and 7. Horizontal segments (period 12 m, 6 m long,
     // stagger 0.5) at y = 1, 5, 9: on y = 5 the segment [2, 8] crosses both traces and cuts the
