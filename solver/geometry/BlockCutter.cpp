@@ -10,6 +10,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <map>
 #include <queue>
@@ -114,8 +115,9 @@ void ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, Ring& ring, std:
 void add_unused_joint_pieces(Arrangement::Ccb_halfedge_const_circulator first, std::vector<Block::JointPiece>& out) {
     auto c = first;
     do {
-        // The cycle passes such an edge in both directions: the one from the smaller address.
-        if (c->twin()->face() == c->face() && &*c < &*c->twin()) {
+        // The cycle passes such an edge in both directions: the one from the smaller address
+        // (std::less: a total order even for objects of different allocations).
+        if (c->twin()->face() == c->face() && std::less<const void*>{}(&*c, &*c->twin())) {
             const auto joints = joints_of(c);
             if (!joints.empty()) out.push_back({to_point(c->source()->point()), to_point(c->target()->point()), joints.front()});
         }
