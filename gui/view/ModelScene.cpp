@@ -305,7 +305,7 @@ void add_joints(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
                 return true;
         return false;
     };
-    Shapes inside, outside, unused;
+    Shapes inside, outside;
     for (const Joint& j : model.joints)
         for (std::size_t i = 0; i + 1 < j.points.size(); ++i)
             for (const SegmentPiece& piece : split_by_material(model, j.points[i], j.points[i + 1])) {
@@ -317,9 +317,8 @@ void add_joints(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
                 else if (p.blocks.empty() && !in_hidden_region(piece.from, piece.to))
                     inside.lines.push_back({piece.from, piece.to});
             }
-    // Once cut, only what the analysis uses is drawn as a joint: the block edges on one. The
-    // pieces that separate nothing are drawn grey, so the picture never shows a joint the
-    // analysis does not have.
+    // Once cut, what the analysis uses is drawn as a joint: the block edges on one and the
+    // cracks (joint pieces ending in the rock), so the picture shows the joints the analysis has.
     for (const Block& b : p.blocks) {
         for (std::size_t r = 0; r < b.tags.size(); ++r) {
             const Ring& ring = r == 0 ? b.outer : b.holes[r - 1];
@@ -328,12 +327,11 @@ void add_joints(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
                 if (b.tags[r][k].joint >= 0 && !in_hidden_region(from, to)) inside.lines.push_back({from, to});
             }
         }
-        for (const Block::JointPiece& piece : b.unused_joint_pieces)
-            if (!in_hidden_region(piece.from, piece.to)) unused.lines.push_back({piece.from, piece.to});
+        for (const Block::Crack& crack : b.cracks)
+            if (!in_hidden_region(crack.from, crack.to)) inside.lines.push_back({crack.from, crack.to});
     }
     const double z = joint_layer * st.z_step;
     add_shapes(renderer, outside, palette::joint_outside, 1.5 * st.pixel, z);
-    add_shapes(renderer, unused, palette::joint_unused, 3.0 * st.pixel, z);
     add_shapes(renderer, inside, palette::joint, 3.0 * st.pixel, z);
 }
 

@@ -18,9 +18,8 @@ namespace palette {
 inline constexpr Rgb background{0.965, 0.970, 0.975};   ///< white-ish, not pure white
 inline constexpr Rgb block_outline{0.10, 0.10, 0.12};   ///< block and region boundaries
 inline constexpr Rgb mesh_edge{0.36, 0.38, 0.42};       ///< element edges (fine meshes stay light)
-inline constexpr Rgb joint{0.85, 0.08, 0.08};           ///< joint traces inside the rock
+inline constexpr Rgb joint{0.85, 0.08, 0.08};           ///< joints inside the rock (block edges on one, cracks)
 inline constexpr Rgb joint_outside{0.95, 0.62, 0.62};   ///< parts of traces outside any region
-inline constexpr Rgb joint_unused{0.55, 0.55, 0.55};    ///< parts inside the rock that separate nothing
 inline constexpr Rgb support{0.05, 0.25, 0.70};         ///< fixed points and rollers
 inline constexpr Rgb point_load{0.60, 0.00, 0.60};      ///< point loads
 inline constexpr Rgb pressure{0.80, 0.33, 0.00};        ///< edge pressures

@@ -184,10 +184,6 @@ std::vector<LegendEntry> legend_entries(const Preprocessed& p, const SceneOption
                                             : picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Block boundary"))});
     if (options.show_joints && !m.joints.empty())
         entries.push_back({LegendEntry::Icon::Line, palette::joint, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Joint"))});
-    const bool unused = std::any_of(p.blocks.begin(), p.blocks.end(), [](const Block& b) { return !b.unused_joint_pieces.empty(); });
-    if (options.show_joints && unused)
-        entries.push_back({LegendEntry::Icon::Line, palette::joint_unused,
-                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Joint ending in rock (not used)"))});
     if (options.show_supports && !m.fixed_points.empty())
         entries.push_back({LegendEntry::Icon::Pin, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Fixed point"))});
     // Rollers fixing both directions are drawn as pins (see roller_shapes).

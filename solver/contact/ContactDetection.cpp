@@ -73,6 +73,11 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
         }
     }
 
+    // Nodes on a crack face may touch the crack's other face, in their own block.
+    std::vector<char> on_crack(nodes.size(), 0);
+    for (const BoundaryEdge& e : topology.edges)
+        if (e.crack) on_crack[e.from] = on_crack[e.to] = 1;
+
     std::map<std::pair<int, int>, const Contact*> before;  // (node, edge block) → contact
     for (const Contact& c : previous) before[{c.node, c.edge_block}] = &c;
 
@@ -92,9 +97,16 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
             std::map<int, std::pair<std::pair<double, double>, int>> best;
             for (int e : *near) {
                 const BoundaryEdge& edge = topology.edges[e];
-                if (edge.block == block) continue;
                 const Point2& a = nodes[edge.from];
                 const Point2& b = nodes[edge.to];
+                if (edge.block == block) {
+                    // Within a block only the faces of its cracks touch: a node of one face against
+                    // an edge of the other (or of a crossing crack), never an edge of the node's
+                    // own, and never from a crack's tip, whose two edges face opposite ways.
+                    if (!edge.crack || !on_crack[node] || edge.from == node || edge.to == node) continue;
+                    const Point2 vn = node_normal[node];
+                    if (std::hypot(vn.x, vn.y) < 0.5) continue;
+                }
                 const double distance = distance_to_segment(nodes[node], a, b);
                 if (distance > search_distance) continue;
                 const double gap = signed_gap(nodes[node], a, b);

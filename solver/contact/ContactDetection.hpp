@@ -14,7 +14,8 @@
 namespace mcdda {
 
 /// Candidates for the current coordinates `nodes`: for every boundary node and every other block
-/// with an edge within `search_distance`, the nearest such edge (ties: the one the node is least
+/// (and, for a node on a crack face, its own block's crack faces) with an edge within
+/// `search_distance`, the nearest such edge (ties: the one the node is least
 /// inside of) that the vertex faces (the edge's outward normal and the vertex's point against each
 /// other: a simplified form of Shi's entrance rule for vertex–vertex cases) and projects onto.
 /// A contact of the same node and block in `previous` keeps its state. A new one starts open

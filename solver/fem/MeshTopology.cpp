@@ -9,23 +9,37 @@ namespace mcdda {
 
 namespace {
 
-/// The joint tag of the block ring edge that contains the mesh edge (a, b).
-int joint_of(const Block& block, Point2 a, Point2 b, double tolerance) {
+/// What a boundary edge of the mesh lies on.
+struct EdgeSource {
+    int joint = -1;
+    bool crack = false;
+};
+
+/// The block ring edge or crack that contains the mesh edge (a, b): its joint tag, and whether
+/// it is a crack face.
+EdgeSource source_of(const Block& block, Point2 a, Point2 b, double tolerance) {
     const Point2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
-    auto search = [&](const Ring& ring, const std::vector<EdgeTag>& tags) -> std::pair<double, int> {
-        std::pair<double, int> best{1e300, -1};
+    double best = 1e300;
+    EdgeSource source;
+    auto search = [&](const Ring& ring, const std::vector<EdgeTag>& tags) {
         for (std::size_t k = 0; k < ring.size(); ++k) {
             const double d = distance_to_segment(mid, ring[k], ring[(k + 1) % ring.size()]);
-            if (d < best.first) best = {d, tags[k].joint};
+            if (d < best) {
+                best = d;
+                source = {tags[k].joint, false};
+            }
         }
-        return best;
     };
-    auto best = search(block.outer, block.tags[0]);
-    for (std::size_t h = 0; h < block.holes.size(); ++h) {
-        const auto candidate = search(block.holes[h], block.tags[h + 1]);
-        if (candidate.first < best.first) best = candidate;
+    search(block.outer, block.tags[0]);
+    for (std::size_t h = 0; h < block.holes.size(); ++h) search(block.holes[h], block.tags[h + 1]);
+    for (const Block::Crack& c : block.cracks) {
+        const double d = distance_to_segment(mid, c.from, c.to);
+        if (d < best) {
+            best = d;
+            source = {c.joint, true};
+        }
     }
-    return best.first <= tolerance ? best.second : -1;
+    return best <= tolerance ? source : EdgeSource{};
 }
 
 }  // namespace
@@ -61,10 +75,10 @@ MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks) 
         uses.assign(edge_count, 0);
         for (int id : edge_id) ++uses[id];
     }
-    auto link = [&](int from, int to, int block, int joint) {
+    auto link = [&](int from, int to, int block, EdgeSource source) {
         t.edge_out_of[from] = static_cast<int>(t.edges.size());
         t.edge_into[to] = static_cast<int>(t.edges.size());
-        t.edges.push_back({from, to, block, joint});
+        t.edges.push_back({from, to, block, source.joint, source.crack});
     };
     for (int b = 0; b < mesh.block_count(); ++b)
         for (int e = mesh.block_triangle_begin[b]; e < mesh.block_triangle_begin[b + 1]; ++e)
@@ -73,14 +87,14 @@ MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks) 
                 if (uses[m >= 0 ? m : edge_id[3 * e + k]] != 1) continue;
                 // Counter-clockwise triangles give the edge the direction with the block on the left.
                 const int i = mesh.triangles[e][k], j = mesh.triangles[e][(k + 1) % 3];
-                const int joint = b < static_cast<int>(blocks.size())
-                                      ? joint_of(blocks[b], mesh.nodes[i], mesh.nodes[j], tolerance)
-                                      : -1;
+                const EdgeSource source = b < static_cast<int>(blocks.size())
+                                              ? source_of(blocks[b], mesh.nodes[i], mesh.nodes[j], tolerance)
+                                              : EdgeSource{};
                 if (m < 0) {
-                    link(i, j, b, joint);
+                    link(i, j, b, source);
                 } else {
-                    link(i, m, b, joint);
-                    link(m, j, b, joint);
+                    link(i, m, b, source);
+                    link(m, j, b, source);
                 }
             }
     for (std::size_t i = 0; i < n; ++i)

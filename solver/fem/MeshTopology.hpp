@@ -19,7 +19,8 @@ namespace mcdda {
 struct BoundaryEdge {
     int from = -1, to = -1;  ///< node indices
     int block = -1;
-    int joint = -1;          ///< joint of the block ring edge it lies on (−1: none)
+    int joint = -1;          ///< joint of the block ring edge or crack it lies on (−1: none)
+    bool crack = false;      ///< a face of a crack inside the block (Block::cracks)
 };
 
 struct MeshTopology {
@@ -38,7 +39,8 @@ struct MeshTopology {
 };
 
 /// Finds the boundary edges of every block, tagging them with the joints of `blocks` (both halves
-/// of a six-node edge with the tag of the whole edge). O(n log n) in the number of triangles.
+/// of a six-node edge with the tag of the whole edge). The faces of a crack, whose nodes the
+/// mesher doubled, are boundary edges of their block like its outline, tagged as crack faces. O(n log n) in the number of triangles.
 MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks);
 
 /// Index of the node nearest to `p` (the lowest index among equally near ones).

@@ -24,12 +24,15 @@ struct Block {
     std::vector<std::vector<EdgeTag>> tags;
     double area = 0.0;  ///< m²
     /// A straight piece of a joint trace inside the block that separates nothing: it ends in the
-    /// rock (or floats in it), so the block is not cut along it and the analysis does not use it.
-    struct JointPiece {
+    /// rock (or floats in it). The block is not cut along it; the mesher makes it a crack: the
+    /// mesh conforms to it and its nodes are doubled except at its tips, so that its two faces
+    /// open and slide through contacts of the joint's material while the rock beyond the tips
+    /// stays continuous.
+    struct Crack {
         Point2 from, to;
         int joint = -1;  ///< index into Model::joints
     };
-    std::vector<JointPiece> unused_joint_pieces;
+    std::vector<Crack> cracks;
 };
 
 }  // namespace mcdda

@@ -111,8 +111,8 @@ void ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, Ring& ring, std:
 }
 
 /// The joint edges of a boundary cycle with the same face on both sides (dangling ends, traces
-/// floating in the block), once each.
-void add_unused_joint_pieces(Arrangement::Ccb_halfedge_const_circulator first, std::vector<Block::JointPiece>& out) {
+/// floating in the block), once each: the block's cracks.
+void add_cracks(Arrangement::Ccb_halfedge_const_circulator first, std::vector<Block::Crack>& out) {
     auto c = first;
     do {
         // The cycle passes such an edge in both directions: the one from the smaller address
@@ -122,13 +122,6 @@ void add_unused_joint_pieces(Arrangement::Ccb_halfedge_const_circulator first, s
             if (!joints.empty()) out.push_back({to_point(c->source()->point()), to_point(c->target()->point()), joints.front()});
         }
     } while (++c != first);
-}
-
-std::string length_text(double metres) {
-    std::ostringstream out;
-    out.precision(3);
-    out << metres << " m";
-    return out.str();
 }
 
 /// The joints' polylines with every region vertex that lies within `tolerance` of a joint made
@@ -271,55 +264,16 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
                                    model.regions[a].name + "\" (/regions/" + std::to_string(a) + ")"});
     if (!overlaps.empty()) return {};
 
-    // Classify joint pieces: cutting (two different in-region faces), dangling (same face on
-    // both sides), or outside (no region on either side).
-    std::vector<double> cutting(model.joints.size(), 0.0), dangling(model.joints.size(), 0.0),
-        in_region(model.joints.size(), 0.0);
-    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-        const auto joints = joints_of(e);
-        if (joints.empty()) continue;
-        const bool left_in = !inside.at(&*e->face()).empty();
-        const bool right_in = !inside.at(&*e->twin()->face()).empty();
-        const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(e->source()->point(), e->target()->point())));
-        for (int j : joints) {
-            if (left_in || right_in) in_region[j] += length;
-            if (!left_in || !right_in) continue;  // outside, or lying on the model's outer boundary
-            if (e->face() == e->twin()->face()) dangling[j] += length;
-            else cutting[j] += length;
-        }
-    }
-    // Generated traces are reported per joint set: a set with a limited extent always leaves
-    // dangling ends, and one line per trace would drown the other messages.
-    std::vector<double> set_dangling(model.joint_sets.size(), 0.0);
-    std::vector<int> set_pieces(model.joint_sets.size(), 0);
-    for (std::size_t j = 0; j < model.joints.size(); ++j) {
-        const Joint& joint = model.joints[j];
-        if (joint.joint_set >= 0) {
-            set_dangling[joint.joint_set] += dangling[j];
-            set_pieces[joint.joint_set] += dangling[j] > 0.0;
-            continue;
-        }
-        const std::string path = joint_path(model, static_cast<int>(j));
-        if (in_region[j] == 0.0) {
-            diagnostics.push_back({Diagnostic::Severity::Error, path,
-                                   "joint \"" + joint.name + "\" lies outside every region"});
-        } else if (dangling[j] > 0.0) {
-            diagnostics.push_back({Diagnostic::Severity::Warning, path,
-                                   "joint \"" + joint.name + "\": " + length_text(dangling[j]) +
-                                       " of its trace separates no blocks and was dropped" +
-                                       (cutting[j] == 0.0 ? " (all of it)" : "")});
-        }
-    }
-    for (std::size_t s = 0; s < model.joint_sets.size(); ++s) {
-        if (!(set_dangling[s] > 0.0)) continue;
-        // A set with persistence < 1 generates segments of traces, not whole traces.
-        const bool segments = model.joint_sets[s].persistence < 1.0;
-        const char* pieces = set_pieces[s] == 1 ? (segments ? " segment" : " trace") : (segments ? " segments" : " traces");
-        diagnostics.push_back({Diagnostic::Severity::Warning, "/joint_sets/" + std::to_string(s),
-                               "joint set \"" + model.joint_sets[s].name + "\": " + length_text(set_dangling[s]) +
-                                   " of " + std::to_string(set_pieces[s]) + pieces +
-                                   " separates no blocks and was dropped"});
-    }
+    // A joint with no piece in any region is a mistake; the pieces that separate no blocks (they
+    // end in the rock, or float in it) become cracks inside their block (add_cracks).
+    std::vector<char> in_region(model.joints.size(), 0);
+    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e)
+        if (!inside.at(&*e->face()).empty() || !inside.at(&*e->twin()->face()).empty())
+            for (int j : joints_of(e)) in_region[j] = 1;
+    for (std::size_t j = 0; j < model.joints.size(); ++j)
+        if (model.joints[j].joint_set < 0 && !in_region[j])
+            diagnostics.push_back({Diagnostic::Severity::Error, joint_path(model, static_cast<int>(j)),
+                                   "joint \"" + model.joints[j].name + "\" lies outside every region"});
 
     std::vector<Block> blocks;
     for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
@@ -331,9 +285,9 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
         b.material = model.regions[b.region].material;
         b.tags.emplace_back();
         ccb_ring(f->outer_ccb(), b.outer, b.tags.back());
-        add_unused_joint_pieces(f->outer_ccb(), b.unused_joint_pieces);
+        add_cracks(f->outer_ccb(), b.cracks);
         for (auto h = f->inner_ccbs_begin(); h != f->inner_ccbs_end(); ++h) {
-            add_unused_joint_pieces(*h, b.unused_joint_pieces);
+            add_cracks(*h, b.cracks);
             Ring ring;
             std::vector<EdgeTag> tags;
             ccb_ring(*h, ring, tags);

@@ -12,8 +12,8 @@
 namespace mcdda {
 
 /// Returns the blocks of `model` (joint sets must already be expanded). Reports as errors:
-/// overlapping regions, explicit joints lying outside every region. Reports as warnings: joint
-/// pieces that separate nothing (dangling ends, traces inside one block), which are dropped.
+/// overlapping regions, explicit joints lying outside every region. Joint pieces that separate
+/// nothing (dangling ends, traces inside one block) become the cracks of their block.
 /// Expects region rings that passed check_region_rings.
 std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagnostics);
 

@@ -41,6 +41,18 @@ std::optional<SmallFeature> find_small_feature(const Block& block, double tolera
             edges.push_back(e);
         }
     }
+    // A crack is a ring of its own (from, to), so that its ends are checked against everything
+    // else and everything against it; ends it shares with the block's rings or other cracks are
+    // the same point, topology again.
+    std::vector<Ring> crack_rings;
+    for (const Block::Crack& c : block.cracks) crack_rings.push_back({c.from, c.to});
+    for (const Ring& c : crack_rings) {
+        const double length = std::hypot(c[1].x - c[0].x, c[1].y - c[0].y);
+        if (!(length >= tolerance)) return SmallFeature{length, c[0], "a crack " + metres(length) + " long"};
+        perimeter += length;
+        edges.push_back({c[0], c[1], static_cast<int>(rings.size()), 0, 1});
+        rings.push_back(&c);
+    }
     if (edges.empty()) return std::nullopt;
     // Edges binned in square cells about as large as an average edge (never below the
     // tolerance): a vertex is compared with the edges of its own and the neighbouring cells.

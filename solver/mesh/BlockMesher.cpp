@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <list>
+#include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -152,6 +154,108 @@ void insert_ring(CDT& cdt, const Ring& ring) {
     for (std::size_t i = 0; i < v.size(); ++i)
         if (v[i] != v[(i + 1) % v.size()]) cdt.insert_constraint(v[i], v[(i + 1) % v.size()]);
 }
+
+/// Inserts the block's cracks as constraints inside it. A crack piece with both ends free in the
+/// rock goes in as two halves: a crack must have a node between its tips to open at all (its
+/// tips are not doubled).
+void insert_cracks(CDT& cdt, const Block& block, const std::vector<Point2>& tips) {
+    auto is_tip = [&](Point2 p) {
+        return std::any_of(tips.begin(), tips.end(), [&](Point2 t) { return t.x == p.x && t.y == p.y; });
+    };
+    for (const Block::Crack& c : block.cracks) {
+        const CDT::Vertex_handle a = cdt.insert(CgalPoint(c.from.x, c.from.y));
+        const CDT::Vertex_handle b = cdt.insert(CgalPoint(c.to.x, c.to.y));
+        if (a == b) continue;
+        if (is_tip(c.from) && is_tip(c.to)) {
+            const CDT::Vertex_handle m = cdt.insert(CgalPoint(0.5 * (c.from.x + c.to.x), 0.5 * (c.from.y + c.to.y)));
+            cdt.insert_constraint(a, m);
+            cdt.insert_constraint(m, b);
+        } else {
+            cdt.insert_constraint(a, b);
+        }
+    }
+}
+
+/// Splits every mesh vertex on a crack into one node per sector of the triangles around it, the
+/// sectors being separated by crack edges (constrained edges with the block on both sides): a
+/// vertex inside a crack gets two nodes, a crack's tip one (the rock is continuous beyond it), a
+/// crack's mouth on the block outline two, a crossing of two cracks four. `triangle_of` maps each
+/// face of the block to its triangle in `mesh`; the new nodes are appended to `mesh` for block
+/// `block`.
+void split_crack_vertices(const CDT& cdt, const std::vector<CDT::Face_handle>& faces,
+                          const std::unordered_map<CDT::Face_handle, int>& triangle_of, Mesh& mesh, int block) {
+    auto inside = [&](CDT::Face_handle f) { return !cdt.is_infinite(f) && f->is_in_domain(); };
+    auto is_crack = [&](CDT::Face_handle f, int i) {
+        return cdt.is_constrained({f, i}) && inside(f) && inside(f->neighbor(i));
+    };
+    // Vertices on cracks, in the faces' order (a deterministic numbering of the new nodes).
+    std::vector<CDT::Vertex_handle> on_crack;
+    std::unordered_map<CDT::Vertex_handle, char> seen;
+    for (const CDT::Face_handle& f : faces)
+        for (int i = 0; i < 3; ++i)
+            if (is_crack(f, i))
+                for (const CDT::Vertex_handle v : {f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i))})
+                    if (seen.emplace(v, 1).second) on_crack.push_back(v);
+    for (const CDT::Vertex_handle v : on_crack) {
+        std::vector<CDT::Face_handle> around;
+        auto fc = cdt.incident_faces(v), done = fc;
+        do around.push_back(fc); while (++fc != done);
+        const std::size_t n = around.size();
+        // Two faces in turn around v are joined unless one is outside the block or the edge
+        // between them is a crack or the outline.
+        auto joined = [&](std::size_t k) {
+            const CDT::Face_handle f = around[k], g = around[(k + 1) % n];
+            return inside(f) && inside(g) && !cdt.is_constrained({f, f->index(g)});
+        };
+        std::size_t start = 0;
+        while (start < n && joined(start)) ++start;
+        if (start == n) continue;  // no break around v: nothing to split
+        int sector = -1, node = -1;
+        bool open = false;  // the current sector has its node
+        for (std::size_t step = 1; step <= n; ++step) {
+            const std::size_t k = (start + step) % n;
+            if (!joined((k + n - 1) % n)) open = false;
+            const CDT::Face_handle f = around[k];
+            if (!inside(f)) continue;
+            auto& tri = mesh.triangles[triangle_of.at(f)];
+            const int corner = f->index(v);
+            if (!open) {
+                ++sector;
+                open = true;
+                if (sector == 0) {
+                    node = tri[corner];
+                } else {
+                    node = static_cast<int>(mesh.nodes.size());
+                    mesh.nodes.push_back(mesh.nodes[tri[corner]]);
+                    mesh.node_block.push_back(block);
+                }
+            }
+            tri[corner] = node;
+        }
+    }
+}
+
+/// The ends of the block's cracks that lie free in the rock: on no other crack and not on the
+/// block's outline.
+std::vector<Point2> crack_tips(const Block& block) {
+    std::map<std::pair<double, double>, int> ends;
+    for (const Block::Crack& c : block.cracks) {
+        ++ends[{c.from.x, c.from.y}];
+        ++ends[{c.to.x, c.to.y}];
+    }
+    std::set<std::pair<double, double>> outline;
+    for (const Point2& p : block.outer) outline.insert({p.x, p.y});
+    for (const Ring& h : block.holes)
+        for (const Point2& p : h) outline.insert({p.x, p.y});
+    std::vector<Point2> tips;
+    for (const auto& [p, count] : ends)
+        if (count == 1 && !outline.count(p)) tips.push_back({p.first, p.second});
+    return tips;
+}
+
+/// Element size at a crack tip, as a fraction of the crack piece's length: the mesh resolves the
+/// opening's square-root profile near the tip, and a short crack is never one element.
+constexpr double crack_tip_size_fraction = 0.1;
 
 /// Blocks that need more triangles than this are seeded before refinement (below).
 constexpr double seeded_block_triangles = 100000;
@@ -307,18 +411,31 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         diagnostics.push_back({Diagnostic::Severity::Error, "/mesh", msg.str()});
         return mesh;
     }
-    const SizeField field(model.mesh, resolved_global_size(model));
-    const SizeFieldCriteria criteria(model.mesh.min_angle, field);
-    std::vector<double> uniform_sizes{field.global_size()};
+    const SizeField model_field(model.mesh, resolved_global_size(model));
+    std::vector<double> uniform_sizes{model_field.global_size()};
     for (const LocalSize& l : model.mesh.local) uniform_sizes.push_back(l.size);
     const double smallest_size = *std::min_element(uniform_sizes.begin(), uniform_sizes.end());
 
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
         const Block& block = blocks[bi];
+        // The size field of the block: the model's, finer towards the tips of its cracks.
+        const std::vector<Point2> tips = crack_tips(block);
+        MeshControls controls = model.mesh;
+        for (const Point2& tip : tips) {
+            double length = 1e300;
+            for (const Block::Crack& c : block.cracks)
+                if ((c.from.x == tip.x && c.from.y == tip.y) || (c.to.x == tip.x && c.to.y == tip.y))
+                    length = std::min(length, std::hypot(c.to.x - c.from.x, c.to.y - c.from.y));
+            const double size = std::min(model_field(tip), crack_tip_size_fraction * length);
+            if (size < model_field(tip)) controls.local.push_back({tip, tip, size, 0.0});
+        }
+        const SizeField field(controls, model_field.global_size());
+        const SizeFieldCriteria criteria(model.mesh.min_angle, field);
         CDT cdt;
         insert_ring(cdt, block.outer);
         for (const Ring& h : block.holes) insert_ring(cdt, h);
         const std::list<CgalPoint> seeds = hole_seeds(cdt);
+        insert_cracks(cdt, block, tips);
         // (About two triangles per seed: only large blocks are seeded, so that the meshes of
         // smaller ones stay those of plain refinement. A block that could not hold that many
         // seeds even at the smallest size is not looked at: thousands of small blocks.)
@@ -347,8 +464,12 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         }
 
         std::unordered_map<CDT::Vertex_handle, int> node_of;
+        std::vector<CDT::Face_handle> faces;
+        std::unordered_map<CDT::Face_handle, int> triangle_of;
         for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
             if (!f->is_in_domain()) continue;
+            faces.push_back(f);
+            triangle_of.emplace(f, static_cast<int>(mesh.triangles.size()));
             std::array<int, 3> tri{};
             for (int k = 0; k < 3; ++k) {
                 const CDT::Vertex_handle v = f->vertex(k);
@@ -364,6 +485,7 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
             mesh.triangle_block.push_back(static_cast<int>(bi));
             mesh.triangle_material.push_back(block.material);
         }
+        if (!block.cracks.empty()) split_crack_vertices(cdt, faces, triangle_of, mesh, static_cast<int>(bi));
         mesh.block_node_begin.push_back(static_cast<int>(mesh.nodes.size()));
         mesh.block_triangle_begin.push_back(static_cast<int>(mesh.triangles.size()));
     }

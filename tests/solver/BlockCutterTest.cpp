@@ -56,32 +56,32 @@ TEST(BlockCutter, CrossingJointsAndAPolylineCutExactly) {
     }
 }
 
-TEST(BlockCutter, DanglingJointPiecesAreDroppedWithAWarning) {
+TEST(BlockCutter, DanglingJointPiecesBecomeCracksWithoutAWarning) {
     const Preprocessed p = cut({"/joints=[{\"name\": \"partial\", \"points\": [[-2,5],[4,5]]},"
                                 " {\"name\": \"inner\", \"points\": [[3,8],[6,8]]}]"});
     ASSERT_TRUE(p.ok) << all_messages(p.diagnostics);
     EXPECT_EQ(p.blocks.size(), 1u);
     EXPECT_NEAR(p.blocks[0].area, 100.0, 1e-9);
-    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Warning, "/joints/0", "4 m of its trace separates no blocks"))
-        << all_messages(p.diagnostics);
-    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Warning, "/joints/1", "(all of it)"));
-    // The dropped pieces leave no trace in the block's boundary.
+    EXPECT_TRUE(p.diagnostics.empty()) << all_messages(p.diagnostics);
+    // The cracks are no part of the block's outline.
     EXPECT_EQ(p.blocks[0].outer.size(), 5u);  // 4 corners + where "partial" met the boundary
     EXPECT_TRUE(p.blocks[0].holes.empty());
+    EXPECT_EQ(p.blocks[0].cracks.size(), 2u);
 }
 
-// What was dropped is known by place, so that a picture can show it as not used.
-TEST(BlockCutter, DroppedPiecesAreListedWithTheirBlockAndJoint) {
+// The cracks are known by place, block and joint (for the mesher, the contacts' joint material
+// and the pictures).
+TEST(BlockCutter, CracksAreListedWithTheirBlockAndJoint) {
     const Preprocessed p = cut({"/joints=[{\"name\": \"partial\", \"points\": [[-2,5],[4,5]]},"
                                 " {\"name\": \"inner\", \"points\": [[3,8],[6,8]]},"
                                 " {\"name\": \"across\", \"points\": [[-1,2],[11,2]]}]"});
     ASSERT_TRUE(p.ok) << all_messages(p.diagnostics);
     ASSERT_EQ(p.blocks.size(), 2u);
-    EXPECT_TRUE(p.blocks[0].unused_joint_pieces.empty());  // below "across": nothing dangles
-    const auto& pieces = p.blocks[1].unused_joint_pieces;
+    EXPECT_TRUE(p.blocks[0].cracks.empty());  // below "across": nothing dangles
+    const auto& pieces = p.blocks[1].cracks;
     ASSERT_EQ(pieces.size(), 2u);
     double partial = 0.0, inner = 0.0;
-    for (const Block::JointPiece& piece : pieces) {
+    for (const Block::Crack& piece : pieces) {
         const double length = std::hypot(piece.to.x - piece.from.x, piece.to.y - piece.from.y);
         if (piece.joint == 0) {
             partial += length;
@@ -101,7 +101,7 @@ TEST(BlockCutter, NonPersistentSetCrossingAPersistentOneCutsWhereItRunsJointToJo
     // Vertical persistent traces at x = 3 and 7. Horizontal segments (period 12 m, 6 m long,
     // stagger 0.5) at y = 1, 5, 9: on y = 5 the segment [2, 8] crosses both traces and cuts the
     // middle block in two; its ends (1 m each) and the segments [0, 2] and [8, 10] on y = 1 and
-    // y = 9 end inside blocks and are dropped: 2 + 4 · 2 = 10 m of 5 segments.
+    // y = 9 end inside blocks and become cracks: 2 + 4 · 2 = 10 m in 6 pieces.
     const Preprocessed p = cut({"/joint_sets=[{\"name\": \"vertical\", \"angle\": 90, \"spacing\": 4, \"origin\": [3, 0]},"
                                 " {\"name\": \"bridged\", \"angle\": 0, \"spacing\": 4, \"origin\": [2, 5],"
                                 "  \"persistence\": 0.5, \"trace_length\": 6, \"stagger\": 0.5}]"});
@@ -118,12 +118,16 @@ TEST(BlockCutter, NonPersistentSetCrossingAPersistentOneCutsWhereItRunsJointToJo
     EXPECT_NEAR(areas[1], 20.0, 1e-9);  // and above
     EXPECT_NEAR(areas[2], 30.0, 1e-9);
     EXPECT_NEAR(areas[3], 30.0, 1e-9);
-    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Warning, "/joint_sets/1",
-                               "joint set \"bridged\": 10 m of 5 segments separates no blocks"))
-        << all_messages(p.diagnostics);
-    // The persistent set cuts along its whole length: nothing of it is dropped.
-    EXPECT_FALSE(has_diagnostic(p.diagnostics, Severity::Warning, "/joint_sets/0", "separates no blocks"))
-        << all_messages(p.diagnostics);
+    double crack_length = 0.0;
+    int cracks = 0;
+    for (const Block& b : p.blocks)
+        for (const Block::Crack& c : b.cracks) {
+            EXPECT_EQ(p.model.joints[c.joint].joint_set, 1);  // the persistent set cuts along its whole length
+            crack_length += std::hypot(c.to.x - c.from.x, c.to.y - c.from.y);
+            ++cracks;
+        }
+    EXPECT_NEAR(crack_length, 10.0, 1e-9);
+    EXPECT_EQ(cracks, 6);
 }
 
 TEST(BlockCutter, RegionHoleSurvivesWhenNoJointReachesIt) {
