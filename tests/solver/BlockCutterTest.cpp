@@ -1,4 +1,4 @@
-// Block cutting: joints cut regions into blocks exactly; dangling pieces are dropped with a warning.
+// Block cutting: joints cut regions into blocks exactly; pieces that separate nothing become cracks.
 
 #include "TestModels.hpp"
 #include "geometry/PolygonChecks.hpp"
