@@ -47,6 +47,10 @@ public:
         }
     };
 
+    /// Faces with a longest edge below this fraction of the local size are not refined for their
+    /// shape.
+    static constexpr double smallest_refined = 1e-3;
+
     class Is_bad {
     public:
         Is_bad(double squared_sine_bound, const SizeField* field) : bound_(squared_sine_bound), field_(field) {}
@@ -66,6 +70,14 @@ public:
             if (q.size() > 1) {
                 q.first = 1;
                 return CGAL::Mesh_2::IMPERATIVELY_BAD;
+            }
+            // A face a thousand times below the size it is asked for sits in an input angle too
+            // sharp for the angle bound (two cracks meeting at a fraction of a degree): refining it
+            // for its shape would go on until the constructions break down (CGAL's mesher then
+            // crashes). It is kept as it is.
+            if (l[2] < smallest_refined * smallest_refined * h * h) {
+                q.first = 1;
+                return CGAL::Mesh_2::NOT_BAD;
             }
             const double area2 = 2.0 * CGAL::area(pa, pb, pc);
             q.first = area2 * area2 / (l[2] * l[1]);  // squared sine of the smallest angle

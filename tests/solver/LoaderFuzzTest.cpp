@@ -178,3 +178,94 @@ TEST(LoaderFuzz, MutatedExamplesNeverCrashTheLoader) {
     for (int k = 0; k < 7; ++k) std::cout << "; " << document_mutations[k] << " " << mutation_counts[k];
     std::cout << "\n";
 }
+
+// Random cracks (joints ending in the rock) in a square with an opening: tips a hair from an
+// edge or a vertex, cracks through vertices, crossing each other at tiny angles, touching other
+// cracks, from the outline into the rock. Every model meshes or is refused with the project's own
+// message, and one step of the small ones neither crashes nor throws anything unexpected.
+TEST(LoaderFuzz, RandomCracksNeverCrashOrHang) {
+    std::mt19937 rng(20261125);
+    const char* count_text = std::getenv("MCDDA_FUZZ_CRACK_MODELS");
+    const int models = count_text ? std::max(1, std::atoi(count_text)) : 240;
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::vector<Point2> vertices = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+    const double hairs[] = {0.0, 1e-12, 1e-7, 1e-5, 1e-3, 0.05};
+    int rejected = 0, meshed = 0, solved = 0;
+    for (int m = 0; m < models; ++m) {
+        std::vector<std::pair<Point2, Point2>> cracks;
+        const int count = 1 + static_cast<int>(unit(rng) * 5);
+        auto inside_point = [&] {
+            for (;;) {
+                const Point2 p{0.5 + 9 * unit(rng), 0.5 + 9 * unit(rng)};
+                if (p.x < 3.5 || p.x > 6.5 || p.y < 3.5 || p.y > 6.5) return p;
+            }
+        };
+        for (int c = 0; c < count; ++c) {
+            Point2 a = inside_point(), b = inside_point();
+            const double hair = hairs[std::uniform_int_distribution<int>(0, 5)(rng)];
+            switch (std::uniform_int_distribution<int>(0, 5)(rng)) {
+                case 0: break;  // free in the rock
+                case 1: a = {hair, a.y}; break;  // tip a hair from the left edge (0: on it, the mouth)
+                case 2: a = vertices[std::uniform_int_distribution<int>(0, 7)(rng)]; a.x += hair; break;  // at or near a vertex
+                case 3:  // through a vertex: from the point past the vertex on
+                    a = vertices[std::uniform_int_distribution<int>(0, 3)(rng)];
+                    b = {a.x + (5 - a.x) * 0.6, a.y + (5 - a.y) * 0.3 + hair};
+                    a = {a.x - (b.x - a.x) * 0.2, a.y - (b.y - a.y) * 0.2};
+                    break;
+                case 4:  // crossing or touching the last crack at a tiny angle
+                    if (!cracks.empty()) {
+                        const auto [p, q] = cracks.back();
+                        const double angle = hair * 10;
+                        const Point2 mid{(p.x + q.x) / 2, (p.y + q.y) / 2}, d{(q.x - p.x) / 2, (q.y - p.y) / 2};
+                        a = {mid.x - d.x * std::cos(angle) + d.y * std::sin(angle), mid.y - d.y * std::cos(angle) - d.x * std::sin(angle)};
+                        b = {mid.x + d.x * std::cos(angle) - d.y * std::sin(angle), mid.y + d.y * std::cos(angle) + d.x * std::sin(angle)};
+                    }
+                    break;
+                default:  // ending on (or a hair from) the last crack
+                    if (!cracks.empty()) {
+                        const auto [p, q] = cracks.back();
+                        const double t = unit(rng);
+                        b = {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y) + hair};
+                    }
+                    break;
+            }
+            cracks.push_back({a, b});
+        }
+        json doc = json::parse(mcdda::test::square_model_json());
+        doc["regions"][0]["holes"] = json::array({json::array({{4, 4}, {4, 6}, {6, 6}, {6, 4}})});
+        for (const auto& [a, b] : cracks)
+            doc["joints"].push_back({{"points", {{a.x, a.y}, {b.x, b.y}}}, {"joint_material", "joint"}});
+        doc["mesh"]["max_elements"] = 30000;
+        const std::string text = doc.dump(1);
+        // MCDDA_FUZZ_DUMP=FILE: each model written there before it is tried (the last one is the
+        // culprit of a crash).
+        if (const char* dump = std::getenv("MCDDA_FUZZ_DUMP")) std::ofstream(dump) << text;
+        Preprocessed p;
+        ASSERT_NO_THROW({
+            ReadResult r = read_model_text(text, {});
+            if (r.model) p = preprocess_model(*r.model, PreprocessStage::Mesh);
+            else p.diagnostics = r.diagnostics;
+        }) << text;
+        for (const Diagnostic& d : p.diagnostics)
+            EXPECT_EQ(d.message.find("internal failure"), std::string::npos) << d.message << "\n" << text;
+        if (!p.ok) {
+            ++rejected;
+            EXPECT_TRUE(has_errors(p.diagnostics)) << text;
+            continue;
+        }
+        ++meshed;
+        if (p.statistics.elements > 8000 || m % 2 != 0) continue;
+        ++solved;
+        try {
+            Simulation s(p);
+            s.advance();
+        } catch (const std::runtime_error& e) {
+            EXPECT_GT(std::string(e.what()).size(), 10u) << text;
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "unexpected " << e.what() << "\n" << text;
+        }
+    }
+    EXPECT_GT(meshed, models / 2);  // most random cracks are fine models
+    std::cout << models << " models with random cracks: " << rejected << " refused with messages, " << meshed
+              << " meshed, " << solved << " solved one step\n";
+}
