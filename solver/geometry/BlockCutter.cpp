@@ -10,7 +10,6 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
 #include <map>
 #include <queue>
@@ -115,9 +114,11 @@ void ccb_ring(Arrangement::Ccb_halfedge_const_circulator first, Ring& ring, std:
 void add_cracks(Arrangement::Ccb_halfedge_const_circulator first, std::vector<Block::Crack>& out) {
     auto c = first;
     do {
-        // The cycle passes such an edge in both directions: the one from the smaller address
-        // (std::less: a total order even for objects of different allocations).
-        if (c->twin()->face() == c->face() && std::less<const void*>{}(&*c, &*c->twin())) {
+        // The cycle passes such an edge in both directions: the one from the lexicographically
+        // smaller end (not the smaller address, which changes from run to run and with it the
+        // order in which the mesher inserts the crack's ends, and so the mesh).
+        if (c->twin()->face() == c->face() &&
+            CGAL::compare_xy(c->source()->point(), c->target()->point()) == CGAL::SMALLER) {
             const auto joints = joints_of(c);
             if (!joints.empty()) out.push_back({to_point(c->source()->point()), to_point(c->target()->point()), joints.front()});
         }

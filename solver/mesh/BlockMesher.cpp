@@ -287,6 +287,8 @@ public:
         };
         add_ring(block.outer);
         for (const Ring& h : block.holes) add_ring(h);
+        // Cracks too: the seeds keep their distance from them as from the outline.
+        for (const Block::Crack& c : block.cracks) segments_.push_back({c.from, c.to});
     }
 
     /// `sizes`: the sizes the field is uniform at somewhere (the global size, each local one).

@@ -4,10 +4,12 @@
 #include "TestModels.hpp"
 #include "geometry/PolygonChecks.hpp"
 #include "mesh/BlockMesher.hpp"
+#include "mesh/SizeField.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 
 using namespace mcdda;
@@ -140,5 +142,28 @@ TEST(BlockMesher, LargeBlocksSeededBeforeRefinementKeepSizeAngleAndDensity) {
     for (const auto& t : p.mesh.triangles) {
         const Point2 &a = p.mesh.nodes[t[0]], &b = p.mesh.nodes[t[1]], &c = p.mesh.nodes[t[2]];
         ASSERT_GT(std::hypot((a.x + b.x + c.x) / 3 - 5, (a.y + b.y + c.y) / 3 - 5), 0.95);
+    }
+}
+
+// Thousands of local sizes (the tips of thousands of cracks) are binned; the field is the same
+// as the minimum over all of them.
+TEST(SizeField, BinnedFeaturesGiveTheSameSizeAsAllOfThem) {
+    MeshControls controls;
+    controls.grading = 0.3;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> coordinate(0.0, 100.0), size(0.05, 1.5), radius(0.0, 0.5);
+    for (int i = 0; i < 2000; ++i) {
+        const Point2 a{coordinate(rng), coordinate(rng)};
+        const Point2 b = i % 3 ? a : Point2{a.x + 1.0, a.y + 0.5};
+        controls.local.push_back({a, b, size(rng), radius(rng)});
+    }
+    controls.local.push_back({{0, 0}, {100, 100}, 0.7, 0.0});  // a long line: looked at everywhere
+    const SizeField field(controls, 2.0);
+    for (int k = 0; k < 20000; ++k) {
+        const Point2 p{coordinate(rng) * 1.2 - 10.0, coordinate(rng) * 1.2 - 10.0};
+        double expected = 2.0;
+        for (const LocalSize& l : controls.local)
+            expected = std::min(expected, l.size + 0.3 * std::max(0.0, distance_to_segment(p, l.from, l.to) - l.radius));
+        ASSERT_DOUBLE_EQ(field(p), expected) << "at (" << p.x << ", " << p.y << ")";
     }
 }
