@@ -230,9 +230,14 @@ PYBIND11_MODULE(mcdda, m)
                 d["region"] = array(mesh.region);
                 d["material"] = array(mesh.material);
                 d["area"] = array(mesh.area);
+                d["crack_faces"] = py::array_t<int>({static_cast<py::ssize_t>(mesh.crack_faces.size() / 2), py::ssize_t{2}},
+                                                    mesh.crack_faces.data());
+                d["crack_face_joint"] = array(mesh.crack_face_joint);
                 return d;
             },
-            "The mesh as NumPy arrays: nodes (n, 2), triangles (e, 3), block, region, material, area (e,)")
+            "The mesh as NumPy arrays: nodes (n, 2), triangles (e, 3), block, region, material, area (e,), "
+            "crack_faces (f, 2): the node pairs of the edges on the faces of cracks (joints ending in the rock), "
+            "crack_face_joint (f,): their joints")
         .def("run", &run, py::arg("output_folder") = py::none(), py::arg("name") = "model", py::arg("keep_every") = 0,
              py::arg("progress") = py::none(), py::arg("threads") = 0,
              "Runs the analysis with the GIL released. progress(info) is called after every step; "

@@ -1,5 +1,7 @@
 #include "mcdda/Analysis.hpp"
 
+#include "fem/MeshTopology.hpp"
+
 #include "Preprocess.hpp"
 #include "Version.hpp"
 #include "io/ModelReader.hpp"
@@ -188,6 +190,12 @@ MeshArrays Analysis::mesh_arrays()
                      &p2 = m.nodes[static_cast<std::size_t>(t[2])];
         a.area.push_back(0.5 * ((p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y)));
     }
+    if (std::any_of(p.blocks.begin(), p.blocks.end(), [](const Block& b) { return !b.cracks.empty(); }))
+        for (const BoundaryEdge& e : build_topology(m, p.blocks).edges)
+            if (e.crack) {
+                a.crack_faces.insert(a.crack_faces.end(), {e.from, e.to});
+                a.crack_face_joint.push_back(e.joint);
+            }
     return a;
 }
 

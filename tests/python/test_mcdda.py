@@ -64,6 +64,27 @@ class ModelTest(unittest.TestCase):
         self.assertTrue((m["area"] > 0).all())
         self.assertLess(int(m["triangles"].max()), m["nodes"].shape[0])
 
+    def test_crack_faces_are_listed_with_their_joint(self):
+        a = mcdda.Analysis.from_file(os.path.join(EXAMPLES, "griffith-crack.json"))
+        m = a.mesh_arrays()
+        faces = m["crack_faces"]
+        self.assertEqual(faces.shape[1], 2)
+        self.assertEqual(faces.shape[0], m["crack_face_joint"].shape[0])
+        self.assertTrue((m["crack_face_joint"] == 0).all())
+        ends = m["nodes"][faces]
+        # Both faces of the 2 m crack along y = 0, from x = -1 to 1.
+        self.assertTrue(np.allclose(ends[:, :, 1], 0.0))
+        length = np.hypot(*(ends[:, 1, :] - ends[:, 0, :]).T).sum()
+        self.assertAlmostEqual(float(length), 4.0, places=9)
+        # Each face runs one way (its side of the block on its left) and has its own nodes: the
+        # two faces share only the tips.
+        forward = ends[:, 1, 0] > ends[:, 0, 0]
+        one, other = set(faces[forward].ravel()), set(faces[~forward].ravel())
+        self.assertGreater(len(one), 40)
+        shared = one & other
+        self.assertEqual(len(shared), 2)
+        self.assertTrue(np.allclose(sorted(abs(m["nodes"][list(shared), 0])), [1.0, 1.0]))
+
     def test_overrides_by_dict_and_by_list(self):
         a = mcdda.Analysis.from_file(INCLINE)
         a.set({"/materials/0/young_modulus": 2e9, "/analysis/steps": 7})

@@ -158,3 +158,28 @@ TEST(DxfImport, ImportedModelMeshesAndRuns) {
     EXPECT_EQ(run.steps, 2) << run.message;
     EXPECT_TRUE(run.status == "completed" || run.status == "unbalanced") << run.status << ": " << run.message;
 }
+
+// A line that ends in the rock is a crack in its block: the mesh arrays list its faces.
+TEST(DxfImport, ALineEndingInTheRockBecomesACrack) {
+    Drawing d(4);
+    d.lwpolyline("rock", {{0, 0}, {20000, 0}, {20000, 20000}, {0, 20000}}, true).line("joints", {3000, 5000}, {9000, 6000});
+    const DxfImportResult r = import_dxf_file(d.save("mcdda-crack.dxf"));
+    ASSERT_TRUE(r.model.has_value()) << r.summary;
+    Analysis a(*r.model);
+    a.set({R"(/rollers=[{"name": "base", "from": [0, 0], "to": [20, 0], "fixed": "xy"}])"});
+    const std::vector<Diagnostic> problems = a.mesh();
+    ASSERT_TRUE(a.ok()) << (problems.empty() ? std::string() : format_diagnostic(problems.front()));
+    EXPECT_FALSE(says(problems, "dropped"));
+    const MeshArrays mesh = a.mesh_arrays();
+    ASSERT_GT(mesh.crack_faces.size(), 0u);
+    ASSERT_EQ(mesh.crack_faces.size(), 2 * mesh.crack_face_joint.size());
+    double length = 0.0;
+    for (std::size_t f = 0; f < mesh.crack_face_joint.size(); ++f) {
+        EXPECT_EQ(mesh.crack_face_joint[f], 0);
+        const int i = mesh.crack_faces[2 * f], j = mesh.crack_faces[2 * f + 1];
+        length += std::hypot(mesh.nodes[2 * j] - mesh.nodes[2 * i], mesh.nodes[2 * j + 1] - mesh.nodes[2 * i + 1]);
+    }
+    EXPECT_NEAR(length, 2.0 * std::hypot(6.0, 1.0), 1e-9);  // both faces of the 6.08 m line
+    std::set<int> blocks(mesh.block.begin(), mesh.block.end());
+    EXPECT_EQ(blocks.size(), 1u);
+}

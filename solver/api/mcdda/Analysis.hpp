@@ -40,6 +40,12 @@ struct MeshArrays {
     std::vector<int> region;     ///< region of each element (index into Model::regions)
     std::vector<int> material;   ///< material of each element
     std::vector<double> area;    ///< area of each element (m²)
+    /// The faces of the cracks inside blocks (joints that end in the rock): the nodes (from, to)
+    /// of each boundary edge on one, 2 per edge, the block on its left (on six-node meshes an
+    /// edge runs from a corner to a midside node or back); the two faces of a crack have
+    /// separate nodes at the same places, except at its tips.
+    std::vector<int> crack_faces;
+    std::vector<int> crack_face_joint;  ///< joint of each crack face edge (index into Model::joints)
     int node_count() const { return static_cast<int>(nodes.size() / 2); }
     int element_count() const { return static_cast<int>(block.size()); }
 };
