@@ -468,10 +468,33 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         while (!mesher.is_refinement_done()) {
             mesher.step_by_step_refine_mesh();
             if (++steps % 4096 == 0 && mesh.nodes.size() + cdt.number_of_vertices() > vertex_budget) {
+                // Where refinement went furthest below the size asked for is where it got stuck.
+                double worst = 0.0;
+                Point2 where = block.outer.front();
+                for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+                    if (!f->is_in_domain()) continue;
+                    const CgalPoint& a = f->vertex(0)->point();
+                    const CgalPoint& b = f->vertex(1)->point();
+                    const CgalPoint& c = f->vertex(2)->point();
+                    const Point2 centre{(a.x() + b.x() + c.x()) / 3.0, (a.y() + b.y() + c.y()) / 3.0};
+                    const double longest = std::sqrt(std::max({CGAL::squared_distance(a, b), CGAL::squared_distance(b, c),
+                                                               CGAL::squared_distance(c, a)}));
+                    const double below = field(centre) / longest;
+                    if (below > worst) {
+                        worst = below;
+                        where = centre;
+                    }
+                }
+                std::ostringstream place;
+                place.precision(6);
+                place << "(" << where.x << ", " << where.y << ")";
                 diagnostics.push_back({Diagnostic::Severity::Error, "/mesh",
                                        "refinement of block " + std::to_string(bi) + " (region \"" +
                                            model.regions[block.region].name +
-                                           "\") exceeded the element limit; lower /mesh/min_angle or raise "
+                                           "\") exceeded the element limit, with its smallest triangles near " +
+                                           place.str() +
+                                           " (joints or cracks meeting at a sharp angle or passing close to "
+                                           "each other there?); move them apart, lower /mesh/min_angle or raise "
                                            "/mesh/max_elements"});
                 return Mesh{};
             }

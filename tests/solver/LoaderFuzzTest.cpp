@@ -251,6 +251,8 @@ TEST(LoaderFuzz, RandomCracksNeverCrashOrHang) {
         if (!p.ok) {
             ++rejected;
             EXPECT_TRUE(has_errors(p.diagnostics)) << text;
+            if (std::getenv("MCDDA_FUZZ_VERBOSE"))
+                for (const Diagnostic& d : p.diagnostics) std::cout << "refused: " << d.message << "\n";
             continue;
         }
         ++meshed;
@@ -265,7 +267,8 @@ TEST(LoaderFuzz, RandomCracksNeverCrashOrHang) {
             ADD_FAILURE() << "unexpected " << e.what() << "\n" << text;
         }
     }
-    EXPECT_GT(meshed, models / 2);  // most random cracks are fine models
+    EXPECT_GT(meshed, models / 3);  // many random cracks are fine models (the hairs below the
+                                    // smallest feature are refused)
     std::cout << models << " models with random cracks: " << rejected << " refused with messages, " << meshed
               << " meshed, " << solved << " solved one step\n";
 }
