@@ -118,3 +118,25 @@ TEST(GriffithCrack, SlipUnderShearOfAFrictionlessCrackWithinFivePercent) {
     ASSERT_TRUE(run.simulation);
     expect_griffith_profile(face_profile(*run.simulation, M_PI / 4, false), "slip under shear");
 }
+
+// A bolt across the crack holds its faces: it is stretched by most of the opening at its place,
+// and the crack opens less.
+TEST(GriffithCrack, ABoltAcrossTheCrackCarriesItsOpening) {
+    auto free = mcdda::test::run_example("griffith-crack.json");
+    // EA / L = 2e8 N/m: a stiff bar over 1 m, about a sixth of what the rock around gives.
+    auto bolted = mcdda::test::run_example(
+        "griffith-crack.json",
+        {"/version=2", R"(/bolts=[{"name": "across", "from": [0, -0.5], "to": [0, 0.5], "stiffness": 2e8}])"});
+    ASSERT_TRUE(free.simulation && bolted.simulation);
+    const double open_free = face_profile(*free.simulation, 0.0, true).lower_bound(-1e-9)->second;
+    const double open_bolted = face_profile(*bolted.simulation, 0.0, true).lower_bound(-1e-9)->second;
+    const double force = bolted.simulation->state().bolt_force.at(0);
+    std::cout << "Griffith crack with a bolt across: centre opening " << open_bolted * 1e3 << " mm (without "
+              << open_free * 1e3 << " mm), bolt force " << force / 1e3 << " kN/m\n";
+    EXPECT_LT(open_bolted, 0.95 * open_free);
+    EXPECT_GT(force, 0.0);
+    // Its stretch is less than the opening at its place (the rock between its anchors and the
+    // faces moves less than the faces) but most of it.
+    EXPECT_LT(force / 2e8, open_bolted);
+    EXPECT_GT(force / 2e8, 0.5 * open_bolted);
+}
