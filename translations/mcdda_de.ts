@@ -3751,42 +3751,37 @@
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="190"/>
-        <source>Joint ending in rock (not used)</source>
-        <translation>Im Gestein endende Kluft (nicht verwendet)</translation>
-    </message>
-    <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="192"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="188"/>
         <source>Fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="199"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="195"/>
         <source>Fixed line (x and y)</source>
         <translation>Feste Linie (x und y)</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="197"/>
         <source>Roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="199"/>
         <source>Bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
         <source>Point load</source>
         <translation>Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="207"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
         <source>Edge pressure</source>
         <translation>Kantendruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="209"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
         <source>Measurement point</source>
         <translation>Messpunkt</translation>
     </message>
