@@ -40,7 +40,8 @@ struct MeshTopology {
 
 /// Finds the boundary edges of every block, tagging them with the joints of `blocks` (both halves
 /// of a six-node edge with the tag of the whole edge). The faces of a crack, whose nodes the
-/// mesher doubled, are boundary edges of their block like its outline, tagged as crack faces. O(n log n) in the number of triangles.
+/// mesher doubled, are boundary edges of their block like its outline, tagged as crack faces.
+/// O(n log n) in the number of triangles.
 MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks);
 
 /// Index of the node nearest to `p` (the lowest index among equally near ones).
