@@ -178,8 +178,9 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
     PolyData data;
     VtuField normal_force{"normal_force", 1, {}}, shear_force{"shear_force", 1, {}}, force{"force", 3, {}},
         normal{"normal", 3, {}}, opening{"opening", 1, {}}, slip{"slip", 1, {}}, state{"state", 1, {}},
-        vertex_block{"vertex_block", 1, {}}, edge_block{"edge_block", 1, {}};
-    auto point_values = [&](double n, double t, Point2 f, Point2 dir, double open, double slid, int st, int vb, int eb) {
+        vertex_block{"vertex_block", 1, {}}, edge_block{"edge_block", 1, {}}, joint{"joint", 1, {}};
+    auto point_values = [&](double n, double t, Point2 f, Point2 dir, double open, double slid, int st, int vb, int eb,
+                            int j) {
         normal_force.values.push_back(n);
         shear_force.values.push_back(t);
         force.values.insert(force.values.end(), {f.x, f.y, 0.0});
@@ -189,6 +190,7 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         state.values.push_back(st);
         vertex_block.values.push_back(vb);
         edge_block.values.push_back(eb);
+        joint.values.push_back(j);
     };
     for (const Contact& c : s.contacts) {
         const ContactKinematics k = contact_kinematics(c, s.nodes, topology);
@@ -201,7 +203,7 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         data.points.push_back(s.nodes[c.node]);
         point_values(fn, ft, {fn * n.x - ft * t.x, fn * n.y - ft * t.y}, n, closed ? 0.0 : std::max(0.0, k.gap),
                      c.slip_total, c.state == ContactState::Open ? 0 : c.state == ContactState::Sliding ? 1 : 2,
-                     sim.mesh().node_block[c.node], c.edge_block);
+                     sim.mesh().node_block[c.node], c.edge_block, topology.edges[c.edge].joint);
     }
     // Bolts: a line between their anchors, each end a point with no contact values.
     const Model& model = sim.full_model();
@@ -210,14 +212,14 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         const int first = static_cast<int>(data.points.size());
         for (const Point2 p : sim.bolt_ends(static_cast<int>(i))) {
             data.points.push_back(p);
-            point_values(0.0, 0.0, {0.0, 0.0}, {0.0, 0.0}, 0.0, 0.0, 0, -1, -1);
+            point_values(0.0, 0.0, {0.0, 0.0}, {0.0, 0.0}, 0.0, 0.0, 0, -1, -1, -1);
         }
         data.lines.push_back({first, first + 1});
         bolt_force.values.push_back(s.bolt_force[i]);
     }
     data.fields.point_data = {std::move(normal_force), std::move(shear_force), std::move(force), std::move(normal),
                               std::move(opening),      std::move(slip),        std::move(state), std::move(vertex_block),
-                              std::move(edge_block)};
+                              std::move(edge_block),   std::move(joint)};
     data.fields.cell_data = {std::move(bolt_force)};
     data.fields.field_data = {{"step", 1, {static_cast<double>(s.step)}},
                               {"stage", 1, {static_cast<double>(s.stage + 1)}},

@@ -86,8 +86,14 @@ TEST(ContactFiles, StagedJointedTunnelWithBoltsOpensInVtk) {
         ASSERT_NE(data, nullptr);
         if (k > 0) EXPECT_GT(data->GetNumberOfVerts(), 100) << path;  // the joints' contacts (none found before step 1)
         EXPECT_EQ(data->GetNumberOfLines(), 5) << path;    // the bolts
-        for (const char* name : {"normal_force", "shear_force", "opening", "slip", "state", "vertex_block", "edge_block"})
+        for (const char* name : {"normal_force", "shear_force", "opening", "slip", "state", "vertex_block", "edge_block", "joint"})
             EXPECT_NE(data->GetPointData()->GetArray(name), nullptr) << name << " in " << path;
+        // Contacts along the joints name them (the joint index of their edge).
+        if (vtkDataArray* joints = data->GetPointData()->GetArray("joint"); joints && k > 0) {
+            int on_joint = 0;
+            for (vtkIdType i = 0; i < data->GetNumberOfVerts(); ++i) on_joint += joints->GetTuple1(i) >= 0;
+            EXPECT_GT(on_joint, 100) << path;
+        }
         vtkDataArray* force = data->GetPointData()->GetArray("force");
         ASSERT_NE(force, nullptr);
         EXPECT_EQ(force->GetNumberOfComponents(), 3);
