@@ -167,13 +167,15 @@ void insert_ring(CDT& cdt, const Ring& ring) {
         if (v[i] != v[(i + 1) % v.size()]) cdt.insert_constraint(v[i], v[(i + 1) % v.size()]);
 }
 
+/// The free ends of a block's cracks (crack_tips), each with the length of the crack piece it
+/// ends.
+using CrackTips = std::map<std::pair<double, double>, double>;
+
 /// Inserts the block's cracks as constraints inside it. A crack piece with both ends free in the
 /// rock goes in as two halves: a crack must have a node between its tips to open at all (its
 /// tips are not doubled).
-void insert_cracks(CDT& cdt, const Block& block, const std::vector<Point2>& tips) {
-    auto is_tip = [&](Point2 p) {
-        return std::any_of(tips.begin(), tips.end(), [&](Point2 t) { return t.x == p.x && t.y == p.y; });
-    };
+void insert_cracks(CDT& cdt, const Block& block, const CrackTips& tips) {
+    auto is_tip = [&](Point2 p) { return tips.count({p.x, p.y}) != 0; };
     for (const Block::Crack& c : block.cracks) {
         const CDT::Vertex_handle a = cdt.insert(CgalPoint(c.from.x, c.from.y));
         const CDT::Vertex_handle b = cdt.insert(CgalPoint(c.to.x, c.to.y));
@@ -249,19 +251,23 @@ void split_crack_vertices(const CDT& cdt, const std::vector<CDT::Face_handle>& f
 
 /// The ends of the block's cracks that lie free in the rock: on no other crack and not on the
 /// block's outline.
-std::vector<Point2> crack_tips(const Block& block) {
-    std::map<std::pair<double, double>, int> ends;
+CrackTips crack_tips(const Block& block) {
+    std::map<std::pair<double, double>, std::pair<int, double>> ends;  // end → pieces, shortest length
     for (const Block::Crack& c : block.cracks) {
-        ++ends[{c.from.x, c.from.y}];
-        ++ends[{c.to.x, c.to.y}];
+        const double length = std::hypot(c.to.x - c.from.x, c.to.y - c.from.y);
+        for (const Point2& p : {c.from, c.to}) {
+            auto& [count, shortest] = ends.try_emplace({p.x, p.y}, 0, length).first->second;
+            ++count;
+            shortest = std::min(shortest, length);
+        }
     }
     std::set<std::pair<double, double>> outline;
     for (const Point2& p : block.outer) outline.insert({p.x, p.y});
     for (const Ring& h : block.holes)
         for (const Point2& p : h) outline.insert({p.x, p.y});
-    std::vector<Point2> tips;
-    for (const auto& [p, count] : ends)
-        if (count == 1 && !outline.count(p)) tips.push_back({p.first, p.second});
+    CrackTips tips;
+    for (const auto& [p, end] : ends)
+        if (end.first == 1 && !outline.count(p)) tips.emplace(p, end.second);
     return tips;
 }
 
@@ -433,14 +439,11 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
         const Block& block = blocks[bi];
         // The size field of the block: the model's, finer towards the tips of its cracks.
-        const std::vector<Point2> tips = crack_tips(block);
+        const CrackTips tips = crack_tips(block);
         MeshControls controls = model.mesh;
-        for (const Point2& tip : tips) {
-            double length = 1e300;
-            for (const Block::Crack& c : block.cracks)
-                if ((c.from.x == tip.x && c.from.y == tip.y) || (c.to.x == tip.x && c.to.y == tip.y))
-                    length = std::min(length, std::hypot(c.to.x - c.from.x, c.to.y - c.from.y));
-            const double size = std::min(model_field(tip), crack_tip_size_fraction * length);
+        for (const auto& [at, length] : tips) {
+            const Point2 tip{at.first, at.second};
+            const double size = crack_tip_size_fraction * length;
             if (size < model_field(tip)) controls.local.push_back({tip, tip, size, 0.0});
         }
         const SizeField field(controls, model_field.global_size());
