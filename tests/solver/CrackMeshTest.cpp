@@ -60,11 +60,18 @@ TEST(CrackMesh, AFloatingCrackDoublesItsNodesButNotItsTips) {
             face_length += std::hypot(p.mesh.nodes[e.to].x - p.mesh.nodes[e.from].x, p.mesh.nodes[e.to].y - p.mesh.nodes[e.from].y);
         }
     EXPECT_NEAR(face_length, 8.0, 1e-9);  // both faces of the 4 m crack
-    // The tips stay inside the rock: the triangles around a tip share it (one node).
-    for (const BoundaryEdge& e : t.edges) {
-        if (!e.crack) continue;
-        EXPECT_GE(t.edge_into[e.from], 0);
-        EXPECT_GE(t.edge_out_of[e.to], 0);
+    // At a tip the two faces meet in one node: the face edge into it and the one out of it are
+    // both crack faces, and they start on the two faces' own nodes at the same place.
+    for (const Point2 tip : {Point2{3, 5}, Point2{7, 5}}) {
+        const int node = nearest_node(p.mesh, tip);
+        ASSERT_GE(t.edge_into[node], 0);
+        ASSERT_GE(t.edge_out_of[node], 0);
+        const BoundaryEdge& in = t.edges[t.edge_into[node]];
+        const BoundaryEdge& out = t.edges[t.edge_out_of[node]];
+        EXPECT_TRUE(in.crack && out.crack);
+        EXPECT_NE(in.from, out.to);
+        EXPECT_NEAR(p.mesh.nodes[in.from].x, p.mesh.nodes[out.to].x, 1e-12);
+        EXPECT_NEAR(p.mesh.nodes[in.from].y, p.mesh.nodes[out.to].y, 1e-12);
     }
 }
 
