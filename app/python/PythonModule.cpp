@@ -74,6 +74,8 @@ py::dict fields_dict(const StepFields& f)
     d["time"] = f.time;
     d["displacement"] = array(f.displacement, 2);
     d["stress"] = array(f.stress, 4);
+    d["effective_stress"] = array(f.effective_stress, 4);
+    d["pore_pressure"] = array(f.pore_pressure);
     d["plastic_strain"] = array(f.plastic_strain);
     d["plastic_state"] = array(f.plastic_state);
     return d;

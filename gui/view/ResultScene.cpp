@@ -85,6 +85,15 @@ const FieldInfo field_table[] = {
     {"stress_xy", "stress", false, 3, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "shear stress xy")},
     {"stress_1", "stress", false, principal_1, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "principal stress 1")},
     {"stress_3", "stress", false, principal_3, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "principal stress 3")},
+    // Runs with ground water: the pore pressure and the effective stress σ′ = σ + u the
+    // material yields on ("stress" is the total stress).
+    {"pore_pressure", "pore_pressure", false, 0, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "pore pressure")},
+    {"effective_stress_xx", "effective_stress", false, 0, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "effective stress xx")},
+    {"effective_stress_yy", "effective_stress", false, 1, "Pa", QT_TRANSLATE_NOOP("mcdda::view", "effective stress yy")},
+    {"effective_stress_1", "effective_stress", false, principal_1, "Pa",
+     QT_TRANSLATE_NOOP("mcdda::view", "effective principal stress 1")},
+    {"effective_stress_3", "effective_stress", false, principal_3, "Pa",
+     QT_TRANSLATE_NOOP("mcdda::view", "effective principal stress 3")},
     // The mechanism of a strength reduction: the increments between the last factor that stood
     // and the first that did not (in the last saved step only).
     {"displacement_increment", "displacement_increment", true, magnitude, "m",
@@ -315,7 +324,9 @@ double dpi_of(vtkRenderer* renderer)
 }
 
 
-bool is_stress(const FieldInfo& f) { return std::string(f.units) == "Pa"; }
+/// A stress component, shown in the sign convention asked for (the pore pressure is always
+/// compression positive, as engineers read it).
+bool is_stress(const FieldInfo& f) { return std::string(f.units) == "Pa" && std::string(f.array) != "pore_pressure"; }
 
 /// Value of the field at entry i (cell or point); stresses in the sign convention asked for.
 double value_of(vtkDataArray* a, const FieldInfo& f, vtkIdType i, StressSign sign)

@@ -72,12 +72,14 @@ StepFields fields_of(const Simulation& simulation)
     f.stage = s.stage + 1;
     f.time = s.time;
     f.displacement.assign(s.displacement.data(), s.displacement.data() + s.displacement.size());
+    f.pore_pressure = simulation.pore_pressures();
     f.stress.reserve(4 * s.stress.size());
+    f.effective_stress.reserve(4 * s.stress.size());
     for (std::size_t e = 0; e < s.stress.size(); ++e) {
-        f.stress.push_back(s.stress[e][0]);
-        f.stress.push_back(s.stress[e][1]);
-        f.stress.push_back(e < s.stress_zz.size() ? s.stress_zz[e] : 0.0);
-        f.stress.push_back(s.stress[e][2]);
+        const double zz = e < s.stress_zz.size() ? s.stress_zz[e] : 0.0;
+        const double u = f.pore_pressure[e];
+        f.effective_stress.insert(f.effective_stress.end(), {s.stress[e][0], s.stress[e][1], zz, s.stress[e][2]});
+        f.stress.insert(f.stress.end(), {s.stress[e][0] - u, s.stress[e][1] - u, zz - u, s.stress[e][2]});
     }
     f.plastic_strain = s.plastic_strain;
     f.plastic_state = s.plastic_state;

@@ -105,6 +105,56 @@ void check_materials(Checker& c, const Model& m) {
         check_fields(c, m.joint_materials[i], joint_material_fields(), "/joint_materials/" + std::to_string(i));
 }
 
+/// A piezometric line that gives one level at each x, within reach of the model, and water
+/// that weighs something.
+void check_water(Checker& c, const Model& m, const Water& w, const std::string& path) {
+    if (!(w.unit_weight > 0.0) || !std::isfinite(w.unit_weight))
+        c.error(path + "/unit_weight", "the unit weight of water must be positive (got " + num(w.unit_weight) +
+                                           " N/m³; fresh water 9810)");
+    else
+        c.at_most(w.unit_weight, 1e5, path + "/unit_weight", "a unit weight of water", "N/m³");
+    const std::vector<Point2>& line = w.piezometric_line;
+    if (line.size() == 1) c.error(path + "/piezometric_line", "needs at least two points (none: dry ground)");
+    const auto box = m.bounds();
+    const double size = std::hypot(box[2] - box[0], box[3] - box[1]);
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const std::string where = path + "/piezometric_line/" + std::to_string(i);
+        c.point(line[i], where);
+        if (i > 0 && !(line[i].x > line[i - 1].x)) {
+            c.error(where, "the line must run left to right so that it gives one water level at each x: point " +
+                               std::to_string(i + 1) + " (" + num(line[i].x) + ", " + num(line[i].y) + ") is " +
+                               (line[i].x == line[i - 1].x ? "straight above or below" : "left of") + " point " +
+                               std::to_string(i) + " (" + num(line[i - 1].x) + ", " + num(line[i - 1].y) + ")");
+            break;
+        }
+        // Far outside the model is a typo or a unit slip (mm for m): the line is held level beyond its ends anyway.
+        if (!m.regions.empty() && size > 0.0) {
+            const double dx = std::max({box[0] - line[i].x, line[i].x - box[2], 0.0});
+            const double dy = std::max({box[1] - line[i].y, line[i].y - box[3], 0.0});
+            if (std::hypot(dx, dy) > size)
+                c.error(where, "point (" + num(line[i].x) + ", " + num(line[i].y) +
+                                   ") lies far outside the model (x " + num(box[0]) + " to " + num(box[2]) + ", y " +
+                                   num(box[1]) + " to " + num(box[3]) + " m): a typing or unit slip?");
+        }
+    }
+}
+
+void check_water(Checker& c, const Model& m) {
+    check_water(c, m, m.water, "/water");
+    for (std::size_t s = 0; s < m.stages.size(); ++s)
+        if (m.stages[s].water) check_water(c, m, *m.stages[s].water, "/stages/" + std::to_string(s) + "/water");
+    if (!has_water(m)) return;
+    for (std::size_t i = 0; i < m.materials.size(); ++i) {
+        const Material& mat = m.materials[i];
+        if (mat.saturated_density > 0.0 && mat.saturated_density < mat.density)
+            c.warning("/materials/" + std::to_string(i) + "/saturated_density",
+                      "\"" + mat.name + "\" is lighter saturated than dry (" + num(mat.saturated_density * standard_gravity) +
+                          " < " + num(mat.density * standard_gravity) + " N/m³)");
+    }
+    if (m.gravity.x == 0.0 && m.gravity.y == 0.0)
+        c.warning("/water", "the model has ground water but no gravity: the pore pressures act, the ground weighs nothing");
+}
+
 void check_geometry(Checker& c, const Model& m) {
     if (m.regions.empty()) c.error("/regions", "at least one region is required");
     for (std::size_t i = 0; i < m.regions.size(); ++i) {
@@ -368,6 +418,7 @@ void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics) {
     check_controls(c, model);
     check_bolts(c, model);
     check_stages(c, model);
+    check_water(c, model);
 }
 
 namespace {

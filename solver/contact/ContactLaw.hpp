@@ -69,7 +69,10 @@ StateChange update_contact_state(Contact& c, const ContactKinematics& k, const C
                                  double force_tolerance, double* change_force = nullptr);
 
 /// Commits an accepted step: the locked spring's shear displacement is kept, strength lost once
-/// the contact opened or slid.
-void commit_contact(Contact& c, const ContactKinematics& k, const Vector6& d);
+/// the contact opened or slid (UDEC's Coulomb slip joint). `plastic_slip`: a contact that slid
+/// keeps its cohesion and tensile strength, only opening loses them — the perfectly plastic joint
+/// of limit equilibrium that a strength reduction compares with (with brittle joints its factor
+/// would depend on how many steps the held load is solved in: each step unzips a little more).
+void commit_contact(Contact& c, const ContactKinematics& k, const Vector6& d, bool plastic_slip = false);
 
 }  // namespace mcdda

@@ -1,5 +1,7 @@
 #include "fem/BoundaryConditions.hpp"
 
+#include "fem/PorePressure.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -193,20 +195,34 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
             f[2 * node + 1] += share * pressure * dx;
         }
     }
+    const double gravity_factor = load_factor(model, model.gravity_table, step, time);
     if (model.gravity.x != 0.0 || model.gravity.y != 0.0) {
-        const double factor = load_factor(model, model.gravity_table, step, time);
+        const Water& water = model.water;
+        const int points = integration_points(mesh);
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
             if (!active_elements.empty() && !active_elements[t]) continue;
             const auto& tri = mesh.triangles[t];
             const Point2 &a = nodes[tri[0]], &b = nodes[tri[1]], &c = nodes[tri[2]];
             const double area = 0.5 * ((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
-            const double mass = model.materials[mesh.triangle_material[t]].density * area / 3.0;
+            const Material& material = model.materials[mesh.triangle_material[t]];
+            // Saturated below the piezometric line: each integration point weighs as wet or dry.
+            double density = material.density;
+            if (water.present() && material.saturated_density > 0.0) {
+                density = 0.0;
+                for (int q = 0; q < points; ++q) {
+                    const bool wet = water.pore_pressure(integration_point(mesh, nodes, static_cast<int>(t), q)) > 0.0;
+                    density += material.density_at(wet) / points;
+                }
+            }
+            const double mass = density * area / 3.0;
             for (int node : mesh.quadratic() ? mesh.midside[t] : tri) {
-                f[2 * node] += factor * mass * model.gravity.x;
-                f[2 * node + 1] += factor * mass * model.gravity.y;
+                f[2 * node] += gravity_factor * mass * model.gravity.x;
+                f[2 * node + 1] += gravity_factor * mass * model.gravity.y;
             }
         }
     }
+    // Water weighs with gravity: a gravity ramp fills the ground water with it.
+    add_water_forces(model.water, mesh, nodes, topology, active_elements, gravity_factor, f);
     return f;
 }
 

@@ -356,7 +356,7 @@ const MaterialLaw* material_law(Parser& p, const json& o, const std::string& pat
 /// The keys a material with `law` may have. `"plastic": false` files of the earlier format
 /// may still carry Mohr–Coulomb strengths; they are read past.
 std::vector<const char*> material_keys(const MaterialLaw& law, bool legacy_elastic) {
-    std::vector<const char*> keys = keys_of(material_fields(), {"name", "law", "unit_weight", "plastic", "reduce"});
+    std::vector<const char*> keys = keys_of(material_fields(), {"name", "law", "unit_weight", "saturated_unit_weight", "plastic", "reduce"});
     for (const NumberField& f : (legacy_elastic ? *find_material_law("mohr-coulomb") : law).fields) keys.push_back(f.key);
     return keys;
 }
@@ -382,6 +382,10 @@ void parse_materials(Parser& p, const json& root, Model& m) {
         if (o.contains("density") && o.contains("unit_weight"))
             p.error(path, "give either density or unit_weight, not both");
         if (o.contains("unit_weight")) mat.density = p.number(o, path, "unit_weight", 0.0) / standard_gravity;
+        if (o.contains("saturated_density") && o.contains("saturated_unit_weight"))
+            p.error(path, "give either saturated_density or saturated_unit_weight, not both");
+        if (o.contains("saturated_unit_weight"))
+            mat.saturated_density = p.number(o, path, "saturated_unit_weight", 0.0) / standard_gravity;
         mat.reduce = p.boolean(o, path, "reduce", true);
         m.materials.push_back(mat);
     }
@@ -691,6 +695,22 @@ void parse_analysis_object(Parser& p, const json& o, const std::string& path, An
     a.plasticity = p.boolean(o, path, "plasticity", a.plasticity);
 }
 
+/// A "water" object (the model's or a stage's); ModelValidator checks its values.
+Water parse_water(Parser& p, const json& o, const std::string& path) {
+    Water w;
+    if (!p.is_object(o, path)) return w;
+    p.check_keys(o, path, {"piezometric_line", "unit_weight"});
+    w.unit_weight = p.number(o, path, "unit_weight", w.unit_weight);  // checked by the validator
+    if (!o.contains("piezometric_line")) {
+        p.error(path + "/piezometric_line", "required line [[x, y], ...] is missing (an empty list: dry)");
+        return w;
+    }
+    const json& line = p.array(o, path, "piezometric_line");
+    for (std::size_t i = 0; i < line.size(); ++i)
+        w.piezometric_line.push_back(p.point_value(line[i], path + "/piezometric_line/" + std::to_string(i)));
+    return w;
+}
+
 void parse_analysis(Parser& p, const json& root, Model& m) {
     if (root.contains("analysis")) parse_analysis_object(p, root.at("analysis"), "/analysis", m.analysis);
 }
@@ -747,7 +767,7 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
         st.analysis = m.analysis;
         if (p.is_object(o, path)) {
             p.check_keys(o, path, {"name", "excavate", "activate", "materials", "install", "remove", "analysis",
-                                   "release", "target_ratio", "reset_displacements"});
+                                   "release", "target_ratio", "reset_displacements", "water"});
             st.name = p.string(o, path, "name", std::nullopt);
             st.excavate = region_indices(o, path, "excavate");
             st.activate = region_indices(o, path, "activate");
@@ -777,6 +797,7 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
             }
             st.target_ratio = p.number(o, path, "target_ratio", 0.0);
             st.reset_displacements = p.boolean(o, path, "reset_displacements", false);
+            if (o.contains("water")) st.water = parse_water(p, o.at("water"), path + "/water");
         }
         m.stages.push_back(st);
     }
@@ -851,7 +872,7 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
     p.check_keys(root, "", {"format", "version", "name", "description", "materials", "joint_materials",
                             "default_joint_material", "regions", "joints", "joint_sets", "load_tables",
                             "fixed_points", "rollers", "point_loads", "edge_pressures", "gravity",
-                            "gravity_table", "initial_stress", "measurement_points", "mesh", "analysis", "bolts", "stages"});
+                            "gravity_table", "initial_stress", "water", "measurement_points", "mesh", "analysis", "bolts", "stages"});
     const std::string format = p.string(root, "", "format", std::nullopt);
     if (!format.empty() && format != model_format_name)
         p.error("/format", "must be \"" + std::string(model_format_name) + "\", got \"" + format + "\"");
@@ -880,6 +901,7 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
     parse_supports_and_loads(p, root, m, table_names);
     parse_mesh(p, root, m);
     parse_analysis(p, root, m);
+    if (root.contains("water")) m.water = parse_water(p, root.at("water"), "/water");
     parse_bolts(p, root, m);
     parse_stages(p, root, m, material_names, table_names);
 

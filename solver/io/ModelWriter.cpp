@@ -31,6 +31,12 @@ void write_fields(const Record& record, const std::vector<RecordField<Record>>& 
 
 json point(Point2 p) { return json::array({p.x, p.y}); }
 
+json water_json(const Water& w) {
+    json line = json::array();
+    for (const Point2& p : w.piezometric_line) line.push_back(point(p));
+    return json{{"piezometric_line", std::move(line)}, {"unit_weight", w.unit_weight}};
+}
+
 json ring(const Ring& r) {
     json out = json::array();
     for (const Point2& p : r) out.push_back(point(p));
@@ -84,6 +90,7 @@ json to_json(const Model& m) {
         o["name"] = mat.name;
         o["law"] = mat.law;
         write_fields(mat, material_fields(), o);
+        if (mat.saturated_density == 0.0) o.erase("saturated_density");  // dry models stay as they were
         if (const MaterialLaw* law = find_material_law(mat.law))
             for (const NumberField& f : law->fields)
                 if (const double v = law_value(mat, f); std::isfinite(v)) o[f.key] = to_file_unit(f.quantity, v);
@@ -232,6 +239,8 @@ json to_json(const Model& m) {
         root["initial_stress"] = json{{"type", "gravity"}, {"surface_y", s.surface_y}, {"k0", s.k0}};
     }
 
+    if (m.water.present()) root["water"] = water_json(m.water);
+
     if (!m.measurement_points.empty()) {
         json list = json::array();
         for (const MeasurementPoint& p : m.measurement_points)
@@ -303,6 +312,7 @@ json to_json(const Model& m) {
             else if (st.release_steps > 0) o["release"] = {{"steps", st.release_steps}};
             if (st.target_ratio > 0.0) o["target_ratio"] = st.target_ratio;
             if (st.reset_displacements) o["reset_displacements"] = true;
+            if (st.water) o["water"] = water_json(*st.water);
             list.push_back(std::move(o));
         }
         root["stages"] = std::move(list);

@@ -23,6 +23,35 @@ double distance_to_segment(Point2 p, Point2 a, Point2 b) {
     return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
 }
 
+double Water::level(double x) const {
+    const std::vector<Point2>& line = piezometric_line;
+    if (line.empty()) return -std::numeric_limits<double>::infinity();
+    if (x <= line.front().x) return line.front().y;
+    if (x >= line.back().x) return line.back().y;
+    // The first vertex beyond x (the reader keeps x strictly increasing).
+    const auto after = std::upper_bound(line.begin(), line.end(), x, [](double v, const Point2& q) { return v < q.x; });
+    const Point2 a = *(after - 1), b = *after;
+    return a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
+}
+
+double Water::pore_pressure(Point2 p) const {
+    if (!present()) return 0.0;
+    return unit_weight * std::max(0.0, level(p.x) - p.y);
+}
+
+const Water& water_of_stage(const Model& model, int stage) {
+    for (int k = std::min(stage, static_cast<int>(model.stages.size()) - 1); k >= 0; --k)
+        if (model.stages[static_cast<std::size_t>(k)].water) return *model.stages[static_cast<std::size_t>(k)].water;
+    return model.water;
+}
+
+bool has_water(const Model& model) {
+    if (model.water.present()) return true;
+    for (const Stage& st : model.stages)
+        if (st.water && st.water->present()) return true;
+    return false;
+}
+
 double LoadTable::factor(double s) const {
     if (points.empty()) return 1.0;
     if (s <= points.front()[0]) return points.front()[1];

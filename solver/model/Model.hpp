@@ -41,6 +41,8 @@ struct Material {
     double young_modulus = 0.0;     ///< E (Pa), > 0
     double poisson_ratio = 0.0;     ///< ν, in (−1, 0.5)
     double density = 0.0;           ///< ρ (kg/m³); from unit weight as γ/g when given so
+    /// ρsat (kg/m³) below the piezometric line (Water); 0: the density everywhere.
+    double saturated_density = 0.0;
     /// The law's parameters by key, in the model's units (Pa, radians): for Mohr–Coulomb
     /// "cohesion", "friction_angle", "dilation_angle", "tensile_strength".
     std::map<std::string, double> parameters;
@@ -50,6 +52,8 @@ struct Material {
     double parameter(const std::string& key, double fallback = 0.0) const;
     /// Whether its law can yield: every law but "elastic" (the law that never leaves the elastic range).
     bool may_yield() const { return law != "elastic"; }
+    /// The density at a point below the piezometric line (`wet`) or above it.
+    double density_at(bool wet) const { return wet && saturated_density > 0.0 ? saturated_density : density; }
 };
 
 /// Strength and stiffness of the contacts along a joint (or a region interface).
@@ -155,6 +159,22 @@ struct InitialStress {
     std::optional<double> stress_zz;  ///< Uniform: σzz, tension positive; default ν(σxx + σyy)
     double surface_y = 0.0;  ///< Gravity: ground surface elevation (m)
     double k0 = 1.0;         ///< Gravity: σh/σv
+};
+
+/// Ground water as RS2's piezometric line: below the line the pore pressure at a point is γw
+/// times the height of the line above it (hydrostatic along verticals), above it zero. Beyond its
+/// end points the line continues horizontally. Pore pressure is positive in compression (the
+/// water pushes); the blocks' stresses are effective, σ′ = σ + u·m with σ, σ′ tension positive
+/// (docs/model-format.md, "Water").
+struct Water {
+    std::vector<Point2> piezometric_line;  ///< x strictly increasing; empty: dry
+    double unit_weight = 9810.0;           ///< γw (N/m³), > 0
+
+    bool present() const { return piezometric_line.size() >= 2; }
+    /// Height of the line at abscissa x (m).
+    double level(double x) const;
+    /// Pore pressure at `p` (Pa, compression positive); 0 above the line or without water.
+    double pore_pressure(Point2 p) const;
 };
 
 /// A named point whose displacement history is recorded.
@@ -273,6 +293,9 @@ struct Stage {
     /// Displacements are reported from this stage's start (RS2's and PLAXIS's reset): the
     /// settlement of switching gravity on no longer shows in later stages' pictures.
     bool reset_displacements = false;
+    /// Ground water from this stage on (drawdown, dewatering, a rising reservoir); none: as the
+    /// stage before (the model's `water` for the first). An empty line makes the ground dry.
+    std::optional<Water> water;
 
     /// Fraction of the stage's out-of-balance force released after `s` (fractional) stage steps.
     double released(double s, const std::vector<LoadTable>& tables) const;
@@ -297,6 +320,7 @@ struct Model {
     /// Gravity times this load table's factor (a ramp over the first steps); -1: gravity acts in full.
     int gravity_table = -1;
     InitialStress initial_stress;
+    Water water;                      ///< ground water before any stage changes it
     std::vector<MeasurementPoint> measurement_points;
     MeshControls mesh;
     AnalysisSettings analysis;
@@ -312,6 +336,13 @@ struct Model {
     /// plasticity is on and some material may yield (T3 locks under plastic flow), T3 otherwise.
     ElementType element() const;
 };
+
+/// The ground water while stage `stage` runs: the last water given by it or an earlier stage, else
+/// the model's (`stage` < 0: the model's).
+const Water& water_of_stage(const Model& model, int stage);
+
+/// Whether the model has ground water in any stage (results then carry pore pressures).
+bool has_water(const Model& model);
 
 /// JSON pointer of a joint: "/joints/i" for explicit joints, "/joint_sets/k" for generated ones.
 std::string joint_path(const Model& model, int joint);

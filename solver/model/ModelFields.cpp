@@ -29,6 +29,10 @@ const std::vector<RecordField<Material>>& material_fields()
         {{"density", "density", MCDDA_TRANSLATABLE("ModelFields", "Unit weight γ"), Quantity::Density, 0.0, from(0.0), std::nullopt, max_density,
           nullptr, MCDDA_TRANSLATABLE("ModelFields", "Unit weight γ = ρ g (the density is γ / 9.81 m/s²); loads the model through gravity")},
          &Material::density},
+        {{"saturated_density", "saturated density", MCDDA_TRANSLATABLE("ModelFields", "Saturated unit weight γsat"), Quantity::Density, 0.0, from(0.0),
+          std::nullopt, max_density, MCDDA_TRANSLATABLE("ModelFields", "the unit weight"),
+          MCDDA_TRANSLATABLE("ModelFields", "Unit weight below the piezometric line; 0 = the unit weight γ there too")},
+         &Material::saturated_density},
     };
     return fields;
 }

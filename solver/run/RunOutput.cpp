@@ -139,15 +139,28 @@ void RunOutput::save_state(const Simulation& sim, const SimulationState& s, int 
         displacement.values.insert(displacement.values.end(), {u[2 * i], u[2 * i + 1], 0.0});
         velocity.values.insert(velocity.values.end(), {s.velocity[2 * i], s.velocity[2 * i + 1], 0.0});
     }
-    // VTK's symmetric tensor order: xx, yy, zz, xy, yz, xz.
-    VtuField stress{"stress", 6, {}};
+    // VTK's symmetric tensor order: xx, yy, zz, xy, yz, xz. The solver's stresses are effective;
+    // "stress" is the total stress σ = σ′ − u (the same without water).
+    const bool water = has_water(sim.full_model());
+    const std::vector<double> pore = water ? sim.pore_pressures() : std::vector<double>(s.stress.size(), 0.0);
+    VtuField stress{"stress", 6, {}}, effective{"effective_stress", 6, {}}, pore_pressure{"pore_pressure", 1, pore};
     stress.values.reserve(6 * s.stress.size());
-    for (std::size_t e = 0; e < s.stress.size(); ++e)
-        stress.values.insert(stress.values.end(), {s.stress[e][0], s.stress[e][1], s.stress_zz[e], s.stress[e][2], 0.0, 0.0});
+    for (std::size_t e = 0; e < s.stress.size(); ++e) {
+        const double u = pore[e];
+        stress.values.insert(stress.values.end(),
+                             {s.stress[e][0] - u, s.stress[e][1] - u, s.stress_zz[e] - u, s.stress[e][2], 0.0, 0.0});
+        if (water)
+            effective.values.insert(effective.values.end(),
+                                    {s.stress[e][0], s.stress[e][1], s.stress_zz[e], s.stress[e][2], 0.0, 0.0});
+    }
     VtuField state{"plastic_state", 1, std::vector<double>(s.plastic_state.begin(), s.plastic_state.end())};
     VtuField strain{"plastic_strain", 1, s.plastic_strain};
     fields.point_data = {std::move(displacement), std::move(velocity)};
     fields.cell_data = {std::move(stress), std::move(state), std::move(strain)};
+    if (water) {
+        fields.cell_data.push_back(std::move(effective));
+        fields.cell_data.push_back(std::move(pore_pressure));
+    }
     fields.field_data = {{"step", 1, {static_cast<double>(s.step)}},
                          {"stage", 1, {static_cast<double>(s.stage + 1)}},
                          {"time", 1, {s.time}}};
@@ -178,9 +191,18 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
     PolyData data;
     VtuField normal_force{"normal_force", 1, {}}, shear_force{"shear_force", 1, {}}, force{"force", 3, {}},
         normal{"normal", 3, {}}, opening{"opening", 1, {}}, slip{"slip", 1, {}}, state{"state", 1, {}},
-        vertex_block{"vertex_block", 1, {}}, edge_block{"edge_block", 1, {}}, joint{"joint", 1, {}};
+        vertex_block{"vertex_block", 1, {}}, edge_block{"edge_block", 1, {}}, joint{"joint", 1, {}},
+        water_pressure{"water_pressure", 1, {}}, effective_normal_force{"effective_normal_force", 1, {}};
+    // The contact springs carry the effective normal force: the water pressure acts on the
+    // joint's faces besides (fem/PorePressure.hpp).
+    const bool water = has_water(sim.full_model());
+    const double water_factor = water ? load_factor(sim.model(), sim.model().gravity_table, s.step, s.time) : 0.0;
     auto point_values = [&](double n, double t, Point2 f, Point2 dir, double open, double slid, int st, int vb, int eb,
-                            int j) {
+                            int j, double u) {
+        if (water) {
+            water_pressure.values.push_back(u);
+            effective_normal_force.values.push_back(n);
+        }
         normal_force.values.push_back(n);
         shear_force.values.push_back(t);
         force.values.insert(force.values.end(), {f.x, f.y, 0.0});
@@ -203,7 +225,8 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         data.points.push_back(s.nodes[c.node]);
         point_values(fn, ft, {fn * n.x - ft * t.x, fn * n.y - ft * t.y}, n, closed ? 0.0 : std::max(0.0, k.gap),
                      c.slip_total, c.state == ContactState::Open ? 0 : c.state == ContactState::Sliding ? 1 : 2,
-                     sim.mesh().node_block[c.node], c.edge_block, topology.edges[c.edge].joint);
+                     sim.mesh().node_block[c.node], c.edge_block, topology.edges[c.edge].joint,
+                     water ? water_factor * sim.model().water.pore_pressure(s.nodes[c.node]) : 0.0);
     }
     // Bolts: a line between their anchors, each end a point with no contact values.
     const Model& model = sim.full_model();
@@ -212,7 +235,7 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         const int first = static_cast<int>(data.points.size());
         for (const Point2 p : sim.bolt_ends(static_cast<int>(i))) {
             data.points.push_back(p);
-            point_values(0.0, 0.0, {0.0, 0.0}, {0.0, 0.0}, 0.0, 0.0, 0, -1, -1, -1);
+            point_values(0.0, 0.0, {0.0, 0.0}, {0.0, 0.0}, 0.0, 0.0, 0, -1, -1, -1, 0.0);
         }
         data.lines.push_back({first, first + 1});
         bolt_force.values.push_back(s.bolt_force[i]);
@@ -220,6 +243,10 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
     data.fields.point_data = {std::move(normal_force), std::move(shear_force), std::move(force), std::move(normal),
                               std::move(opening),      std::move(slip),        std::move(state), std::move(vertex_block),
                               std::move(edge_block),   std::move(joint)};
+    if (water) {
+        data.fields.point_data.push_back(std::move(water_pressure));
+        data.fields.point_data.push_back(std::move(effective_normal_force));
+    }
     data.fields.cell_data = {std::move(bolt_force)};
     data.fields.field_data = {{"step", 1, {static_cast<double>(s.step)}},
                               {"stage", 1, {static_cast<double>(s.stage + 1)}},

@@ -1,11 +1,13 @@
 #include "run/Simulation.hpp"
 #include "run/Stopwatch.hpp"
 
+#include "fem/PorePressure.hpp"
 #include "material/StrengthReduction.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace mcdda {
@@ -16,6 +18,7 @@ void initial_stresses(const Model& model, const Mesh& mesh, const ElementAssembl
     points.resize(n);
     const InitialStress& s = model.initial_stress;
     const double g = std::hypot(model.gravity.x, model.gravity.y);
+    const Water& water = water_of_stage(model, 0);
     for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
         const Material& m = model.materials[mesh.triangle_material[e]];
         for (int q = 0; q < per_element; ++q) {
@@ -25,8 +28,15 @@ void initial_stresses(const Model& model, const Mesh& mesh, const ElementAssembl
                 sigma = Eigen::Vector3d(s.stress[0], s.stress[1], s.stress[2]);
             } else if (s.kind == InitialStress::Kind::Gravity) {
                 // At the integration point: a six-node element carries the linear gravity field exactly.
-                const double y = elements.point_position(mesh.nodes, static_cast<int>(e), q).y;
-                const double vertical = m.density * g * std::max(0.0, s.surface_y - y);  // compressive magnitude
+                const Point2 at = elements.point_position(mesh.nodes, static_cast<int>(e), q);
+                const double depth = std::max(0.0, s.surface_y - at.y);
+                // Effective vertical stress (compressive magnitude): the weight above, dry above the
+                // water and saturated below, plus a lake's on the surface, less the pore pressure.
+                const double level = water.present() ? water.level(at.x) : -std::numeric_limits<double>::infinity();
+                const double wet = std::clamp(level - at.y, 0.0, depth);
+                const double lake = std::max(0.0, level - s.surface_y);
+                const double vertical = m.density_at(false) * g * (depth - wet) + m.density_at(true) * g * wet +
+                                        water.unit_weight * lake - water.pore_pressure(at);
                 sigma = Eigen::Vector3d(-s.k0 * vertical, -vertical, 0.0);
             }
             points.stress[p] = sigma;
@@ -137,6 +147,13 @@ void Simulation::anchor_bolts() {
                                          std::to_string(at.y) + ") lies in no block");
         }
     }
+}
+
+std::vector<double> Simulation::pore_pressures() const {
+    std::vector<double> u = element_pore_pressures(model_.water, mesh_, element_nodes());
+    const double factor = load_factor(model_, model_.gravity_table, state_.step + state_.step_fraction, state_.time);
+    for (double& v : u) v *= factor;
+    return u;
 }
 
 std::vector<std::pair<std::string, double>> Simulation::load_magnitudes_at(double position) const {
@@ -278,7 +295,7 @@ void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<C
         Vector6 local;
         for (int a = 0; a < 3; ++a)
             for (int dir = 0; dir < 2; ++dir) local[2 * a + dir] = d[2 * k.nodes[a] + dir];
-        commit_contact(c, k, local);
+        commit_contact(c, k, local, model_.analysis.strength_reduction);
     }
     for (std::size_t i = 0; i < state_.nodes.size(); ++i) {
         state_.nodes[i].x += d[2 * i];

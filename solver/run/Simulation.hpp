@@ -220,6 +220,10 @@ public:
     const BoundaryConditions& boundary_conditions() const { return bc_; }
     double penalty() const { return penalty_; }
 
+    /// Pore pressure of each element now (Pa, compression positive; fem/PorePressure.hpp): the
+    /// current stage's water, weighing with gravity's load factor.
+    std::vector<double> pore_pressures() const;
+
     /// Current magnitude of each point load and edge pressure, in model order.
     std::vector<std::pair<std::string, double>> load_magnitudes() const;
     /// The same at a load position (steps, fractional) of a static analysis.

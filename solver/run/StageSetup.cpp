@@ -76,6 +76,7 @@ void Simulation::set_stage_model(int s, const std::vector<int>& material) {
     const Stage& stage = base_model_.stages[s];
     model_ = base_model_;
     model_.analysis = stage.analysis;
+    model_.water = water_of_stage(base_model_, s);
     if (stage.analysis.strength_reduction) {
         // A safety stage: reduced strengths, solved as a small-strain equilibrium problem.
         reduce_strength(model_, strength_factor_);

@@ -17,6 +17,11 @@ public:
     explicit ModelComparer(double relative_tolerance = 1e-12) : tol_(relative_tolerance) {}
 
     /// An empty string when the models are equal, otherwise one line per difference.
+    void water(const std::string& p, const Water& x, const Water& y) {
+        points(p + "/piezometric_line", x.piezometric_line, y.piezometric_line);
+        eq(p + "/unit_weight", x.unit_weight, y.unit_weight);
+    }
+
     std::string compare(const Model& a, const Model& b) {
         out_.str({});
         eq("name", a.name, b.name);
@@ -26,6 +31,7 @@ public:
             eq(p + "/young_modulus", x.young_modulus, y.young_modulus);
             eq(p + "/poisson_ratio", x.poisson_ratio, y.poisson_ratio);
             eq(p + "/density", x.density, y.density);
+            eq(p + "/saturated_density", x.saturated_density, y.saturated_density);
             eq(p + "/law", x.law, y.law);
             eq(p + "/parameters", static_cast<long>(x.parameters.size()), static_cast<long>(y.parameters.size()));
             for (const auto& [key, value] : x.parameters) eq(p + "/" + key, value, y.parameter(key, -1.0));
@@ -112,6 +118,7 @@ public:
         if (s.stress_zz && t.stress_zz) eq("/initial_stress/szz", *s.stress_zz, *t.stress_zz);
         eq("/initial_stress/surface_y", s.surface_y, t.surface_y);
         eq("/initial_stress/k0", s.k0, t.k0);
+        water("/water", a.water, b.water);
         list("/measurement_points", a.measurement_points, b.measurement_points,
              [this](const std::string& p, const MeasurementPoint& x, const MeasurementPoint& y) {
                  eq(p + "/name", x.name, y.name);
@@ -170,6 +177,8 @@ public:
             eq(p + "/release_steps", x.release_steps, y.release_steps);
             eq(p + "/release_table", x.release_table, y.release_table);
             eq(p + "/target_ratio", x.target_ratio, y.target_ratio);
+            eq(p + "/water?", x.water.has_value(), y.water.has_value());
+            if (x.water && y.water) water(p + "/water", *x.water, *y.water);
         });
         return out_.str();
     }

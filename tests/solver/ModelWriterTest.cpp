@@ -40,7 +40,7 @@ struct TemporaryFolder {
 /// A model touching every field the file format has.
 Model everything_model() {
     const std::string text = R"({"format": "mcdda-model", "version": 1, "name": "all \"fields\"", "description": "Ünïcode ok",
-      "materials": [{"name": "rock", "young_modulus": 1e9, "poisson_ratio": 0.2, "unit_weight": 24525,
+      "materials": [{"name": "rock", "young_modulus": 1e9, "poisson_ratio": 0.2, "unit_weight": 24525, "saturated_unit_weight": 25506,
                      "cohesion": 1e5, "friction_angle": 30, "dilation_angle": 10, "tensile_strength": 1e4},
                     {"name": "steel", "young_modulus": 2.1e11, "poisson_ratio": 0.3, "density": 7850, "plastic": false}],
       "joint_materials": [{"name": "smooth", "friction_angle": 20},
@@ -69,6 +69,7 @@ Model everything_model() {
                          {"from": [0, 10], "to": [10, 10], "pressure": -0.1}],
       "gravity": [0.5, -9.81],
       "initial_stress": {"type": "uniform", "sxx": 10e6, "syy": 5e6, "sxy": -1e6, "szz": 7e6},
+      "water": {"piezometric_line": [[-10, 5], [0.5, 4.25], [10, 2]], "unit_weight": 10050},
       "measurement_points": [{"name": "crown", "point": [0, 3]}],
       "mesh": {"size": 0.5, "min_angle": 28, "grading": 0.2, "max_elements": 12345,
                "local": [{"point": [0, 0], "size": 0.1, "radius": 3}, {"from": [0, 0], "to": [1, 1], "size": 0.2}]},
@@ -115,7 +116,9 @@ TEST(ModelWriter, ConvertsUnitsAndSignsBack) {
     EXPECT_TRUE(has("\"format\": \"mcdda-model\"")) << text;
     EXPECT_TRUE(has("\"version\": 2")) << text;
     EXPECT_TRUE(has("\"density\": 2500")) << text;        // unit weight 24525 N/m³ / 9.81
-    EXPECT_FALSE(has("unit_weight")) << text;
+    EXPECT_FALSE(has("\"unit_weight\": 24525")) << text;  // the only unit weight written is the water's
+    EXPECT_TRUE(has("\"saturated_density\": 2600")) << text;  // saturated unit weight 25506 N/m³ / 9.81
+    EXPECT_TRUE(has("\"unit_weight\": 10050")) << text;      // of the water
     EXPECT_TRUE(has("\"sxx\": 10000000")) << text;         // compression positive again
     EXPECT_TRUE(has("\"sxy\": -1000000")) << text;
     EXPECT_TRUE(has("\"default_joint_material\": \"rough\"")) << text;

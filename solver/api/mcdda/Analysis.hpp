@@ -56,7 +56,10 @@ struct StepFields {
     int stage = 1;  ///< 1-based construction stage
     double time = 0.0;
     std::vector<double> displacement;         ///< ux, uy per node (m), since the start
-    std::vector<double> stress;               ///< σxx, σyy, σzz, τxy per element (Pa), tension positive
+    std::vector<double> stress;               ///< σxx, σyy, σzz, τxy per element (Pa), tension positive, total
+    /// σ′ = σ + u, the stress the material yields on (the same as `stress` without water).
+    std::vector<double> effective_stress;
+    std::vector<double> pore_pressure;        ///< u per element (Pa), compression positive; 0 when dry
     std::vector<double> plastic_strain;       ///< accumulated equivalent plastic strain per element
     std::vector<unsigned char> plastic_state; ///< per element: 0 never yielded, 1 earlier, 2 yielding now
 };
