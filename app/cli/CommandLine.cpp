@@ -59,7 +59,8 @@ Options:
   --field NAME         plastic_state (default), plastic_strain, displacement
                        (magnitude), ux, uy, stress_xx, stress_yy, stress_xy, stress_1
                        or stress_3 (in-plane principal; kPa or MPa, tension + unless
-                       --compression-positive)
+                       --compression-positive; total stresses); with ground water also
+                       pore_pressure (compression +) and effective_stress_xx, _yy, _1, _3
   --deform FACTOR      draw the mesh displaced by FACTOR x displacement (default 0); auto:
                        the largest displacement drawn as 5 % of the model's size (a warning
                        says when elements are drawn inside out)

@@ -129,6 +129,33 @@ class RunTest(unittest.TestCase):
         largest = np.hypot(last["displacement"][:, 0], last["displacement"][:, 1]).max()
         self.assertAlmostEqual(largest, r["history"]["max_displacement"][-1], places=15)
 
+    def test_ground_water_gives_pore_pressure_and_effective_stress(self):
+        # The square under a lake 2 m deep, saturated 25 kN/m³, against the dry square weighing
+        # γ′ = 25 − 9.81 kN/m³: the same effective stresses; the pore pressure is γw × depth.
+        wet = square_block()
+        wet["materials"][0]["saturated_unit_weight"] = 25e3
+        wet["water"] = {"piezometric_line": [[0, 12], [10, 12]]}
+        wet["gravity"] = [0, -9.81]
+        dry = square_block()
+        dry["materials"][0]["unit_weight"] = 25e3 - 9810
+        dry["gravity"] = [0, -9.81]
+        a = mcdda.Analysis.from_dict(wet)
+        r = a.run()
+        self.assertEqual(r["status"], "completed", r["message"])
+        d = mcdda.Analysis.from_dict(dry).run()
+        w, f = r["fields"][-1], d["fields"][-1]
+        m = a.mesh_arrays()
+        centroid_y = m["nodes"][m["triangles"][:, :3], 1].mean(axis=1)
+        np.testing.assert_allclose(w["pore_pressure"], 9810 * (12 - centroid_y), rtol=1e-9)
+        scale = np.abs(f["effective_stress"]).max()
+        np.testing.assert_allclose(w["effective_stress"], f["effective_stress"], atol=1e-6 * scale)
+        np.testing.assert_array_equal(f["effective_stress"], f["stress"])  # dry: the same
+        total = w["effective_stress"].copy()
+        total[:, :3] -= w["pore_pressure"][:, None]
+        np.testing.assert_allclose(w["stress"], total, atol=1e-9 * scale)
+        self.assertEqual(w["pore_pressure"].shape, (m["triangles"].shape[0],))
+        self.assertFalse(f["pore_pressure"].any())
+
     def test_progress_returning_false_stops(self):
         a = mcdda.Analysis.from_file(INCLINE, ["/analysis/steps=50"])
         r = a.run(progress=lambda p: p["step"] < 2)
