@@ -38,7 +38,7 @@ namespace {
 
 /// Depth of each layer, in units of the model size ×1e-3. The camera looks down −z with a
 /// parallel projection, so these offsets only decide what is drawn over what.
-enum Layer { fill_layer = 0, mesh_layer = 1, outline_layer = 2, joint_layer = 3, symbol_layer = 4 };
+enum Layer { fill_layer = 0, mesh_layer = 1, outline_layer = 2, joint_layer = 3, water_layer = 4, symbol_layer = 5 };
 
 struct Style {
     double pixel = 1.0;     ///< pixels per point (window DPI / 72): scales line widths and text
@@ -335,6 +335,18 @@ void add_joints(vtkRenderer* renderer, const Preprocessed& p, const Style& st)
     add_shapes(renderer, inside, palette::joint, 3.0 * st.pixel, z);
 }
 
+/// The water in force in the stage shown: its piezometric line across the model (held level
+/// beyond its ends, as the solver does) with the ▽ symbol above the middle of the model.
+void add_water(vtkRenderer* renderer, const Preprocessed& p, const SceneOptions& options, const Box& box, const Style& st)
+{
+    const Water& water = water_of_stage(p.model, options.stage);
+    if (!water.present()) return;
+    const std::vector<Point2>& line = water.piezometric_line;
+    const double xmin = box.valid() ? box.xmin : line.front().x, xmax = box.valid() ? box.xmax : line.back().x;
+    const Shapes shapes = water_table_shapes(water, xmin, xmax, 0.5 * (xmin + xmax), 1.5 * st.symbol);
+    add_shapes(renderer, shapes, palette::water, 2.5 * st.pixel, water_layer * st.z_step);
+}
+
 void add_measurement_labels(vtkRenderer* renderer, const Model& model, const Style& st)
 {
     for (const MeasurementPoint& m : model.measurement_points) {
@@ -375,6 +387,7 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
     if (options.show_mesh) add_mesh_edges(renderer, p, st);
     add_outlines(renderer, p, st);
     if (options.show_joints) add_joints(renderer, p, st);
+    if (options.show_water) add_water(renderer, p, options, box, st);
 
     const double z = symbol_layer * st.z_step;
     // The supports, loads and bolts of the stage shown: a copy without those absent in it.

@@ -26,10 +26,14 @@ struct SceneOptions {
     std::vector<int> hidden_regions;
     /// Supports, loads and bolts not drawn, by name: those absent in the stage shown (items_absent()).
     std::vector<std::string> hidden_items;
+    /// The construction stage shown (0-based; -1 = the model as drawn): the ground water drawn is
+    /// the one in force in it (water_of_stage()).
+    int stage = -1;
+    bool show_water = true;  ///< the piezometric line, blue, with the ▽ water-table symbol
 };
 
 /// Adds the actors of the model to `renderer`: blocks filled in their material's colour with
-/// dark outlines, mesh edges, joints, supports, loads, measurement points and the legend; sets
+/// dark outlines, mesh edges, joints, the water table, supports, loads, measurement points and the legend; sets
 /// a white-ish background and fits a parallel camera (see fit_camera). With an empty mesh the
 /// blocks, or else the model's regions, are filled. Nothing already in `renderer` is removed.
 /// Line widths and text grow with the render window's DPI (72 = one pixel per point).

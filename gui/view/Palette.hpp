@@ -25,6 +25,9 @@ inline constexpr Rgb point_load{0.60, 0.00, 0.60};      ///< point loads
 inline constexpr Rgb pressure{0.80, 0.33, 0.00};        ///< edge pressures
 inline constexpr Rgb measurement{0.00, 0.45, 0.20};     ///< measurement points
 inline constexpr Rgb bolt{0.55, 0.42, 0.00};            ///< rock bolts (steel, ochre)
+/// The piezometric line and its ▽ symbol: a bright blue, far from the supports' navy and the
+/// light blue and teal fills, so the water reads as water.
+inline constexpr Rgb water{0.00, 0.50, 1.00};
 inline constexpr Rgb text{0.08, 0.08, 0.10};            ///< legend and label text
 inline constexpr Rgb legend_frame{0.55, 0.56, 0.58};
 inline constexpr Rgb unassigned{0.75, 0.75, 0.75};      ///< material index −1 or out of range

@@ -135,6 +135,10 @@ Shapes icon_shapes(const LegendEntry& e, Point2 c, const Metrics& m)
     case LegendEntry::Icon::Diamond:
         s = measurement_symbol(c, m.icon_h * 0.9);
         break;
+    case LegendEntry::Icon::WaterTable:  // the line with its ▽ (pixels: y grows upwards here too)
+        s.lines.push_back({{c.x - w, c.y - 0.1 * h}, {c.x + w, c.y - 0.1 * h}});
+        s.append(water_table_symbol({c.x, c.y - 0.1 * h}, m.icon_h * 0.7));
+        break;
     }
     return s;
 }
@@ -184,6 +188,8 @@ std::vector<LegendEntry> legend_entries(const Preprocessed& p, const SceneOption
                                             : picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Block boundary"))});
     if (options.show_joints && !m.joints.empty())
         entries.push_back({LegendEntry::Icon::Line, palette::joint, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Joint"))});
+    if (options.show_water && water_of_stage(m, options.stage).present())
+        entries.push_back({LegendEntry::Icon::WaterTable, palette::water, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Water table"))});
     if (options.show_supports && !m.fixed_points.empty())
         entries.push_back({LegendEntry::Icon::Pin, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Fixed point"))});
     // Rollers fixing both directions are drawn as pins (see roller_shapes).

@@ -15,14 +15,14 @@ namespace mcdda::view {
 
 /// One row of the legend: an icon and its text.
 struct LegendEntry {
-    enum class Icon { Swatch, Line, Pin, Roller, Arrow, Pressure, Diamond };
+    enum class Icon { Swatch, Line, Pin, Roller, Arrow, Pressure, Diamond, WaterTable };
     Icon icon = Icon::Swatch;
     Rgb color{};
     std::string label;
 };
 
-/// Rows for what the scene shows: used materials, block boundaries, joints, supports, loads,
-/// measurement points. Empty when the legend is switched off or the model is empty.
+/// Rows for what the scene shows: used materials, block boundaries, joints, the water table,
+/// supports, loads, measurement points. Empty when the legend is switched off or the model is empty.
 std::vector<LegendEntry> legend_entries(const Preprocessed& p, const SceneOptions& options);
 
 /// Width of the legend box in pixels at `dpi` (72 = one pixel per point); 0 without entries.

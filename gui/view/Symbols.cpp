@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace mcdda::view {
 
@@ -85,6 +86,34 @@ Shapes measurement_symbol(Point2 at, double size)
     const double r = 0.45 * size;
     Shapes s;
     s.fills.push_back({{at.x + r, at.y}, {at.x, at.y + r}, {at.x - r, at.y}, {at.x, at.y - r}});
+    return s;
+}
+
+Shapes water_table_symbol(Point2 at, double size)
+{
+    Shapes s;
+    const double h = 0.8 * size, w = 0.5 * size;
+    s.lines.push_back({at, {at.x + w, at.y + h}, {at.x - w, at.y + h}, at});
+    for (const auto& [depth, half] : {std::pair{0.3, 0.45}, std::pair{0.6, 0.25}})
+        s.lines.push_back({{at.x - half * size, at.y - depth * size}, {at.x + half * size, at.y - depth * size}});
+    return s;
+}
+
+Shapes water_table_shapes(const Water& water, double xmin, double xmax, double symbol_x, double size)
+{
+    Shapes s;
+    if (!water.present()) return s;
+    const std::vector<Point2>& line = water.piezometric_line;
+    std::vector<Point2> drawn;
+    if (xmin < line.front().x) drawn.push_back({xmin, line.front().y});
+    drawn.insert(drawn.end(), line.begin(), line.end());
+    if (xmax > line.back().x) drawn.push_back({xmax, line.back().y});
+    s.lines.push_back(std::move(drawn));
+    // On the line as drawn (a line that folds back, refused by the checker, still gets one).
+    const double lo = std::min({xmin, line.front().x, line.back().x}), hi = std::max({xmax, line.front().x, line.back().x});
+    const double x = std::clamp(symbol_x, lo, hi);
+    const double y = water.level(x);
+    if (std::isfinite(x) && std::isfinite(y)) s.append(water_table_symbol({x, y}, size));
     return s;
 }
 

@@ -22,6 +22,15 @@ Shapes roller_symbol(Point2 at, Point2 outward, double size);
 /// A small filled diamond centred on `at`.
 Shapes measurement_symbol(Point2 at, double size);
 
+/// The water-table symbol: an inverted triangle ▽ standing with its apex on the water level at
+/// `at`, and two short dashes under the level, the lower one shorter.
+Shapes water_table_symbol(Point2 at, double size);
+
+/// The piezometric line of `water` across [xmin, xmax], held level beyond its end points as the
+/// solver holds it (and reaching them where they lie outside), with water_table_symbol() on the
+/// line at `symbol_x`. Empty when the ground is dry.
+Shapes water_table_shapes(const Water& water, double xmin, double xmax, double symbol_x, double size);
+
 /// Pin symbols at every fixed point, drawn on the side away from the rock.
 Shapes fixed_point_shapes(const Model& model, double size);
 /// The roller lines and roller markers spread along them, one marker per fixed direction.
