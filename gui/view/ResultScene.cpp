@@ -8,6 +8,7 @@
 #include "view/SceneGeometry.hpp"
 #include "view/ScaleBar.hpp"
 #include "view/SceneLegend.hpp"
+#include "view/Symbols.hpp"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -281,14 +282,22 @@ Result snapshot_result(const Preprocessed& model, const ResultSnapshot& s, const
         for (int b : mesh.triangle_block) a->InsertNextValue(b);
         grid->GetCellData()->AddArray(a);
     }
-    if (s.stress.size() == cells) {
-        vtkNew<vtkDoubleArray> a;  // VTK's symmetric tensor order, as in the files
-        a->SetName("stress");
+    // VTK's symmetric tensor order, as in the files.
+    for (const auto& [name, tensors] : {std::pair{"stress", &s.stress}, std::pair{"effective_stress", &s.effective_stress}}) {
+        if (tensors->size() != cells) continue;
+        vtkNew<vtkDoubleArray> a;
+        a->SetName(name);
         a->SetNumberOfComponents(6);
-        for (const auto& t : s.stress) {
+        for (const auto& t : *tensors) {
             const double v[6] = {t[0], t[1], t[2], t[3], 0.0, 0.0};
             a->InsertNextTuple(v);
         }
+        grid->GetCellData()->AddArray(a);
+    }
+    if (s.pore_pressure.size() == cells) {
+        vtkNew<vtkDoubleArray> a;
+        a->SetName("pore_pressure");
+        for (double v : s.pore_pressure) a->InsertNextValue(v);
         grid->GetCellData()->AddArray(a);
     }
     if (s.plastic_state.size() == cells) {
@@ -652,6 +661,31 @@ bool add_joints(vtkRenderer* renderer, const Preprocessed& model, vtkUnstructure
     return true;
 }
 
+/// The piezometric line in force in the result's stage with its ▽ symbol, on a white halo so that
+/// it reads on any colour of the scale. True when drawn (a run with ground water).
+bool add_water_table(vtkRenderer* renderer, const Preprocessed& model, const Result& r, const ResultOptions& options,
+                     const Box& box, double z_step, double pixel)
+{
+    if (!options.show_water || !box.valid()) return false;
+    const Water& water = water_of_stage(model.model, r.stage - 1);  // stage 0 (unknown): the model's
+    if (!water.present()) return false;
+    const Shapes shapes = water_table_shapes(water, box.xmin, box.xmax, box.centre().x, 1.5 * symbol_size(box));
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> lines;
+    for (const auto& l : shapes.lines) {
+        lines->InsertNextCell(static_cast<vtkIdType>(l.size()));
+        for (const Point2& q : l) lines->InsertCellPoint(points->InsertNextPoint(q.x, q.y, 3.5 * z_step));
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    data->SetLines(lines);
+    vtkSmartPointer<vtkActor> halo = flat_actor(data, white, 5.5 * pixel);
+    halo->SetPosition(0.0, 0.0, -0.2 * z_step);
+    renderer->AddActor(halo);
+    renderer->AddActor(flat_actor(data, palette::water, 2.5 * pixel));
+    return true;
+}
+
 /// What the contact marks showed, for the legend.
 struct ContactMarks {
     bool drawn = false;
@@ -777,7 +811,7 @@ ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, const Box&
 
 /// The legend of the plastic state: a swatch per state and the lines drawn. Returns the width it
 /// takes (pixels).
-double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool joints, const ContactMarks& marks)
+double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool joints, bool water, const ContactMarks& marks)
 {
     const double dpi = dpi_of(renderer);
     std::vector<LegendEntry> entries;
@@ -786,6 +820,9 @@ double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool join
                        picture_text(QT_TRANSLATE_NOOP("mcdda::view", "block boundary"))});
     if (joints)
         entries.push_back({LegendEntry::Icon::Line, joint_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint"))});
+    if (water)
+        entries.push_back({LegendEntry::Icon::WaterTable, palette::water,
+                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "water table"))});
     if (marks.drawn) {
         char largest[64];
         std::snprintf(largest, sizeof largest, " (%.3g kN/m)", marks.largest_force / 1e3);
@@ -926,8 +963,9 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
 
     add_block_outlines(renderer, grid, cells.points, cells.point_count, z_step, pixel);
     const bool joints = add_joints(renderer, model, grid, options, cells.deform, z_step, pixel);
+    const bool water = add_water_table(renderer, model, r, options, box, z_step, pixel);
     const ContactMarks marks = add_contact_marks(renderer, r.contacts, box, z_step, pixel);
-    const double reserved = colouring.categorical ? add_state_legend(renderer, field, joints, marks)
+    const double reserved = colouring.categorical ? add_state_legend(renderer, field, joints, water, marks)
                                                   : add_scale_bar(renderer, field, colouring, sign_note, options);
     const std::string title = result_title(model, r, options, shown.title, cells.deform);
     drew.title = title;

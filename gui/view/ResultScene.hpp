@@ -56,6 +56,9 @@ struct ResultOptions {
     /// The line over the picture; empty = the field with the step, stage and time when known.
     std::string title;
     bool show_joints = true;  ///< joint traces of the model (only drawn undeformed)
+    /// The piezometric line in force in the step's stage, blue with its ▽ symbol (runs with
+    /// ground water).
+    bool show_water = true;
     /// A step's contacts file of `mcdda run` (<model>_contacts_NNNNNN.vtp): its contact forces
     /// are drawn as lines from each closed contact's vertex along the force on it, the largest
     /// 6 % of the model's size long (UDEC's `plot cforce`); joint slip as lines along the joint

@@ -17,7 +17,12 @@ struct ResultSnapshot {
     double time = 0.0;    ///< s
     int stage = 1;        ///< construction stage of the last step, 1-based as in the result files
     std::vector<double> displacement;         ///< m, 2 per node (ux, uy), since the start
-    std::vector<std::array<double, 4>> stress;  ///< Pa, per element (xx, yy, zz, xy), tension positive
+    /// Pa, per element (xx, yy, zz, xy), tension positive: the total stress, as in the files.
+    std::vector<std::array<double, 4>> stress;
+    /// With ground water (empty without): the effective stress the solver works with, σ′ = σ + u,
+    /// and the pore pressure u (Pa, compression positive), per element.
+    std::vector<std::array<double, 4>> effective_stress;
+    std::vector<double> pore_pressure;
     std::vector<double> plastic_strain;       ///< per element, accumulated equivalent
     std::vector<unsigned char> plastic_state;  ///< per element: 0 never, 1 earlier, 2 yielding now
     std::vector<unsigned char> present;  ///< per element, 0 when excavated or not yet built (empty: all present)
