@@ -183,6 +183,24 @@ void ModelDocument::setJointMaterialOfJoint(int joint, int jointMaterial) {
                                         tr("Assign a joint material to %1").arg(itemName({ItemRef::Kind::Joint, joint}))));
 }
 
+bool ModelDocument::setWater(int stage, const std::optional<Water>& water) {
+    if (stage < 0) {
+        const Water w = water.value_or(Water{});
+        undo_.push(new SetValueCommand<Water>(this, [](Model& m) -> Water& { return m.water; }, w,
+                                              w.present() ? tr("Set the water table") : tr("Make the ground dry")));
+        return true;
+    }
+    if (static_cast<std::size_t>(stage) >= model_.stages.size()) return false;
+    const auto s = static_cast<std::size_t>(stage);
+    const QString name = QString::fromStdString(model_.stages[s].name);
+    const QString text = !water               ? tr("Stage \"%1\": water as in the stage before").arg(name)
+                         : water->present() ? tr("Stage \"%1\": set the water table").arg(name)
+                                            : tr("Stage \"%1\": make the ground dry").arg(name);
+    undo_.push(new SetValueCommand<std::optional<Water>>(
+        this, [s](Model& m) -> std::optional<Water>& { return m.stages[s].water; }, water, text));
+    return true;
+}
+
 void ModelDocument::replaceModel(Model model, const QString& text) {
     // The whole model is swapped: exact undo whatever the edit touched.
     undo_.push(new SetValueCommand<Model>(this, [](Model& m) -> Model& { return m; }, std::move(model), text));
@@ -219,6 +237,11 @@ QString ModelDocument::itemName(const ItemRef& ref) const {
     case Kind::PointLoad: item = named(model_.point_loads[i].name, tr("load %1")); break;
     case Kind::EdgePressure: item = named(model_.edge_pressures[i].name, tr("pressure %1")); break;
     case Kind::MeasurementPoint: item = named(model_.measurement_points[i].name, tr("point %1")); break;
+    case Kind::WaterTable:
+        item = ref.index == 0 ? tr("the water table")
+                              : tr("the water table of stage \"%1\"")
+                                    .arg(QString::fromStdString(model_.stages[i - 1].name));
+        break;
     case Kind::None: break;
     }
     if (ref.kind == Kind::Region && ref.ring > 0) item = tr("hole %1 of %2").arg(ref.ring).arg(item);

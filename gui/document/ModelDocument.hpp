@@ -15,6 +15,7 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <optional>
 #include <vector>
 
 namespace mcdda::gui {
@@ -85,6 +86,11 @@ public:
     void setRegionMaterial(int region, int material);
     /// Explicit joint `joint` gets joint material `jointMaterial` (−1 = the default one).
     void setJointMaterialOfJoint(int joint, int jointMaterial);
+
+    /// Sets the ground water as one undoable edit: the model's (`stage` -1; no water = dry) or,
+    /// from stage `stage` on, that stage's (no water: as the stage before; an empty line: dry).
+    /// False when there is no such stage.
+    bool setWater(int stage, const std::optional<Water>& water);
 
     /// Replaces the whole model as one undoable edit named `text`: for edits that touch several
     /// lists at once (a deletion that renumbers references, a move of a region with its holes).

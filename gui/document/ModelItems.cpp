@@ -2,6 +2,7 @@
 
 #include "geometry/PolygonChecks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -27,6 +28,24 @@ template <typename T>
 bool in_range(const std::vector<T>& list, int index)
 {
     return index >= 0 && static_cast<std::size_t>(index) < list.size();
+}
+
+/// The water a water-table reference names (the model's, or a stage's), null when there is none.
+template <typename M>
+auto water_of(M& m, int index) -> decltype(&m.water)
+{
+    if (index == 0) return &m.water;
+    if (index < 1 || static_cast<std::size_t>(index) > m.stages.size()) return nullptr;
+    auto& water = m.stages[static_cast<std::size_t>(index - 1)].water;
+    return water ? &*water : nullptr;
+}
+
+/// Whether the line's x increase strictly (one water level at each x).
+bool runs_left_to_right(const std::vector<Point2>& line)
+{
+    for (std::size_t i = 1; i < line.size(); ++i)
+        if (!(line[i].x > line[i - 1].x)) return false;
+    return true;
 }
 
 /// Point2 or const Point2, as the model is.
@@ -63,6 +82,10 @@ std::vector<PointOf<M>*> points_of(M& m, Kind kind, int index)
         break;
     case Kind::MeasurementPoint:
         if (in_range(m.measurement_points, index)) out.push_back(&m.measurement_points[index].point);
+        break;
+    case Kind::WaterTable:
+        if (auto* water = water_of(m, index); water && water->present())
+            for (auto& p : water->piezometric_line) out.push_back(&p);
         break;
     case Kind::None:
         break;
@@ -104,7 +127,19 @@ bool item_exists(const Model& model, const ItemRef& ref)
     return static_cast<std::size_t>(ref.vertex) < vertex_list(model, ref).size();
 }
 
-ItemRef pick_item(const Model& model, const Point2& p, double tolerance)
+ItemRef water_table_in(const Model& model, int stage)
+{
+    int index = 0;
+    for (int k = std::min(stage, static_cast<int>(model.stages.size()) - 1); k >= 0; --k)
+        if (model.stages[static_cast<std::size_t>(k)].water) {
+            index = k + 1;
+            break;
+        }
+    const Water* water = water_of(model, index);
+    return water && water->present() ? ItemRef{Kind::WaterTable, index} : ItemRef{};
+}
+
+ItemRef pick_item(const Model& model, const Point2& p, double tolerance, int stage)
 {
     ItemRef best;
     double best_d = tolerance;
@@ -142,6 +177,11 @@ ItemRef pick_item(const Model& model, const Point2& p, double tolerance)
         consider(model.point_loads[i].point, Kind::PointLoad, i, 0, -1);
     for (int i = 0; i < static_cast<int>(model.measurement_points.size()); ++i)
         consider(model.measurement_points[i].point, Kind::MeasurementPoint, i, 0, -1);
+    const ItemRef water = water_table_in(model, stage);
+    const std::vector<Point2>* water_line = water.valid() ? &water_of(model, water.index)->piezometric_line : nullptr;
+    if (water_line)
+        for (int v = 0; v < static_cast<int>(water_line->size()); ++v)
+            consider((*water_line)[static_cast<std::size_t>(v)], Kind::WaterTable, water.index, 0, v);
     if (best.valid()) return best;
 
     // Lines: a whole joint, roller or pressure; a region edge picks its region.
@@ -161,6 +201,16 @@ ItemRef pick_item(const Model& model, const Point2& p, double tolerance)
         line({model.rollers[i].from, model.rollers[i].to}, false, Kind::Roller, i);
     for (int i = 0; i < static_cast<int>(model.edge_pressures.size()); ++i)
         line({model.edge_pressures[i].from, model.edge_pressures[i].to}, false, Kind::EdgePressure, i);
+    if (water_line && !model.regions.empty()) {
+        // As drawn: held level from its end points to the model's sides.
+        std::vector<Point2> drawn = *water_line;
+        const auto box = model.bounds();
+        if (box[0] < drawn.front().x) drawn.insert(drawn.begin(), Point2{box[0], drawn.front().y});
+        if (box[2] > drawn.back().x) drawn.push_back({box[2], drawn.back().y});
+        line(drawn, false, Kind::WaterTable, water.index);
+    } else if (water_line) {
+        line(*water_line, false, Kind::WaterTable, water.index);
+    }
     if (best.valid()) return best;
     for (int i = 0; i < static_cast<int>(model.regions.size()); ++i) {
         const Region& r = model.regions[i];
@@ -211,6 +261,11 @@ bool move_item(Model& model, const ItemRef& ref, const Point2& delta)
     if (ref.vertex >= 0) pts = {vertex_list(model, ref)[ref.vertex]};
     else if (ref.kind == Kind::Region && ref.ring > 0) pts = vertex_list(model, ref);  // one hole
     else pts = points_of(model, ref.kind, ref.index);
+    if (ref.kind == Kind::WaterTable && ref.vertex >= 0) {  // not past a neighbour: one level at each x
+        std::vector<Point2> moved = water_of(model, ref.index)->piezometric_line;
+        moved[static_cast<std::size_t>(ref.vertex)].x += delta.x;
+        if (!runs_left_to_right(moved)) return false;
+    }
     for (Point2* p : pts) {
         p->x += delta.x;
         p->y += delta.y;
@@ -236,6 +291,14 @@ bool delete_item(Model& model, const ItemRef& ref)
         erase_at(model.joints[ref.index].points, ref.vertex);
         return true;
     }
+    if (ref.kind == Kind::WaterTable) {
+        // A vertex of a longer line goes alone; else the line goes and the ground is dry (a
+        // stage keeps its water set, now dry, rather than the water of the stage before).
+        std::vector<Point2>& line = water_of(model, ref.index)->piezometric_line;
+        if (ref.vertex >= 0 && line.size() > 2) erase_at(line, ref.vertex);
+        else line.clear();
+        return true;
+    }
     switch (ref.kind) {
     case Kind::Region: erase_at(model.regions, ref.index); break;
     case Kind::Joint: erase_at(model.joints, ref.index); break;
@@ -244,6 +307,7 @@ bool delete_item(Model& model, const ItemRef& ref)
     case Kind::PointLoad: erase_at(model.point_loads, ref.index); break;
     case Kind::EdgePressure: erase_at(model.edge_pressures, ref.index); break;
     case Kind::MeasurementPoint: erase_at(model.measurement_points, ref.index); break;
+    case Kind::WaterTable:  // handled above
     case Kind::None: return false;
     }
     return true;

@@ -42,7 +42,9 @@ void SelectTool::refresh()
 bool SelectTool::pressed(const QPointF& widget_pos)
 {
     const QPointF m = view_->toModel(widget_pos);
-    const ItemRef hit = pick_item(model_(), {m.x(), m.y()}, tolerance_px_ * view_->metresPerPixel());
+    // The water table of the stage the picture shows is the one drawn.
+    const ItemRef hit = pick_item(model_(), {m.x(), m.y()}, tolerance_px_ * view_->metresPerPixel(),
+                                  view_->sceneOptions().stage);
     select(hit);
     if (!hit.valid()) return false;  // empty space: the view pans
     pressing_ = true;
