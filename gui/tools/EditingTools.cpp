@@ -109,11 +109,16 @@ EditingTools::EditingTools(QMainWindow* window, ModelView* view, ModelDocument* 
     query_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
         emit queryLineDrawn(points.front(), points.back());
     });
+    water_tool_ = makeTool(int(DrawTool::Shape::Polyline),
+                           [this](const std::vector<Point2>& points) { applyWaterTable(points); });
     connect(region_tool_, &DrawTool::started, this, [this] {
         hole_shift_ = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
     });
     select_tool_ = new SelectTool(view_, [this]() -> const Model& { return document_->model(); }, this);
-    connect(select_tool_, &SelectTool::moveRequested, document_, &ModelDocument::moveItem);
+    connect(select_tool_, &SelectTool::moveRequested, this, [this](const ItemRef& ref, const Point2& delta) {
+        if (!document_->moveItem(ref, delta) && ref.kind == ItemRef::Kind::WaterTable)
+            tell(tr("The water table must run from left to right: a point cannot be moved past its neighbour."));
+    });
     connect(select_tool_, &SelectTool::deleteRequested, this, &EditingTools::deleteItem);
     connect(select_tool_, &SelectTool::selectionChanged, this, [this](const ItemRef& ref) {
         if (delete_action_) delete_action_->setEnabled(ref.valid());
@@ -187,6 +192,11 @@ void EditingTools::createActions(QMenu* edit)
                          tr("Click the two anchors of a rock bolt (EA 98 MN/m, breaking at 160 kN/m per metre of "
                             "thickness; other values and the stage that installs it are set in the model file)"),
                          &EditingTools::useBolt);
+    QAction* water = tool(tr("Draw &Water Table"), QStringLiteral("waterTableAction"), QStringLiteral("water-table"),
+                          tr("Click the points of the water table (piezometric line) from left to right; double-click "
+                             "or Enter finishes it. It is the water of the stage chosen in the Stages dock, or of the "
+                             "model as drawn"),
+                          &EditingTools::useWaterTable);
     bar->addSeparator();
     QAction* query = tool(tr("&Query Line"), QStringLiteral("queryLineAction"), QStringLiteral("query-line"),
                           tr("Click the two ends of a line across the result picture: the Query dock plots the "
@@ -206,7 +216,7 @@ void EditingTools::createActions(QMenu* edit)
     joint_set->setStatusTip(tr("Add a family of parallel joints"));
     tool_actions_ = {{region_tool_, region}, {joint_tool_, joint}, {fixed_tool_, fixed}, {roller_tool_, roller},
                      {load_tool_, load},     {pressure_tool_, pressure}, {point_tool_, point},
-                     {query_tool_, query},   {bolt_tool_, bolt}};
+                     {query_tool_, query},   {bolt_tool_, bolt},         {water_tool_, water}};
     select_action_->setChecked(true);
     createToolOptions();
 }
@@ -248,6 +258,11 @@ void EditingTools::createToolOptions()
     label(tr("Pressure"));
     pressure_box_ = spin(QStringLiteral("pressureBox"), tr("kPa"), 100.0,
                          tr("Pressure of a new edge load (positive pushes into the material)"));
+    bar->addSeparator();
+    label(tr("γw"));
+    water_weight_box_ = spin(QStringLiteral("waterUnitWeightBox"), tr("kN/m³"), 9.81,
+                             tr("Unit weight of water of a new water table (fresh water 9.81 kN/m³)"));
+    water_weight_box_->setRange(0.01, 100.0);
     bar->addSeparator();
     hole_box_ = new QCheckBox(tr("Hole"), bar);
     hole_box_->setObjectName(QStringLiteral("holeBox"));
@@ -306,6 +321,28 @@ void EditingTools::applyRegion(const std::vector<Point2>& points)
     document_->addHole(region, points);
 }
 
+void EditingTools::applyWaterTable(const std::vector<Point2>& points)
+{
+    // One level at each x, as the solver needs: a line that folds back is refused here, in plain
+    // words, rather than later by the model checker. The tool stays for the next try.
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        if (points[i].x > points[i - 1].x) continue;
+        tell(points[i].x == points[i - 1].x
+                 ? tr("The water table must run from left to right: point %1 is straight above or below point %2. "
+                      "Draw it again.").arg(i + 1).arg(i)
+                 : tr("The water table must run from left to right: point %1 is left of point %2. Draw it again.")
+                       .arg(i + 1)
+                       .arg(i));
+        return;
+    }
+    Water water;
+    water.piezometric_line = points;
+    water.unit_weight = water_weight_box_->value() * 1e3;  // kN/m³ → N/m³
+    const int stage = view_->sceneOptions().stage;
+    const bool staged = stage >= 0 && stage < static_cast<int>(document_->model().stages.size());
+    document_->setWater(staged ? stage : -1, water);
+}
+
 bool EditingTools::enterCoordinates(const QString& text)
 {
     DrawTool* tool = activeTool();
@@ -359,6 +396,7 @@ void EditingTools::useEdgePressure() { setTool(pressure_tool_); }
 void EditingTools::useMeasurementPoint() { setTool(point_tool_); }
 void EditingTools::useQueryLine() { setTool(query_tool_); }
 void EditingTools::useBolt() { setTool(bolt_tool_); }
+void EditingTools::useWaterTable() { setTool(water_tool_); }
 
 void EditingTools::selectItem(const ItemRef& ref)
 {
@@ -385,7 +423,7 @@ void EditingTools::setSnapping(bool grid, double spacing)
     options.spacing = grid_spacing_;
     view_->setGridSpacing(options.grid && activeTool() ? grid_spacing_ : 0.0);
     for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_,
-                           query_tool_, bolt_tool_})
+                           query_tool_, bolt_tool_, water_tool_})
         tool->setSnapOptions(options);
     select_tool_->setSnapOptions(options);
 }

@@ -1,9 +1,10 @@
 #pragma once
 /// \file EditingTools.hpp
 /// The editing side of the main window: the Select tool and the drawing tools (regions and
-/// holes, joints, fixed points, rollers, point loads, edge pressures, measurement points), their
+/// holes, joints, fixed points, rollers, point loads, edge pressures, measurement points, the
+/// water table), their
 /// entries in Edit and the Tools toolbar, the Tool Options toolbar (roller directions, values of
-/// new loads, Hole, typed coordinates), grid snapping, Edit ▸ Delete and Edit ▸ Add Joint Set.
+/// new loads, the unit weight of water, Hole, typed coordinates), grid snapping, Edit ▸ Delete and Edit ▸ Add Joint Set.
 /// Finished shapes, drags and deletions become undoable edits of the document.
 
 #include "document/ModelItems.hpp"
@@ -65,6 +66,9 @@ public slots:
     void useMeasurementPoint();
     /// Edit ▸ Bolt: two clicks add a rock bolt between them (undoable).
     void useBolt();
+    /// Edit ▸ Draw Water Table: a polyline drawn left to right becomes the piezometric line of
+    /// the stage the picture shows (the Stages dock's choice), or of the model as drawn.
+    void useWaterTable();
     /// Edit ▸ Query Line: two clicks on the result picture give queryLineDrawn().
     void useQueryLine();
     /// Makes Select the tool and selects `ref` (highlighted in the view).
@@ -98,6 +102,9 @@ private:
     void createToolOptions();
     /// A drawn polygon: a new region, or a hole of the region holding it (Hole / Shift).
     void applyRegion(const std::vector<Point2>& points);
+    /// A drawn polyline as the water table of the stage shown; refused (the tool stays for a
+    /// new try) unless it runs left to right.
+    void applyWaterTable(const std::vector<Point2>& points);
     void tell(const QString& text);
 
     QMainWindow* window_;
@@ -113,6 +120,7 @@ private:
     DrawTool* point_tool_ = nullptr;
     DrawTool* query_tool_ = nullptr;
     DrawTool* bolt_tool_ = nullptr;
+    DrawTool* water_tool_ = nullptr;
     QAction* select_action_ = nullptr;
     QAction* delete_action_ = nullptr;
     std::vector<std::pair<DrawTool*, QAction*>> tool_actions_;
@@ -120,6 +128,7 @@ private:
     QDoubleSpinBox* load_fx_ = nullptr;
     QDoubleSpinBox* load_fy_ = nullptr;
     QDoubleSpinBox* pressure_box_ = nullptr;
+    QDoubleSpinBox* water_weight_box_ = nullptr;  ///< γw of a new water table (kN/m³)
     QLineEdit* coordinate_edit_ = nullptr;
     QCheckBox* hole_box_ = nullptr;
     bool hole_shift_ = false;  ///< Shift was held at the first click of the region being drawn

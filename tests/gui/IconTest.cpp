@@ -16,7 +16,8 @@ namespace {
 const char* const icon_names[] = {"open",        "save",        "run",          "pause",         "stop",
                                   "mesh",        "select",      "draw-region",  "draw-joint",    "fixed-point",
                                   "roller",      "point-load",  "edge-pressure", "measurement-point",
-                                  "fit-view",    "undo",        "redo",         "contacts",     "query-line",   "bolt"};
+                                  "fit-view",    "undo",        "redo",         "contacts",     "query-line",   "bolt",
+                                  "water-table"};
 
 QString resource(const char* name) { return QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name)); }
 
