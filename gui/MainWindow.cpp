@@ -130,8 +130,10 @@ void MainWindow::createDocks()
     plot_ = new HistoryPlot(this);
     plot_dock_ = addDock(tr("Plots"), QStringLiteral("plots"), plot_, Qt::RightDockWidgetArea, model_dock_);
     resizeDocks({plot_dock_}, {320}, Qt::Horizontal);  // the view keeps its width
-    stages_dock_ = addDock(tr("Stages"), QStringLiteral("stages"), new StagesPanel(document_, view_, this),
-                           Qt::RightDockWidgetArea, model_dock_);
+    auto* stages = new StagesPanel(document_, view_, this);
+    stages_dock_ = addDock(tr("Stages"), QStringLiteral("stages"), stages, Qt::RightDockWidgetArea, model_dock_);
+    // The stage's Draw button: the Water Table tool draws the water of the stage shown.
+    connect(stages, &StagesPanel::drawWaterRequested, editing_, &EditingTools::useWaterTable);
     property_editor_ = new PropertyEditor(document_, this);
     property_dock_ = addDock(tr("Properties"), QStringLiteral("properties"), property_editor_, Qt::RightDockWidgetArea,
                              model_dock_);
@@ -425,6 +427,7 @@ void MainWindow::showScene(std::shared_ptr<const Preprocessed> p, const QString&
     status_bar_->setStatistics(mesh_summary(*p));
     const bool first_region = view_->scene() && view_->scene()->model.regions.empty() && !p->model.regions.empty();
     view_->setScene(std::move(p), keep_camera);
+    if (result_bar_) result_bar_->setWaterResults(has_water(view_->scene()->model));  // the fields a run will have
     if (first_region) view_->ensureRegionsVisible();  // the view fits the first region drawn
     refreshModelTree();  // its blocks
     updateRunActions();
@@ -473,7 +476,7 @@ void MainWindow::setRunOutputFolder(const QString& folder) { session_->setOutput
 QString MainWindow::runOutputFolder() const { return session_->runFolder(); }
 void MainWindow::setRunThrottle(int progress_ms, int snapshot_ms) { session_->setThrottle(progress_ms, snapshot_ms); }
 QString MainWindow::factorOfSafetyText() const { return status_bar_->factorOfSafety(); }
-QString MainWindow::resultField() const { return result_bar_->field(); }
+QString MainWindow::resultField() const { return result_bar_->shownField(); }
 void MainWindow::setResultField(const QString& field) { result_bar_->setField(field); }
 double MainWindow::deformFactor() const { return result_bar_->deformFactor(); }
 void MainWindow::setDeformFactor(double factor) { result_bar_->setDeformFactor(factor); }
@@ -555,6 +558,8 @@ void MainWindow::connectRunSession()
 
 void MainWindow::showResult()
 {
+    // A run of a model with ground water writes pore pressures and effective stresses (RunOutput).
+    result_bar_->setWaterResults(view_->scene() && has_water(view_->scene()->model));
     view::ResultOptions options = result_bar_->options();
     if (!shown_step_.isEmpty() && (!isRunning() || looking_back_)) {
         if (result_bar_->showContacts()) options.contacts = contacts_file_for(shown_step_).toStdString();

@@ -63,6 +63,14 @@ std::vector<std::pair<std::string, QString>> stage_items(const Model& m)
     return items;
 }
 
+/// A water in words: its line's points, or dry.
+QString water_words(const Water& water)
+{
+    return water.present()
+               ? StagesPanel::tr("line with %1 points").arg(water.piezometric_line.size())  // present: ≥ 2
+               : StagesPanel::tr("dry");
+}
+
 QSpinBox* count_box(const QString& name, int min, const QString& special, QWidget* parent)
 {
     auto* box = new QSpinBox(parent);
@@ -110,6 +118,20 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     release_->setSuffix(tr(" steps"));
     release_->setToolTip(tr("Over how many steps the forces the stage leaves out of balance (an excavation's) are "
                             "released, linearly; fewer steps release them faster"));
+    water_ = new QLabel(this);
+    water_->setObjectName(QStringLiteral("stageWater"));
+    water_->setWordWrap(true);
+    water_->setToolTip(tr("The ground water in the stage: the piezometric line drawn blue in the picture"));
+    water_draw_ = new QPushButton(tr("Draw..."), this);
+    water_draw_->setObjectName(QStringLiteral("stageWaterDraw"));
+    water_draw_->setToolTip(tr("Draw the water table of this stage with the Water Table tool: click its points from "
+                               "left to right, double-click or Enter finishes"));
+    water_dry_ = new QPushButton(tr("Dry"), this);
+    water_dry_->setObjectName(QStringLiteral("stageWaterDry"));
+    water_dry_->setToolTip(tr("No ground water from this stage on (dewatered)"));
+    water_inherit_ = new QPushButton(tr("As Before"), this);
+    water_inherit_->setObjectName(QStringLiteral("stageWaterInherit"));
+    water_inherit_->setToolTip(tr("The stage keeps the water of the stage before (the model's for the first stage)"));
     apply_ = new QPushButton(tr("Apply"), this);
     apply_->setObjectName(QStringLiteral("applyStage"));
     note_ = new QLabel(this);
@@ -128,6 +150,16 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     form->addRow(tr("Removes"), remove_items_);
     form->addRow(tr("Steps"), steps_);
     form->addRow(tr("Release"), release_);
+    // The water acts at once (one undoable edit per button), not through Apply.
+    auto* water_row = new QWidget(settings);
+    auto* water_layout = new QVBoxLayout(water_row);
+    water_layout->setContentsMargins(0, 0, 0, 0);
+    water_layout->addWidget(water_);
+    auto* water_buttons = new QHBoxLayout;
+    for (QPushButton* b : {water_draw_, water_dry_, water_inherit_}) water_buttons->addWidget(b);
+    water_buttons->addStretch(1);
+    water_layout->addLayout(water_buttons);
+    form->addRow(tr("Ground water"), water_row);
     type_ = form::analysis_type_box(QStringLiteral("stageAnalysisType"), settings);
     form->addRow(tr("Analysis"), type_);
     // The stage's own analysis settings, declared once with the model's (model/ModelFields.hpp).
@@ -150,6 +182,9 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     connect(up_, &QPushButton::clicked, this, [this] { moveStage(-1); });
     connect(down_, &QPushButton::clicked, this, [this] { moveStage(+1); });
     connect(apply_, &QPushButton::clicked, this, &StagesPanel::applyStage);
+    connect(water_draw_, &QPushButton::clicked, this, &StagesPanel::drawWaterRequested);
+    connect(water_dry_, &QPushButton::clicked, this, [this] { setStageWater(Water{}); });
+    connect(water_inherit_, &QPushButton::clicked, this, [this] { setStageWater(std::nullopt); });
     connect(document_, &ModelDocument::changed, this, &StagesPanel::refresh);
     refresh();
 }
@@ -217,11 +252,37 @@ void StagesPanel::showStage()
     release_->setValue(st ? st->release_steps : 0);
     analysis_->show(st ? st->analysis : m.analysis);
     form::show_analysis_type(type_, st ? st->analysis : m.analysis);
-    // The picture: the model as it stands in the stage.
+    // The water: the model as drawn has its own; a stage sets one or keeps the stage before's.
+    water_->setText(waterText());
+    water_dry_->setEnabled(stage < 0 ? m.water.present() : !(st && st->water && !st->water->present()));
+    water_inherit_->setEnabled(st && st->water.has_value());
+    // The picture: the model as it stands in the stage, with the water in force in it.
     view::SceneOptions options = view_->sceneOptions();
     options.hidden_regions = stage >= 0 ? regions_absent(m, stage) : std::vector<int>{};
     options.hidden_items = stage >= 0 ? items_absent(m, stage) : std::vector<std::string>{};
+    options.stage = editing ? stage : -1;
     view_->setSceneOptions(options);
+}
+
+QString StagesPanel::waterText() const
+{
+    const Model& m = document_->model();
+    const int stage = currentStage();
+    if (stage < 0 || stage >= static_cast<int>(m.stages.size())) return water_words(m.water);
+    const Stage& st = m.stages[static_cast<std::size_t>(stage)];
+    if (st.water) return water_words(*st.water);
+    return tr("as the stage before (%1)").arg(water_words(water_of_stage(m, stage)));
+}
+
+void StagesPanel::setStageWater(const std::optional<Water>& water)
+{
+    const int stage = currentStage();
+    if (stage >= static_cast<int>(document_->model().stages.size())) return;
+    // Dry keeps γw; the model as drawn has no "stage before" (the buttons say so).
+    std::optional<Water> w = water;
+    if (w) w->unit_weight = water_of_stage(document_->model(), stage).unit_weight;
+    if (stage < 0 && !w) return;
+    document_->setWater(stage, w);
 }
 
 void StagesPanel::applyStage()

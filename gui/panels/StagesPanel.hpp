@@ -4,7 +4,9 @@
 /// stands in the stage chosen (regions excavated by then, or built only later, left out), and
 /// editing: add, remove, rename and reorder stages, choose the regions each excavates or builds,
 /// the supports, loads and bolts it installs or removes, its number of steps, how fast it
-/// releases the out-of-balance forces and its other number settings (time step, tolerances …). Every change is one undoable edit of the document; the model checker reports stages
+/// releases the out-of-balance forces and its other number settings (time step, tolerances …),
+/// and its ground water: as the stage before, a water table of its own (drawn with the Water
+/// Table tool) or dry. Every change is one undoable edit of the document; the model checker reports stages
 /// that do not make sense (excavating what is already gone) in the Messages dock.
 
 #include "panels/DeclaredFields.hpp"
@@ -12,6 +14,7 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
 
 class QLabel;
 class QLineEdit;
@@ -35,8 +38,17 @@ public:
     /// The stage shown: -1 = the model as drawn (every region).
     int currentStage() const;
     void setCurrentStage(int stage);
+    /// The water of the stage shown, in words: "as the stage before (...)", "line with N
+    /// points", "dry".
+    QString waterText() const;
+
+signals:
+    /// Draw Water Table was pressed: the window activates the tool, which draws the water of
+    /// the stage shown.
+    void drawWaterRequested();
 
 private:
+    void setStageWater(const std::optional<Water>& water);
     void refresh();
     void showStage();
     void applyStage();
@@ -61,6 +73,10 @@ private:
     QPushButton* up_ = nullptr;
     QPushButton* down_ = nullptr;
     QLabel* note_ = nullptr;
+    QLabel* water_ = nullptr;               ///< the stage's water in words
+    QPushButton* water_draw_ = nullptr;     ///< activates the Water Table tool
+    QPushButton* water_dry_ = nullptr;      ///< no water from this stage on
+    QPushButton* water_inherit_ = nullptr;  ///< the water of the stage before
 };
 
 }  // namespace mcdda::gui

@@ -197,8 +197,18 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
             if (!st.install.empty()) what << tr("installs %1").arg(item_names(st.install));
             if (!st.remove.empty()) what << tr("removes %1").arg(item_names(st.remove));
             if (!st.materials.empty()) what << tr("%n material change(s)", "", static_cast<int>(st.materials.size()));
+            if (st.water)
+                what << (st.water->present() ? tr("water table of %1 points").arg(st.water->piezometric_line.size())
+                                             : tr("dry"));
             row(stages, tr("%1. %2").arg(i + 1).arg(to_qt(st.name)), what.join(QStringLiteral("; ")));
         }
+    }
+    // The model's water table, selectable like the lines drawn (the stages' are in their rows).
+    if (m.water.present()) {
+        QTreeWidgetItem* water = group(tr("Ground water"), 1);
+        row(water, tr("water table"),
+            tr("%1 points, γw %2 kN/m³").arg(m.water.piezometric_line.size()).arg(m.water.unit_weight / 1e3),
+            {Kind::WaterTable, 0});
     }
     quiet_ = false;
     if (item_exists(m, selected)) selectItem(selected);

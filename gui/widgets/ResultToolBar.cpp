@@ -29,6 +29,16 @@ double typed_number(const QLineEdit* edit)
     return ok && std::isfinite(v) ? v : std::numeric_limits<double>::quiet_NaN();
 }
 
+/// The stress fields that have an effective counterpart ("effective_" + name); τxy is the same
+/// total and effective.
+bool has_effective(const QString& field)
+{
+    return field == QLatin1String("stress_xx") || field == QLatin1String("stress_yy") ||
+           field == QLatin1String("stress_1") || field == QLatin1String("stress_3");
+}
+
+const QLatin1String effective_prefix("effective_");
+
 QLabel* label(const QString& text, QWidget* parent)
 {
     auto* l = new QLabel(text, parent);
@@ -69,6 +79,17 @@ ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
                              "major compressive stress, σ1 ≥ σ3. Tension positive: the result files' convention."));
     connect(sign_box_, &QComboBox::currentIndexChanged, this, &ResultToolBar::optionsChanged);
     addWidget(sign_box_);
+
+    basis_box_ = new QComboBox(this);
+    basis_box_->setObjectName(QStringLiteral("stressBasisBox"));
+    basis_box_->addItem(tr("Total stress"), false);
+    basis_box_->addItem(tr("Effective stress"), true);
+    basis_box_->setToolTip(tr("Stresses of a run with ground water: total stress σ, or effective stress σ′ (the total "
+                              "stress less the pore pressure: what the rock or soil yields on). τxy is the same in "
+                              "both. Without water the stresses are total."));
+    basis_box_->setEnabled(false);
+    connect(basis_box_, &QComboBox::currentIndexChanged, this, &ResultToolBar::optionsChanged);
+    addWidget(basis_box_);
 
     addWidget(label(tr("Deformation ×"), this));
     deform_box_ = new QDoubleSpinBox(this);
@@ -166,9 +187,43 @@ QString ResultToolBar::field() const { return field_box_->currentData().toString
 
 void ResultToolBar::setField(const QString& field)
 {
-    const int index = field_box_->findData(field);
+    QString chosen = field;
+    if (field.startsWith(effective_prefix) && has_effective(field.mid(effective_prefix.size()))) {
+        chosen = field.mid(effective_prefix.size());
+        if (basis_box_->isEnabled()) setEffectiveStress(true);
+    }
+    const int index = field_box_->findData(chosen);
     if (index >= 0) field_box_->setCurrentIndex(index);
 }
+
+QString ResultToolBar::shownField() const
+{
+    const QString chosen = field();
+    return effectiveStress() && has_effective(chosen) ? effective_prefix + chosen : chosen;
+}
+
+void ResultToolBar::setWaterResults(bool water)
+{
+    const QSignalBlocker block_fields(field_box_), block_basis(basis_box_);
+    const QString pore = QStringLiteral("pore_pressure");
+    const int at = field_box_->findData(pore);
+    if (water && at < 0) {
+        // After the stresses it changes, before the plastic state.
+        field_box_->insertItem(field_box_->findData(QStringLiteral("stress_3")) + 1, tr("Pore pressure u"), pore);
+    } else if (!water && at >= 0) {
+        const bool shown = field_box_->currentIndex() == at;
+        field_box_->removeItem(at);
+        if (shown) field_box_->setCurrentIndex(field_box_->findData(QStringLiteral("displacement")));
+    }
+    basis_box_->setEnabled(water);
+    if (!water) basis_box_->setCurrentIndex(0);
+}
+
+bool ResultToolBar::waterResults() const { return basis_box_->isEnabled(); }
+
+bool ResultToolBar::effectiveStress() const { return basis_box_->isEnabled() && basis_box_->currentData().toBool(); }
+
+void ResultToolBar::setEffectiveStress(bool effective) { basis_box_->setCurrentIndex(effective ? 1 : 0); }
 
 double ResultToolBar::deformFactor() const { return std::max(0.0, deform_box_->value()); }
 
@@ -219,7 +274,7 @@ void ResultToolBar::setShowContacts(bool show) { contacts_->setChecked(show); }
 view::ResultOptions ResultToolBar::options() const
 {
     view::ResultOptions options;
-    options.field = field().toStdString();
+    options.field = shownField().toStdString();
     options.stress_sign = stressSign();
     options.stress_unit = stressUnit();
     options.length_unit = lengthUnit();

@@ -1,7 +1,8 @@
 #pragma once
 /// \file ResultToolBar.hpp
 /// The Results toolbar: which field colours the picture, in which stress sign convention (the
-/// geotechnical one, compression positive, unless chosen otherwise), how the displacements are
+/// geotechnical one, compression positive, unless chosen otherwise), total or effective stresses
+/// (runs with ground water, which also offer the pore pressure), how the displacements are
 /// drawn (off, an automatic scale or a factor), the colour scale (map, bands, range), and
 /// whether saved steps show their contacts. Its choices make the view::ResultOptions of the
 /// picture shown while and after a run; showInfo() reports what was drawn.
@@ -25,9 +26,24 @@ class ResultToolBar : public QToolBar {
 public:
     explicit ResultToolBar(QWidget* parent = nullptr);
 
-    /// The field shown: one of view::result_field_names().
+    /// The field chosen in the chooser: one of view::result_field_names() other than the
+    /// effective stresses (the Total/Effective choice makes those of the stress fields).
     QString field() const;
+    /// Chooses a field; an effective stress ("effective_stress_1") chooses its stress field and
+    /// Effective (when the results have ground water).
     void setField(const QString& field);
+    /// The field drawn: field() with the stress fields made effective when Effective is chosen
+    /// (τxy is the same in both).
+    QString shownField() const;
+    /// Whether the results carry ground water (pore pressure and effective stress): the chooser
+    /// then offers the pore pressure and the Total/Effective choice is enabled; otherwise the
+    /// pore pressure is not offered (a choice of it falls back to the displacement) and the
+    /// choice is Total, disabled. Emits nothing: the caller draws next.
+    void setWaterResults(bool water);
+    bool waterResults() const;
+    /// Effective (true) or total (false) stresses for the stress fields.
+    bool effectiveStress() const;
+    void setEffectiveStress(bool effective);
     /// Scale factor of the drawn displacements (0 = undeformed; the automatic scale reads 0).
     double deformFactor() const;
     /// A factor > 0 draws deformed by it, 0 undeformed.
@@ -63,6 +79,7 @@ signals:
 private:
     QComboBox* field_box_ = nullptr;
     QComboBox* sign_box_ = nullptr;
+    QComboBox* basis_box_ = nullptr;  ///< total or effective stresses
     QDoubleSpinBox* deform_box_ = nullptr;
     QLabel* info_ = nullptr;
     QComboBox* map_box_ = nullptr;
