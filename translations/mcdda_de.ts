@@ -168,174 +168,189 @@
         <translation>Zugfestigkeitsgrenze der Mohr-Coulomb-Fläche, ≥ 0; 0 = kein Zug</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="39"/>
+        <location filename="../solver/model/ModelFields.cpp" line="32"/>
+        <source>Saturated unit weight γsat</source>
+        <translation>Gesättigte Wichte γsat</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="33"/>
+        <source>the unit weight</source>
+        <translation>die Wichte</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="34"/>
+        <source>Unit weight below the piezometric line; 0 = the unit weight γ there too</source>
+        <translation>Wichte unterhalb der Piezometerlinie; 0 = auch dort die Wichte γ</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="43"/>
         <source>Friction angle φj</source>
         <translation>Reibungswinkel φj</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="40"/>
+        <location filename="../solver/model/ModelFields.cpp" line="44"/>
         <source>Coulomb friction angle of the joint surfaces, in [0°, 90°)</source>
         <translation>Coulomb-Reibungswinkel der Kluftflächen, in [0°, 90°)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="42"/>
+        <location filename="../solver/model/ModelFields.cpp" line="46"/>
         <source>Cohesion cj</source>
         <translation>Kohäsion cj</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="43"/>
+        <location filename="../solver/model/ModelFields.cpp" line="47"/>
         <source>Cohesion of the joint, ≥ 0; lost once the joint has slipped or opened</source>
         <translation>Kohäsion der Kluft, ≥ 0; geht verloren, sobald die Kluft gleitet oder sich öffnet</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="45"/>
+        <location filename="../solver/model/ModelFields.cpp" line="49"/>
         <source>Tensile strength tj</source>
         <translation>Zugfestigkeit tj</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="46"/>
+        <location filename="../solver/model/ModelFields.cpp" line="50"/>
         <source>Tensile strength of the joint, ≥ 0; 0 = the joint opens under any tension</source>
         <translation>Zugfestigkeit der Kluft, ≥ 0; 0 = die Kluft öffnet sich bei jedem Zug</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="48"/>
+        <location filename="../solver/model/ModelFields.cpp" line="52"/>
         <source>Normal stiffness kn</source>
         <translation>Normalsteifigkeit kn</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="49"/>
-        <location filename="../solver/model/ModelFields.cpp" line="52"/>
-        <location filename="../solver/model/ModelFields.cpp" line="88"/>
+        <location filename="../solver/model/ModelFields.cpp" line="53"/>
+        <location filename="../solver/model/ModelFields.cpp" line="56"/>
+        <location filename="../solver/model/ModelFields.cpp" line="92"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="49"/>
+        <location filename="../solver/model/ModelFields.cpp" line="53"/>
         <source>Normal stiffness per metre of thickness; 0 = the analysis penalty</source>
         <translation>Normalsteifigkeit je Meter Dicke; 0 = Penalty der Berechnung</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="51"/>
+        <location filename="../solver/model/ModelFields.cpp" line="55"/>
         <source>Shear stiffness ks</source>
         <translation>Schubsteifigkeit ks</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="52"/>
+        <location filename="../solver/model/ModelFields.cpp" line="56"/>
         <source>Shear stiffness; 0 = automatic</source>
         <translation>Schubsteifigkeit; 0 = automatisch</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="61"/>
+        <location filename="../solver/model/ModelFields.cpp" line="65"/>
         <source>Axial stiffness EA</source>
         <translation>Dehnsteifigkeit EA</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="63"/>
+        <location filename="../solver/model/ModelFields.cpp" line="67"/>
         <source>Axial stiffness EA of the bolt per metre of model thickness (bolt EA over the spacing out of plane), &gt; 0</source>
         <translation>Dehnsteifigkeit EA des Ankers je Meter Modelldicke (EA des Ankers durch seinen Abstand senkrecht zur Ebene), &gt; 0</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="65"/>
+        <location filename="../solver/model/ModelFields.cpp" line="69"/>
         <source>Strength</source>
         <translation>Tragkraft</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="66"/>
+        <location filename="../solver/model/ModelFields.cpp" line="70"/>
         <source>unbreakable</source>
         <translation>unzerstörbar</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="66"/>
+        <location filename="../solver/model/ModelFields.cpp" line="70"/>
         <source>Axial force at which the bolt breaks, per metre of model thickness; 0 = unbreakable</source>
         <translation>Axialkraft, bei der der Anker reißt, je Meter Modelldicke; 0 = unzerstörbar</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="68"/>
+        <location filename="../solver/model/ModelFields.cpp" line="72"/>
         <source>Pretension</source>
         <translation>Vorspannung</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="69"/>
+        <location filename="../solver/model/ModelFields.cpp" line="73"/>
         <source>Axial force when installed, per metre of model thickness, pulling the ends together; ≥ 0</source>
         <translation>Axialkraft beim Einbau, je Meter Modelldicke, zieht die Enden zusammen; ≥ 0</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="79"/>
+        <location filename="../solver/model/ModelFields.cpp" line="83"/>
         <source>Time step Δt</source>
         <translation>Zeitschritt Δt</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="81"/>
+        <location filename="../solver/model/ModelFields.cpp" line="85"/>
         <source>Initial and largest time step; it is cut automatically when a step moves too far or does not converge. In a static analysis time only orders the load steps</source>
         <translation>Anfänglicher und größter Zeitschritt; er wird automatisch verkleinert, wenn sich ein Schritt zu weit bewegt oder nicht konvergiert. In einer statischen Berechnung ordnet die Zeit nur die Laststufen</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="83"/>
+        <location filename="../solver/model/ModelFields.cpp" line="87"/>
         <source>Max displacement ratio</source>
         <translation>Max. Verschiebungsverhältnis</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="85"/>
+        <location filename="../solver/model/ModelFields.cpp" line="89"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
         <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="87"/>
+        <location filename="../solver/model/ModelFields.cpp" line="91"/>
         <source>Penalty</source>
         <translation>Kontaktsteifigkeit (Penalty)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="89"/>
+        <location filename="../solver/model/ModelFields.cpp" line="93"/>
         <source>Contact spring stiffness; 0 = automatic (from E)</source>
         <translation>Steifigkeit der Kontaktfedern; 0 = automatisch (aus E)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="91"/>
+        <location filename="../solver/model/ModelFields.cpp" line="95"/>
         <source>Dynamic ratio</source>
         <translation>Dynamikfaktor</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="93"/>
+        <location filename="../solver/model/ModelFields.cpp" line="97"/>
         <source>Fraction of the velocity carried into the next step of a dynamic analysis (1: none lost)</source>
         <translation>Anteil der Geschwindigkeit, der in einer dynamischen Berechnung in den nächsten Schritt übernommen wird (1: nichts geht verloren)</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="95"/>
+        <location filename="../solver/model/ModelFields.cpp" line="99"/>
         <source>Equilibrium tolerance</source>
         <translation>Gleichgewichtstoleranz</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="97"/>
+        <location filename="../solver/model/ModelFields.cpp" line="101"/>
         <source>Out-of-balance force, relative to the force scale, below which a step&apos;s equilibrium iterations stop</source>
         <translation>Ungleichgewichtskraft, bezogen auf die Kraftskala, unter der die Gleichgewichtsiterationen eines Schritts enden</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="99"/>
+        <location filename="../solver/model/ModelFields.cpp" line="103"/>
         <source>Smallest load increment</source>
         <translation>Kleinstes Lastinkrement</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="101"/>
+        <location filename="../solver/model/ModelFields.cpp" line="105"/>
         <source>A static step that does not converge is halved down to this fraction of a step; failing there is a collapse</source>
         <translation>Ein statischer Schritt, der nicht konvergiert, wird bis auf diesen Bruchteil eines Schritts halbiert; scheitert er auch dort, ist es ein Versagen</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="103"/>
+        <location filename="../solver/model/ModelFields.cpp" line="107"/>
         <source>Equilibrium ratio</source>
         <translation>Gleichgewichtsgrenze</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="105"/>
+        <location filename="../solver/model/ModelFields.cpp" line="109"/>
         <source>A run whose unbalanced-force ratio ends above this is reported as not in equilibrium</source>
         <translation>Eine Berechnung, deren Ungleichgewichtsverhältnis am Ende darüber liegt, wird als nicht im Gleichgewicht gemeldet</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="107"/>
+        <location filename="../solver/model/ModelFields.cpp" line="111"/>
         <source>Factor of safety tolerance</source>
         <translation>Toleranz des Sicherheitsfaktors</translation>
     </message>
     <message>
-        <location filename="../solver/model/ModelFields.cpp" line="109"/>
+        <location filename="../solver/model/ModelFields.cpp" line="113"/>
         <source>Strength reduction: the search for the factor of safety stops once the factors that stand and that do not differ by less than this fraction</source>
         <translation>Festigkeitsreduktion: die Suche nach dem Sicherheitsfaktor endet, sobald sich die Faktoren, bei denen das Modell steht und bei denen nicht, um weniger als diesen Bruchteil unterscheiden</translation>
     </message>
@@ -582,248 +597,288 @@
         <translation>Anker „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="136"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="120"/>
+        <source>The water table must run from left to right: a point cannot be moved past its neighbour.</source>
+        <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Ein Punkt kann nicht über seinen Nachbarn hinaus verschoben werden.</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="141"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="140"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="147"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="161"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="162"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="167"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="165"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="170"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="171"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="173"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="174"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="172"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="177"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="173"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="178"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="174"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="179"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="175"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="180"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="177"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="182"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="178"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="183"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="180"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="185"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="181"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="186"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="183"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="184"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="186"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
         <source>&amp;Bolt</source>
         <translation>A&amp;nker</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="187"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="192"/>
         <source>Click the two anchors of a rock bolt (EA 98 MN/m, breaking at 160 kN/m per metre of thickness; other values and the stage that installs it are set in the model file)</source>
         <translation>Die beiden Verankerungspunkte eines Felsankers anklicken (EA 98 MN/m, Bruch bei 160 kN/m je Meter Dicke; andere Werte und die Bauphase, die ihn einbaut, stehen in der Modelldatei)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="195"/>
+        <source>Draw &amp;Water Table</source>
+        <translation>&amp;Grundwasserspiegel zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="196"/>
+        <source>Click the points of the water table (piezometric line) from left to right; double-click or Enter finishes it. It is the water of the stage chosen in the Stages dock, or of the model as drawn</source>
+        <translation>Die Punkte des Grundwasserspiegels (Piezometerlinie) von links nach rechts anklicken; Doppelklick oder Eingabetaste beendet ihn. Er gilt für die im Fenster Bauphasen gewählte Bauphase oder für das Modell wie gezeichnet</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="201"/>
         <source>&amp;Query Line</source>
         <translation>Abfragel&amp;inie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="192"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="202"/>
         <source>Click the two ends of a line across the result picture: the Query dock plots the field shown along it</source>
         <translation>Die beiden Enden einer Linie über das Ergebnisbild anklicken: das Abfrage-Fenster zeigt das Feld entlang der Linie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="196"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="201"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="204"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="214"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="233"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="236"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="227"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="237"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="238"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="229"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="239"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="243"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="253"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="244"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="256"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="244"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="245"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="255"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="256"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="248"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="258"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="249"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="259"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="250"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="260"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="252"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="262"/>
+        <source>γw</source>
+        <translation>γw</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="263"/>
+        <source>kN/m³</source>
+        <translation>kN/m³</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="264"/>
+        <source>Unit weight of water of a new water table (fresh water 9.81 kN/m³)</source>
+        <translation>Wichte des Wassers eines neuen Grundwasserspiegels (Süßwasser 9,81 kN/m³)</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="267"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="269"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="257"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="272"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="260"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="275"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="261"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="276"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="303"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="318"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="318"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="331"/>
+        <source>The water table must run from left to right: point %1 is straight above or below point %2. Draw it again.</source>
+        <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt genau über oder unter Punkt %2. Bitte neu zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
+        <source>The water table must run from left to right: point %1 is left of point %2. Draw it again.</source>
+        <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt links von Punkt %2. Bitte neu zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="355"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="373"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="411"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -1542,77 +1597,77 @@
         <translation>Abfrage</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="133"/>
+        <location filename="../gui/MainWindow.cpp" line="134"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="156"/>
+        <location filename="../gui/MainWindow.cpp" line="158"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="157"/>
+        <location filename="../gui/MainWindow.cpp" line="159"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="160"/>
+        <location filename="../gui/MainWindow.cpp" line="162"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="161"/>
+        <location filename="../gui/MainWindow.cpp" line="163"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="164"/>
+        <location filename="../gui/MainWindow.cpp" line="166"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="167"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="168"/>
+        <location filename="../gui/MainWindow.cpp" line="170"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="176"/>
+        <location filename="../gui/MainWindow.cpp" line="178"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="180"/>
+        <location filename="../gui/MainWindow.cpp" line="182"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="181"/>
+        <location filename="../gui/MainWindow.cpp" line="183"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <location filename="../gui/MainWindow.cpp" line="186"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="192"/>
+        <location filename="../gui/MainWindow.cpp" line="194"/>
         <source>&amp;Import DXF...</source>
         <translation>DXF &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="194"/>
+        <location filename="../gui/MainWindow.cpp" line="196"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="196"/>
+        <location filename="../gui/MainWindow.cpp" line="198"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
@@ -1622,7 +1677,7 @@
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="261"/>
+        <location filename="../gui/MainWindow.cpp" line="263"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
@@ -1632,42 +1687,42 @@
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="242"/>
+        <location filename="../gui/MainWindow.cpp" line="244"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="249"/>
+        <location filename="../gui/MainWindow.cpp" line="251"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="250"/>
+        <location filename="../gui/MainWindow.cpp" line="252"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="261"/>
+        <location filename="../gui/MainWindow.cpp" line="263"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="263"/>
+        <location filename="../gui/MainWindow.cpp" line="265"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="283"/>
+        <location filename="../gui/MainWindow.cpp" line="285"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="283"/>
+        <location filename="../gui/MainWindow.cpp" line="285"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="299"/>
+        <location filename="../gui/MainWindow.cpp" line="301"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
@@ -1692,37 +1747,37 @@
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="332"/>
+        <location filename="../gui/MainWindow.cpp" line="334"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="360"/>
+        <location filename="../gui/MainWindow.cpp" line="362"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="361"/>
+        <location filename="../gui/MainWindow.cpp" line="363"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="410"/>
+        <location filename="../gui/MainWindow.cpp" line="412"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="411"/>
+        <location filename="../gui/MainWindow.cpp" line="413"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="453"/>
+        <location filename="../gui/MainWindow.cpp" line="456"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="514"/>
+        <location filename="../gui/MainWindow.cpp" line="517"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1730,67 +1785,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="550"/>
+        <location filename="../gui/MainWindow.cpp" line="553"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="550"/>
+        <location filename="../gui/MainWindow.cpp" line="553"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="497"/>
+        <location filename="../gui/MainWindow.cpp" line="500"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="575"/>
+        <location filename="../gui/MainWindow.cpp" line="580"/>
         <source>Strength reduction completed: %1.</source>
         <translation>Festigkeitsreduktion abgeschlossen: %1.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="578"/>
+        <location filename="../gui/MainWindow.cpp" line="583"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="597"/>
+        <location filename="../gui/MainWindow.cpp" line="602"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="597"/>
+        <location filename="../gui/MainWindow.cpp" line="602"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="598"/>
+        <location filename="../gui/MainWindow.cpp" line="603"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="136"/>
+        <location filename="../gui/MainWindow.cpp" line="138"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="225"/>
+        <location filename="../gui/MainWindow.cpp" line="227"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="377"/>
+        <location filename="../gui/MainWindow.cpp" line="379"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="437"/>
+        <location filename="../gui/MainWindow.cpp" line="440"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="438"/>
+        <location filename="../gui/MainWindow.cpp" line="441"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -1989,67 +2044,102 @@
         <translation>%1 ein Kluftmaterial zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="194"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="190"/>
+        <source>Set the water table</source>
+        <translation>Grundwasserspiegel festlegen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="190"/>
+        <source>Make the ground dry</source>
+        <translation>Boden trockenlegen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="196"/>
+        <source>Stage &quot;%1&quot;: water as in the stage before</source>
+        <translation>Bauphase „%1“: Grundwasser wie in der Bauphase davor</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="197"/>
+        <source>Stage &quot;%1&quot;: set the water table</source>
+        <translation>Bauphase „%1“: Grundwasserspiegel festlegen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="198"/>
+        <source>Stage &quot;%1&quot;: make the ground dry</source>
+        <translation>Bauphase „%1“: Boden trockenlegen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="212"/>
         <source>Move %1</source>
         <translation>%1 verschieben</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="202"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="220"/>
         <source>Delete %1</source>
         <translation>%1 löschen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="215"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="233"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="216"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="234"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="217"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="235"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="218"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="236"/>
         <source>roller %1</source>
         <translation>Rollenlager %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="219"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="237"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="220"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="238"/>
         <source>pressure %1</source>
         <translation>Kantendruck %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="221"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="239"/>
         <source>point %1</source>
         <translation>Punkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="224"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="241"/>
+        <source>the water table</source>
+        <translation>Grundwasserspiegel</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="242"/>
+        <source>the water table of stage &quot;%1&quot;</source>
+        <translation>Grundwasserspiegel der Bauphase „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="247"/>
         <source>hole %1 of %2</source>
         <translation>Loch %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="225"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="248"/>
         <source>vertex %1 of %2</source>
         <translation>Eckpunkt %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="238"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="261"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="240"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="263"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2263,9 +2353,34 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="200"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="201"/>
+        <source>water table of %1 points</source>
+        <translation>Grundwasserspiegel mit %1 Punkten</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="202"/>
+        <source>dry</source>
+        <translation>trocken</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="203"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="208"/>
+        <source>Ground water</source>
+        <translation>Grundwasser</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="209"/>
+        <source>water table</source>
+        <translation>Grundwasserspiegel</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="210"/>
+        <source>%1 points, γw %2 kN/m³</source>
+        <translation>%1 Punkte, γw %2 kN/m³</translation>
     </message>
 </context>
 <context>
@@ -2682,223 +2797,243 @@
 <context>
     <name>mcdda::gui::ResultToolBar</name>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="41"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
         <source>Results</source>
         <translation>Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="45"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="55"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="47"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="57"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="48"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="58"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="49"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="59"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="50"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="60"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="61"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="52"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="62"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="53"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="63"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="54"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="64"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="55"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="65"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="56"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="66"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="59"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="69"/>
         <source>Mechanism: plastic strain increment</source>
         <translation>Mechanismus: plastisches Dehnungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="60"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="70"/>
         <source>Mechanism: displacement increment</source>
         <translation>Mechanismus: Verschiebungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="66"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="76"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="67"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="77"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="68"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="78"/>
         <source>Sign of the stresses shown. Compression positive (as RS2, PLAXIS and UDEC): σ1 is the major compressive stress, σ1 ≥ σ3. Tension positive: the result files&apos; convention.</source>
         <translation>Vorzeichen der gezeigten Spannungen. Druck positiv (wie RS2, PLAXIS und UDEC): σ1 ist die größte Druckspannung, σ1 ≥ σ3. Zug positiv: die Konvention der Ergebnisdateien.</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="73"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="85"/>
+        <source>Total stress</source>
+        <translation>Totale Spannung</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="86"/>
+        <source>Effective stress</source>
+        <translation>Effektive Spannung</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="87"/>
+        <source>Stresses of a run with ground water: total stress σ, or effective stress σ′ (the total stress less the pore pressure: what the rock or soil yields on). τxy is the same in both. Without water the stresses are total.</source>
+        <translation>Spannungen einer Berechnung mit Grundwasser: totale Spannung σ oder effektive Spannung σ′ (die totale Spannung abzüglich des Porenwasserdrucks: maßgebend für das Fließen von Fels und Boden). τxy ist in beiden gleich. Ohne Wasser sind die Spannungen total.</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="94"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="76"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="97"/>
         <source>Scale factor of the drawn displacements: 0 = undeformed; one step below 0 = auto, the largest displacement drawn as 5 % of the model&apos;s size</source>
         <translation>Überhöhung der gezeichneten Verschiebungen: 0 = unverformt; eine Stufe unter 0 = auto, die größte Verschiebung als 5 % der Modellgröße gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="79"/>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="153"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="100"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="174"/>
         <source>auto</source>
         <translation>auto</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="90"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="111"/>
         <source>Contacts</source>
         <translation>Kontakte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="94"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
         <source>Draw the contact forces (lines along the force, the largest 6 % of the model long), joint slip and opening, and the bolts of the saved step shown</source>
         <translation>Kontaktkräfte (Linien in Kraftrichtung, die größte 6 % der Modellgröße lang), Kluftgleiten und -öffnung und die Anker des gezeigten gespeicherten Schritts zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="101"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="122"/>
         <source>Units</source>
         <translation>Einheiten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="102"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="123"/>
         <source>Units of stresses and displacements in the legend, the cursor read-out and query lines</source>
         <translation>Einheiten der Spannungen und Verschiebungen in Legende, Cursoranzeige und Abfragelinien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="113"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="134"/>
         <source>Stresses</source>
         <translation>Spannungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="114"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
         <source>kPa, or MPa from 1 MPa on</source>
         <translation>kPa, ab 1 MPa in MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="136"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="116"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="137"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="118"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="139"/>
         <source>Displacements</source>
         <translation>Verschiebungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="119"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="140"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="120"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="141"/>
         <source>mm</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="156"/>
         <source>Rainbow</source>
         <translation>Regenbogen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="136"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="157"/>
         <source>Viridis</source>
         <translation>Viridis</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="137"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="158"/>
         <source>Grey</source>
         <translation>Grau</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="138"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="159"/>
         <source>Blue–white–red</source>
         <translation>Blau–Weiß–Rot</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="139"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="160"/>
         <source>Colour map of the scale</source>
         <translation>Farbskala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="145"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="166"/>
         <source>smooth</source>
         <translation>stufenlos</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="146"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="167"/>
         <source> bands</source>
         <translation> Stufen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="147"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="168"/>
         <source>Number of colour bands (contours); smooth = a continuous scale</source>
         <translation>Anzahl der Farbstufen (Isoflächen); stufenlos = kontinuierliche Skala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="150"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="171"/>
         <source>Range</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="161"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="182"/>
         <source>Lower end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Unteres Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="162"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="183"/>
         <source>Upper end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Oberes Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="239"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="212"/>
+        <source>Pore pressure u</source>
+        <translation>Porenwasserdruck u</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="294"/>
         <source>×%1 (auto)</source>
         <translation>×%1 (auto)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="242"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="297"/>
         <source>⚠ %n element(s) drawn inside out: lower the scale</source>
         <translation>
             <numerusform>⚠ %n Element umgestülpt gezeichnet: Überhöhung verringern</numerusform>
@@ -3195,172 +3330,227 @@
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="86"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="70"/>
+        <source>line with %1 points</source>
+        <translation>Linie mit %1 Punkten</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="71"/>
+        <source>dry</source>
+        <translation>trocken</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="94"/>
         <source>Choose a stage to see the model as it stands in it; the first row shows every region</source>
         <translation>Eine Bauphase wählen, um das Modell so zu sehen, wie es in ihr steht; die erste Zeile zeigt alle Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="87"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="95"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="89"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="97"/>
         <source>Add a stage at the end (10 steps, the model&apos;s analysis settings)</source>
         <translation>Eine Bauphase am Ende hinzufügen (10 Schritte, die Berechnungseinstellungen des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="90"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="92"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
         <source>Up</source>
         <translation>Nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="94"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
         <source>Down</source>
         <translation>Nach unten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="106"/>
         <source>Name of the stage (results, tree, messages)</source>
         <translation>Name der Bauphase (Ergebnisse, Baum, Meldungen)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="108"/>
         <source>Regions removed at the start of the stage (an excavation)</source>
         <translation>Bereiche, die zu Beginn der Bauphase entfernt werden (ein Ausbruch)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="110"/>
         <source>Regions added at the start of the stage (backfill, a liner); absent before</source>
         <translation>Bereiche, die zu Beginn der Bauphase hinzukommen (Verfüllung, Ausbau); vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="104"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="112"/>
         <source>Supports, loads and bolts added at the start of the stage; absent before</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase hinzukommen; vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="106"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="114"/>
         <source>Supports, loads and bolts taken away at the start of the stage</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase entfernt werden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="108"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="116"/>
         <source>Number of load steps of the stage</source>
         <translation>Anzahl der Laststufen der Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="109"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="117"/>
         <source>over all steps</source>
         <translation>über alle Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="110"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="118"/>
         <source> steps</source>
         <translation> Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="111"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="119"/>
         <source>Over how many steps the forces the stage leaves out of balance (an excavation&apos;s) are released, linearly; fewer steps release them faster</source>
         <translation>Über wie viele Schritte die Ungleichgewichtskräfte der Bauphase (etwa eines Ausbruchs) linear freigesetzt werden; weniger Schritte setzen sie schneller frei</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="113"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
+        <source>The ground water in the stage: the piezometric line drawn blue in the picture</source>
+        <translation>Das Grundwasser in der Bauphase: die im Bild blau gezeichnete Piezometerlinie</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
+        <source>Draw...</source>
+        <translation>Zeichnen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="127"/>
+        <source>Draw the water table of this stage with the Water Table tool: click its points from left to right, double-click or Enter finishes</source>
+        <translation>Den Grundwasserspiegel dieser Bauphase mit dem Werkzeug Grundwasserspiegel zeichnen: seine Punkte von links nach rechts anklicken, Doppelklick oder Eingabetaste beendet</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="129"/>
+        <source>Dry</source>
+        <translation>Trocken</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="131"/>
+        <source>No ground water from this stage on (dewatered)</source>
+        <translation>Kein Grundwasser ab dieser Bauphase (entwässert)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="132"/>
+        <source>As Before</source>
+        <translation>Wie davor</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="134"/>
+        <source>The stage keeps the water of the stage before (the model&apos;s for the first stage)</source>
+        <translation>Die Bauphase behält das Grundwasser der Bauphase davor (bei der ersten das des Modells)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="135"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="146"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="147"/>
         <source>Excavates</source>
         <translation>Bricht aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="126"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="148"/>
         <source>Builds</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="127"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="149"/>
         <source>Installs</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="150"/>
         <source>Removes</source>
         <translation>Baut aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="129"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="151"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="130"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="152"/>
         <source>Release</source>
         <translation>Freisetzung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="132"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="162"/>
+        <source>Ground water</source>
+        <translation>Grundwasser</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="168"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="203"/>
         <source>Model as drawn (every region)</source>
         <translation>Modell wie gezeichnet (alle Bereiche)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="170"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="205"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="173"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="208"/>
         <source>No stages: the model is analysed in one go. Add one to excavate or build regions step by step.</source>
         <translation>Keine Bauphasen: das Modell wird in einem Zug berechnet. Eine hinzufügen, um Bereiche schrittweise auszubrechen oder einzubauen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="195"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="230"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="209"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="244"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="243"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="274"/>
+        <source>as the stage before (%1)</source>
+        <translation>wie in der Bauphase davor (%1)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="304"/>
         <source>Edit stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="250"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="311"/>
         <source>stage %1</source>
         <translation>Bauphase %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="254"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="315"/>
         <source>Add stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="265"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="326"/>
         <source>Remove stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="274"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="335"/>
         <source>Move stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ verschieben</translation>
     </message>
@@ -3579,209 +3769,244 @@
     <name>mcdda::view</name>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="37"/>
-        <location filename="../gui/view/ResultScene.cpp" line="53"/>
+        <location filename="../gui/view/ResultScene.cpp" line="54"/>
         <source>elastic</source>
         <translation>elastisch</translation>
     </message>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="38"/>
-        <location filename="../gui/view/ResultScene.cpp" line="53"/>
+        <location filename="../gui/view/ResultScene.cpp" line="54"/>
         <source>yielded before</source>
         <translation>früher plastifiziert</translation>
     </message>
     <message>
         <location filename="../gui/view/ResultProbe.cpp" line="39"/>
-        <location filename="../gui/view/ResultScene.cpp" line="53"/>
+        <location filename="../gui/view/ResultScene.cpp" line="54"/>
         <source>yielding now</source>
         <translation>plastifiziert jetzt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="78"/>
+        <location filename="../gui/view/ResultScene.cpp" line="79"/>
         <source>plastic state</source>
         <translation>plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="79"/>
+        <location filename="../gui/view/ResultScene.cpp" line="80"/>
         <source>plastic strain</source>
         <translation>plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="91"/>
+        <location filename="../gui/view/ResultScene.cpp" line="101"/>
         <source>displacement increment</source>
         <translation>Verschiebungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="93"/>
+        <location filename="../gui/view/ResultScene.cpp" line="103"/>
         <source>plastic strain increment</source>
         <translation>plastisches Dehnungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="80"/>
+        <location filename="../gui/view/ResultScene.cpp" line="81"/>
         <source>displacement</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="81"/>
+        <location filename="../gui/view/ResultScene.cpp" line="82"/>
         <source>x displacement</source>
         <translation>Verschiebung x</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="82"/>
+        <location filename="../gui/view/ResultScene.cpp" line="83"/>
         <source>y displacement</source>
         <translation>Verschiebung y</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="83"/>
+        <location filename="../gui/view/ResultScene.cpp" line="84"/>
         <source>stress xx</source>
         <translation>Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="84"/>
+        <location filename="../gui/view/ResultScene.cpp" line="85"/>
         <source>stress yy</source>
         <translation>Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="85"/>
+        <location filename="../gui/view/ResultScene.cpp" line="86"/>
         <source>shear stress xy</source>
         <translation>Schubspannung xy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="86"/>
+        <location filename="../gui/view/ResultScene.cpp" line="87"/>
         <source>principal stress 1</source>
         <translation>Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="87"/>
+        <location filename="../gui/view/ResultScene.cpp" line="88"/>
         <source>principal stress 3</source>
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="904"/>
+        <location filename="../gui/view/ResultScene.cpp" line="952"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="905"/>
+        <location filename="../gui/view/ResultScene.cpp" line="953"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="775"/>
+        <location filename="../gui/view/ResultScene.cpp" line="820"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="777"/>
+        <location filename="../gui/view/ResultScene.cpp" line="91"/>
+        <source>pore pressure</source>
+        <translation>Porenwasserdruck</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="92"/>
+        <source>effective stress xx</source>
+        <translation>effektive Spannung xx</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="93"/>
+        <source>effective stress yy</source>
+        <translation>effektive Spannung yy</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="95"/>
+        <source>effective principal stress 1</source>
+        <translation>effektive Hauptspannung 1</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="97"/>
+        <source>effective principal stress 3</source>
+        <translation>effektive Hauptspannung 3</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="822"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="782"/>
+        <location filename="../gui/view/ResultScene.cpp" line="825"/>
+        <source>water table</source>
+        <translation>Grundwasserspiegel</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="830"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="784"/>
+        <location filename="../gui/view/ResultScene.cpp" line="832"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="788"/>
+        <location filename="../gui/view/ResultScene.cpp" line="836"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="793"/>
+        <location filename="../gui/view/ResultScene.cpp" line="841"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="816"/>
+        <location filename="../gui/view/ResultScene.cpp" line="864"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="860"/>
+        <location filename="../gui/view/ResultScene.cpp" line="908"/>
         <source>strengths divided by</source>
         <translation>Festigkeiten geteilt durch</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="864"/>
+        <location filename="../gui/view/ResultScene.cpp" line="912"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="868"/>
+        <location filename="../gui/view/ResultScene.cpp" line="916"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="875"/>
+        <location filename="../gui/view/ResultScene.cpp" line="923"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="144"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="148"/>
         <source>Unassigned material</source>
         <translation>Kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="146"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="150"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="153"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="157"/>
         <source>Legend</source>
         <translation>Legende</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="183"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="187"/>
         <source>Region boundary</source>
         <translation>Bereichsrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="184"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="188"/>
         <source>Block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="186"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="190"/>
         <source>Joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="188"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="192"/>
+        <source>Water table</source>
+        <translation>Grundwasserspiegel</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="194"/>
         <source>Fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="195"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
         <source>Fixed line (x and y)</source>
         <translation>Feste Linie (x und y)</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="197"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
         <source>Roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="199"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
         <source>Bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="207"/>
         <source>Point load</source>
         <translation>Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="209"/>
         <source>Edge pressure</source>
         <translation>Kantendruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="211"/>
         <source>Measurement point</source>
         <translation>Messpunkt</translation>
     </message>

@@ -109,6 +109,8 @@ private slots:
         QCOMPARE(tr_main_window("&Save"), QStringLiteral("&Speichern"));
         QCOMPARE(tr_editing("&Undo"), QStringLiteral("&Rückgängig"));
         QCOMPARE(tr_editing("Draw &Joint"), QStringLiteral("&Kluft zeichnen"));
+        QCOMPARE(tr_editing("Draw &Water Table"), QStringLiteral("&Grundwasserspiegel zeichnen"));
+        QCOMPARE(QCoreApplication::translate("mcdda::view", "pore pressure"), QStringLiteral("Porenwasserdruck"));
         // The Run menu.
         QCOMPARE(tr_run("&Run"), QStringLiteral("Be&rechnung"));
         QCOMPARE(tr_run("&Pause"), QStringLiteral("&Pause"));
@@ -126,7 +128,8 @@ private slots:
         // The Edit menu: undo/redo, the tools' entries.
         QStringList edit{tr_editing("&Undo"), tr_editing("&Redo")};
         for (const char* source : {"&Select", "Draw &Region", "Draw &Joint", "&Fixed Point", "R&oller", "Point &Load",
-                                   "Edge &Pressure", "&Measurement Point", "&Bolt", "&Query Line", "&Delete", "Add Joint Se&t..."})
+                                   "Edge &Pressure", "&Measurement Point", "&Bolt", "Draw &Water Table", "&Query Line",
+                                   "&Delete", "Add Joint Se&t..."})
             edit << tr_editing(source);
         QVERIFY(distinct_mnemonics(edit));
         QVERIFY(distinct_mnemonics(QStringList{tr_run("&Run"), tr_run("Res&ume"), tr_run("&Stop"), tr_run("Results &Folder...")}));
