@@ -40,14 +40,6 @@ auto water_of(M& m, int index) -> decltype(&m.water)
     return water ? &*water : nullptr;
 }
 
-/// Whether the line's x increase strictly (one water level at each x).
-bool runs_left_to_right(const std::vector<Point2>& line)
-{
-    for (std::size_t i = 1; i < line.size(); ++i)
-        if (!(line[i].x > line[i - 1].x)) return false;
-    return true;
-}
-
 /// Point2 or const Point2, as the model is.
 template <typename M>
 using PointOf = std::conditional_t<std::is_const_v<M>, const Point2, Point2>;
@@ -261,10 +253,13 @@ bool move_item(Model& model, const ItemRef& ref, const Point2& delta)
     if (ref.vertex >= 0) pts = {vertex_list(model, ref)[ref.vertex]};
     else if (ref.kind == Kind::Region && ref.ring > 0) pts = vertex_list(model, ref);  // one hole
     else pts = points_of(model, ref.kind, ref.index);
-    if (ref.kind == Kind::WaterTable && ref.vertex >= 0) {  // not past a neighbour: one level at each x
-        std::vector<Point2> moved = water_of(model, ref.index)->piezometric_line;
-        moved[static_cast<std::size_t>(ref.vertex)].x += delta.x;
-        if (!runs_left_to_right(moved)) return false;
+    if (ref.kind == Kind::WaterTable && ref.vertex >= 0) {
+        // Not past a neighbour: one level at each x. Only the moved point's own order is asked
+        // for, so a line read from a file that folds back elsewhere can still be mended.
+        const std::vector<Point2>& line = water_of(model, ref.index)->piezometric_line;
+        const auto v = static_cast<std::size_t>(ref.vertex);
+        const double x = line[v].x + delta.x;
+        if ((v > 0 && !(x > line[v - 1].x)) || (v + 1 < line.size() && !(x < line[v + 1].x))) return false;
     }
     for (Point2* p : pts) {
         p->x += delta.x;

@@ -3,6 +3,7 @@
 #include "ModelCompare.hpp"
 #include "document/EditCommands.hpp"
 #include "document/ModelDocument.hpp"
+#include "document/ModelItems.hpp"
 #include "io/ModelReader.hpp"
 
 #include <QDir>
@@ -152,6 +153,58 @@ private slots:
         COMPARE_MODELS(document.model(), original);
         QVERIFY(!document.isModified());
         QVERIFY(!document.moveItem({Kind::Roller, 3}, {1.0, 0.0}));
+    }
+
+    void waterTablesArePickedMovedAndDeletedPerStage() {
+        using Kind = gui::ItemRef::Kind;
+        ModelDocument document;
+        Model m = picking_model();
+        m.water.piezometric_line = {{2, 7}, {8, 7}};
+        m.stages.resize(3);
+        Water low;
+        low.piezometric_line = {{0, 3}, {5, 2}, {10, 3}};
+        m.stages[1].water = low;  // stage 2 lowers it; stage 3 keeps that
+        document.setModel(m);
+        const Model original = document.model();
+        QCOMPARE(gui::water_table_in(m, -1).index, 0);
+        QCOMPARE(gui::water_table_in(m, 0).index, 0);
+        QCOMPARE(gui::water_table_in(m, 2).index, 2);
+        // The line of the stage shown, held level to the model's sides: the model's in stage 1.
+        gui::ItemRef r = gui::pick_item(m, {9.5, 7.03}, 0.1, 0);
+        QCOMPARE(int(r.kind), int(Kind::WaterTable));
+        QCOMPARE(r.index, 0);
+        QCOMPARE(r.vertex, -1);
+        QCOMPARE(int(gui::pick_item(m, {9.5, 3.0}, 0.1, 0).kind), int(Kind::Region));  // a later stage's line
+        r = gui::pick_item(m, {5.02, 2.0}, 0.1, 2);  // stage 3 shows stage 2's water
+        QCOMPARE(int(r.kind), int(Kind::WaterTable));
+        QCOMPARE(r.index, 2);
+        QCOMPARE(r.vertex, 1);
+        QVERIFY(document.itemName(r).contains(QStringLiteral("water table")));
+        // A vertex moves, but not past its neighbour.
+        QVERIFY(document.moveItem(r, {1.0, 0.5}));
+        QCOMPARE(document.model().stages[1].water->piezometric_line[1].x, 6.0);
+        QVERIFY(!document.moveItem(r, {4.0, 0.0}));
+        // Deleting the stage's line makes that stage dry, not "as before"; the model's stays.
+        QVERIFY(document.deleteItem({Kind::WaterTable, 2}));
+        QVERIFY(document.model().stages[1].water.has_value());
+        QVERIFY(!document.model().stages[1].water->present());
+        QVERIFY(document.model().water.present());
+        QVERIFY(!gui::water_table_in(document.model(), 1).valid());
+        // A vertex of a two-point line deletes the line.
+        QVERIFY(document.deleteItem({Kind::WaterTable, 0, 0, 1}));
+        QVERIFY(!document.model().water.present());
+        QVERIFY(!has_water(document.model()));
+        for (int i = 0; i < 3; ++i) document.undoStack()->undo();
+        COMPARE_MODELS(document.model(), original);
+        // Set per stage: none = as the stage before.
+        QVERIFY(document.setWater(2, Water{}));
+        QVERIFY(document.model().stages[2].water && !document.model().stages[2].water->present());
+        QVERIFY(document.setWater(1, std::nullopt));
+        QVERIFY(!document.model().stages[1].water.has_value());
+        QVERIFY(!document.setWater(3, Water{}));
+        document.undoStack()->undo();
+        document.undoStack()->undo();
+        COMPARE_MODELS(document.model(), original);
     }
 
     void opensAFileClean() {
