@@ -150,16 +150,13 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     form->addRow(tr("Removes"), remove_items_);
     form->addRow(tr("Steps"), steps_);
     form->addRow(tr("Release"), release_);
-    // The water acts at once (one undoable edit per button), not through Apply.
-    auto* water_row = new QWidget(settings);
-    auto* water_layout = new QVBoxLayout(water_row);
-    water_layout->setContentsMargins(0, 0, 0, 0);
-    water_layout->addWidget(water_);
+    // The water acts at once (one undoable edit per button), not through Apply; its buttons span
+    // both columns so that they do not widen the form.
+    form->addRow(tr("Ground water"), water_);
     auto* water_buttons = new QHBoxLayout;
     for (QPushButton* b : {water_draw_, water_dry_, water_inherit_}) water_buttons->addWidget(b);
     water_buttons->addStretch(1);
-    water_layout->addLayout(water_buttons);
-    form->addRow(tr("Ground water"), water_row);
+    form->addRow(water_buttons);
     type_ = form::analysis_type_box(QStringLiteral("stageAnalysisType"), settings);
     form->addRow(tr("Analysis"), type_);
     // The stage's own analysis settings, declared once with the model's (model/ModelFields.hpp).
