@@ -34,7 +34,7 @@ void initial_stresses(const Model& model, const Mesh& mesh, const ElementAssembl
                 // water and saturated below, plus a lake's on the surface, less the pore pressure.
                 const double level = water.present() ? water.level(at.x) : -std::numeric_limits<double>::infinity();
                 const double wet = std::clamp(level - at.y, 0.0, depth);
-                const double lake = std::max(0.0, level - s.surface_y);
+                const double lake = std::max(0.0, level - std::max(at.y, s.surface_y));  // water above the ground
                 const double vertical = m.density_at(false) * g * (depth - wet) + m.density_at(true) * g * wet +
                                         water.unit_weight * lake - water.pore_pressure(at);
                 sigma = Eigen::Vector3d(-s.k0 * vertical, -vertical, 0.0);

@@ -136,7 +136,9 @@ class RunTest(unittest.TestCase):
         wet["materials"][0]["saturated_unit_weight"] = 25e3
         wet["water"] = {"piezometric_line": [[0, 12], [10, 12]]}
         wet["gravity"] = [0, -9.81]
+        wet["analysis"]["geometry"] = "initial"  # pore pressures on the undeformed mesh, as compared below
         dry = square_block()
+        dry["analysis"]["geometry"] = "initial"
         dry["materials"][0]["unit_weight"] = 25e3 - 9810
         dry["gravity"] = [0, -9.81]
         a = mcdda.Analysis.from_dict(wet)

@@ -150,3 +150,86 @@ TEST(Water, SubmergedSlopeIsTheDrySlopeWithBuoyantUnitWeight) {
     std::printf("submerged slope: F = %.4f, dry with buoyant weight %.4f; effective stresses differ by %.2e of %.3e Pa\n",
                 fw.value, fd.value, difference, largest);
 }
+
+// A K0 in-situ stress under a water table (in-situ stress "gravity"): effective stresses from
+// the unit weight above the table and the saturated one below it, less the pore pressure, are in
+// balance with the weight and the water at once — the first step moves next to nothing. (Not
+// exactly nothing: an element the water table crosses weighs the mean of its integration points,
+// and its stress has a kink at the table that its linear field cannot follow.)
+TEST(Water, InSituStressUnderAWaterTableIsInBalance) {
+    const std::string level_ground = R"({"format": "mcdda-model", "version": 1,
+      "materials": [{"name": "soil", "young_modulus": 5e7, "poisson_ratio": 0.3, "unit_weight": 18000,
+                     "saturated_unit_weight": 21000, "cohesion": 20000, "friction_angle": 30}],
+      "regions": [{"name": "ground", "material": "soil", "boundary": [[0, 0], [20, 0], [20, 10], [0, 10]]}],
+      "rollers": [{"name": "base", "from": [0, 0], "to": [20, 0], "fixed": "xy"},
+                  {"name": "left", "from": [0, 0], "to": [0, 10], "fixed": "x"},
+                  {"name": "right", "from": [20, 0], "to": [20, 10], "fixed": "x"}],
+      "gravity": [0, -9.81],
+      "initial_stress": {"type": "gravity", "surface_y": 10, "k0": 0.5},
+      "water": {"piezometric_line": [[0, 6], [20, 6]]},
+      "mesh": {"size": 1.0},
+      "analysis": {"type": "static", "steps": 1, "geometry": "initial"}})";
+    test::Run r = test::run_text(level_ground);
+    ASSERT_TRUE(r.simulation);
+    double largest = 0.0;
+    for (Eigen::Index i = 0; i < r.simulation->state().displacement.size(); ++i)
+        largest = std::max(largest, std::abs(r.simulation->state().displacement[i]));
+    // The same ground without the in-situ stress settles by centimetres.
+    test::Run settled = test::run_text(level_ground, {"/initial_stress={\"type\": \"none\"}"});
+    ASSERT_TRUE(settled.simulation);
+    double settlement = 0.0;
+    for (Eigen::Index i = 0; i < settled.simulation->state().displacement.size(); ++i)
+        settlement = std::max(settlement, std::abs(settled.simulation->state().displacement[i]));
+    EXPECT_LT(largest, 2e-3 * settlement) << "moved " << largest << " m; without in-situ stress " << settlement << " m";
+    // σ′v at a point 7 m deep: 4 m dry at 18 kN/m³, 3 m saturated at 21 kN/m³, less 3 m of water.
+    const auto& mesh = r.model.mesh;
+    for (std::size_t e = 0; e < mesh.triangles.size(); ++e) {
+        const auto& t = mesh.triangles[e];
+        const double y = (mesh.nodes[t[0]].y + mesh.nodes[t[1]].y + mesh.nodes[t[2]].y) / 3;
+        const double depth = 10 - y, wet = std::max(0.0, 6 - y);
+        const double effective = 18000 * (depth - wet) + 21000 * wet - gamma_w * wet;
+        // Elements the water table crosses carry the mean of their points: checked off it only.
+        bool crossed = false;
+        for (int a = 0; a < 3; ++a) crossed = crossed || ((mesh.nodes[t[a]].y > 6) != (y > 6));
+        if (crossed) continue;
+        ASSERT_NEAR(r.simulation->state().stress[e][1], -effective, 1e-3 * 180000) << "element " << e << " at y = " << y;
+        ASSERT_NEAR(r.simulation->state().stress[e][0], -0.5 * effective, 1e-3 * 180000) << "element " << e;
+    }
+}
+
+// examples/reservoir-drawdown-staged.json: the drawdown stage changes the water (its pore
+// pressures are those of its line) and lowers the slope's factor of safety below that of the slope
+// with the reservoir held full.
+TEST(Water, DrawdownStageLowersTheFactorOfSafety) {
+    const FactorOfSafety drawdown = test::strength_reduction_of("reservoir-drawdown-staged.json");
+    const FactorOfSafety full = test::strength_reduction_of(
+        "reservoir-drawdown-staged.json", {"/stages/1/water/piezometric_line=[[0, 6], [18, 6]]"});
+    ASSERT_TRUE(drawdown.found && full.found);
+    EXPECT_LT(drawdown.value, 0.8 * full.value);
+    EXPECT_GT(drawdown.value, 1.0);  // it still stands
+    std::printf("reservoir slope: F = %.3f after the drawdown, %.3f with the reservoir held full\n", drawdown.value,
+                full.value);
+    test::Run r = test::run_example("reservoir-drawdown-staged.json", {}, 8);  // the first two stages
+    ASSERT_TRUE(r.simulation);
+    EXPECT_EQ(r.simulation->state().stage, 1);
+    const Water& water = r.simulation->model().water;
+    ASSERT_TRUE(water.present());
+    EXPECT_DOUBLE_EQ(water.level(4.5), 2.0);
+    const std::vector<double> u = r.simulation->pore_pressures();
+    const auto& mesh = r.model.mesh;
+    for (std::size_t e = 0; e < u.size(); ++e) {
+        const auto& t = mesh.triangles[e];
+        const Point2 c{(mesh.nodes[t[0]].x + mesh.nodes[t[1]].x + mesh.nodes[t[2]].x) / 3,
+                       (mesh.nodes[t[0]].y + mesh.nodes[t[1]].y + mesh.nodes[t[2]].y) / 3};
+        // Below the line and clear of its kinks (x = 4.5, 9, 13.5 m): the mean of the element's
+        // points is the pore pressure at its centroid.
+        bool kink = false;
+        for (double x : {4.5, 9.0, 13.5}) {
+            const double lo = std::min({mesh.nodes[t[0]].x, mesh.nodes[t[1]].x, mesh.nodes[t[2]].x});
+            const double hi = std::max({mesh.nodes[t[0]].x, mesh.nodes[t[1]].x, mesh.nodes[t[2]].x});
+            kink = kink || (lo < x && x < hi);
+        }
+        if (!kink && c.y < water.level(c.x) - 1.0)
+            ASSERT_NEAR(u[e], gamma_w * (water.level(c.x) - c.y), 1e-6 * gamma_w * 6) << "element " << e;
+    }
+}
