@@ -119,7 +119,7 @@ TEST(LoaderFuzz, MutatedExamplesNeverCrashTheLoader) {
     int runs = 0, rejected = 0, meshed = 0, solved = 0;
     // Meshing is capped so a mutation that asks for a huge mesh is refused quickly.
     const std::vector<std::string> cap = {"/mesh/max_elements=30000"};
-    // 80 mutants per shipped example (1,440 with 18 examples); MCDDA_FUZZ_PER_EXAMPLE=1000 for a long run.
+    // 80 mutants per shipped example; MCDDA_FUZZ_PER_EXAMPLE=1000 for a long run.
     const char* per_example_text = std::getenv("MCDDA_FUZZ_PER_EXAMPLE");
     const int per_example = per_example_text ? std::max(1, std::atoi(per_example_text)) : 80;
     int text_mutations = 0;
