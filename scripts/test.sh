@@ -5,5 +5,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/build.sh
+source scripts/blas-core.sh
 cd build
 ctest --output-on-failure --parallel "$(nproc)" --timeout 1500

@@ -38,11 +38,17 @@ void add_element_forces(const Water& water, const Mesh& mesh, const std::vector<
 std::vector<double> pieces(const Water& water, Point2 a, Point2 b) {
     std::vector<double> t{0.0, 1.0};
     const double dx = b.x - a.x;
-    if (dx != 0.0)
-        for (const Point2& v : water.piezometric_line) {
-            const double s = (v.x - a.x) / dx;
+    if (dx != 0.0) {
+        // Only the line's vertices over the edge (x increasing: found by bisection, so a line of
+        // many thousand points costs no more per edge than one of three).
+        const std::vector<Point2>& line = water.piezometric_line;
+        const auto by_x = [](const Point2& p, double x) { return p.x < x; };
+        const auto first = std::lower_bound(line.begin(), line.end(), std::min(a.x, b.x), by_x);
+        for (auto v = first; v != line.end() && v->x <= std::max(a.x, b.x); ++v) {
+            const double s = (v->x - a.x) / dx;
             if (s > 0.0 && s < 1.0) t.push_back(s);
         }
+    }
     std::sort(t.begin(), t.end());
     // Within each piece the height of the line above the segment is linear: where it changes
     // sign, the water surface crosses the edge.
