@@ -20,26 +20,28 @@ ContactKinematics contact_kinematics(const Contact& c, const std::vector<Point2>
     // dn = ((P − A) × (B − A)) / l with l held constant over the step (Shi).
     k.normal << dy / l, -dx / l, (p.y - b.y) / l, (b.x - p.x) / l, (a.y - p.y) / l, (p.x - a.x) / l;
     k.shear << tx, ty, -(1.0 - k.xi) * tx, -(1.0 - k.xi) * ty, -k.xi * tx, -k.xi * ty;
-    double length = 0.0, equal = 0.0;
+    double length = 0.0, equal = 0.0, along = 0.0;
     for (int edge : {topology.edge_into[c.node], topology.edge_out_of[c.node]})
         if (edge >= 0) {
             const BoundaryEdge& n = topology.edges[edge];
-            const double h = std::hypot(nodes[n.to].x - nodes[n.from].x, nodes[n.to].y - nodes[n.from].y);
+            const double ex = nodes[n.to].x - nodes[n.from].x, ey = nodes[n.to].y - nodes[n.from].y;
+            const double h = std::hypot(ex, ey);
             equal += 0.5 * h;
             // A half-edge of a six-node edge gives h/3 to its corner end and 2h/3 to its midside
             // end; an edge of a three-node mesh h/2 to each.
             const int other = n.from == c.node ? n.to : n.from;
-            length += topology.midside_node[c.node] ? 2.0 * h / 3.0 : topology.midside_node[other] ? h / 3.0 : 0.5 * h;
+            const double part = topology.midside_node[c.node] ? 2.0 * h / 3.0 : topology.midside_node[other] ? h / 3.0 : 0.5 * h;
+            length += part;
+            // Strength acts over the faces in contact: at the end of a joint (where it meets the
+            // slope face or a tension crack) the vertex's other edge turns away from the edge it
+            // touches and bonds nothing. Within 20° of it counts (a polyline joint's kinks).
+            if (h > 0.0 && std::fabs(ex * ty - ey * tx) <= 0.34 * h) along += part;
         }
     k.share = equal > 0.0 ? length / equal : 1.0;
     // Two blocks meeting along a joint contact each other twice (the vertices of each against the
     // edges of the other), so each contact stands for half its vertex's share of the joint:
-    // cohesion and tensile strength are then counted once over the joint's length. (At a joint's
-    // end or a block corner the vertex's other edge turns away and still counts: about 5 % too
-    // much cohesion on Hoek & Bray's planar slope at 1.5 m elements. Counting only the edges
-    // along the touched one made the staged jointed tunnel collapse on a coarse mesh, so the
-    // correction waits for a contact formulation that is solved within the Newton iteration.)
-    k.length = 0.5 * length;
+    // cohesion and tensile strength are then counted once over the joint's length.
+    k.length = 0.5 * along;
     return k;
 }
 
