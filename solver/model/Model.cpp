@@ -28,7 +28,7 @@ double Water::level(double x) const {
     if (line.empty()) return -std::numeric_limits<double>::infinity();
     if (x <= line.front().x) return line.front().y;
     if (x >= line.back().x) return line.back().y;
-    // The first vertex beyond x (the reader keeps x strictly increasing).
+    // The first vertex beyond x (the model checker refuses lines whose x does not increase).
     const auto after = std::upper_bound(line.begin(), line.end(), x, [](double v, const Point2& q) { return v < q.x; });
     const Point2 a = *(after - 1), b = *after;
     return a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
