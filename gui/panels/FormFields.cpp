@@ -124,6 +124,7 @@ FormUnit form_unit(Quantity quantity)
     case Quantity::Stiffness: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "MN/m")), 1e6, 1e9, 3};
     case Quantity::Force: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m")), 1e3, 1e9, 3};
     case Quantity::Time: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "s")), 1.0, 1e6, 6};
+    case Quantity::Frequency: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "Hz")), 1.0, 1e6, 3};
     }
     return {QString(), 1.0, 1e9, 3};
 }

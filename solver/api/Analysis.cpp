@@ -96,6 +96,8 @@ struct Analysis::Impl {
     bool preprocessed_valid = false;            ///< preprocessed is of `model`
     PreprocessStage stage = PreprocessStage::Validate;
     std::vector<Diagnostic> read_diagnostics;  ///< warnings of reading the file
+    /// The model file read (empty: from text): record files are named relative to its folder.
+    std::string source = "model";
     std::vector<Diagnostic> diagnostics;
     std::atomic<bool> cancel{false};
 
@@ -133,6 +135,7 @@ Analysis Analysis::from_file(const std::string& path, const std::vector<std::str
     Analysis a(model_or_throw(r, path + ": the model cannot be read"));
     a.impl_->read_diagnostics = r.diagnostics;
     a.impl_->diagnostics = r.diagnostics;
+    a.impl_->source = path;
     return a;
 }
 
@@ -152,7 +155,7 @@ void Analysis::set_model(Model model) { impl_->changed(std::move(model)); }
 void Analysis::set(const std::vector<std::string>& overrides)
 {
     if (overrides.empty()) return;
-    const ReadResult r = read_model_text(write_model_text(impl_->model), overrides);
+    const ReadResult r = read_model_text(write_model_text(impl_->model), overrides, impl_->source);
     impl_->changed(model_or_throw(r, "the changes cannot be applied"));
 }
 

@@ -155,6 +155,140 @@ void check_water(Checker& c, const Model& m) {
         c.warning("/water", "the model has ground water but no gravity: the pore pressures act, the ground weighs nothing");
 }
 
+/// Length of the overlap of two segments lying on one line (0 when they do not share a line).
+double collinear_overlap(Point2 a, Point2 b, Point2 c, Point2 d, double tolerance) {
+    const double lx = b.x - a.x, ly = b.y - a.y, length = std::hypot(lx, ly);
+    if (!(length > 0.0)) return 0.0;
+    const double ux = lx / length, uy = ly / length;
+    auto off = [&](Point2 p) { return std::fabs((p.x - a.x) * uy - (p.y - a.y) * ux); };
+    if (off(c) > tolerance || off(d) > tolerance) return 0.0;
+    auto along = [&](Point2 p) { return (p.x - a.x) * ux + (p.y - a.y) * uy; };
+    const double lo = std::max(0.0, std::min(along(c), along(d))), hi = std::min(length, std::max(along(c), along(d)));
+    return std::max(0.0, hi - lo);
+}
+
+/// Median spacing of a record's times (s).
+double sampling_interval(const GroundMotion& g) {
+    std::vector<double> dt;
+    for (std::size_t k = 1; k < g.points.size(); ++k) dt.push_back(g.points[k][0] - g.points[k - 1][0]);
+    if (dt.empty()) return 0.0;
+    std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
+    return dt[dt.size() / 2];
+}
+
+/// Records, the base they shake, dashpots and pseudo-static loads (docs/model-format.md, "Earthquakes").
+void check_earthquake(Checker& c, const Model& m) {
+    for (std::size_t i = 0; i < m.ground_motions.size(); ++i) {
+        const GroundMotion& g = m.ground_motions[i];
+        const std::string path = "/ground_motions/" + std::to_string(i);
+        if (g.name.empty()) c.error(path + "/name", "a ground motion needs a name");
+        const std::string where = g.file.empty() ? path + "/points" : path + "/file";
+        if (g.points.size() < 2)
+            c.error(where, "an acceleration record needs at least two points (time, acceleration)");
+        for (std::size_t k = 0; k < g.points.size(); ++k) {
+            if (!std::isfinite(g.points[k][0]) || !std::isfinite(g.points[k][1])) {
+                c.error(where, "point " + std::to_string(k + 1) + " is not a finite number");
+                break;
+            }
+            if (k > 0 && !(g.points[k][0] > g.points[k - 1][0])) {
+                c.error(g.file.empty() ? where + "/" + std::to_string(k) : where,
+                        "times must increase: " + num(g.points[k][0]) + " s follows " + num(g.points[k - 1][0]) + " s");
+                break;
+            }
+        }
+        if (!std::isfinite(g.scale) || g.scale == 0.0) c.error(path + "/scale", "the scale must be a finite number other than 0");
+        double peak = 0.0;
+        for (const auto& q : g.points) peak = std::max(peak, std::fabs(q[1]));
+        const double peak_g = peak * std::fabs(g.scale) / (g.units == GroundMotion::Units::G ? 1.0 : standard_gravity);
+        if (std::isfinite(peak_g) && peak_g > 10.0)
+            c.error(where, "the peak acceleration is " + num(peak_g) + " g: beyond any earthquake (check \"units\": " +
+                               (g.units == GroundMotion::Units::G ? "the record is read in g" : "the record is read in m/s²") + ")");
+    }
+    const BaseMotion& b = m.base_motion;
+    if (b.present()) {
+        if (!has_dynamic_stage(m))
+            c.warning("/base_motion", "the base motion shakes only dynamic stages and this model has none (\"analysis\": {\"type\": \"dynamic\"})");
+        if (b.kind == BaseMotion::Kind::Rigid && m.fixed_points.empty() && m.rollers.empty())
+            c.error("/base_motion", "a rigid base moves the supports, and nothing is fixed: add rollers or fixed points along the base");
+        if (b.kind == BaseMotion::Kind::Compliant) {
+            c.point(b.from, "/base_motion/from");
+            c.point(b.to, "/base_motion/to");
+            if (std::hypot(b.to.x - b.from.x, b.to.y - b.from.y) == 0.0)
+                c.error("/base_motion", "the compliant base runs from a point to itself");
+            // The dashpots carry no static load: the weight must stand on supports in a stage before.
+            const bool gravity = m.gravity.x != 0.0 || m.gravity.y != 0.0;
+            if (gravity && stage_is_dynamic(m, 0))
+                c.error("/base_motion", "a compliant base cannot carry the model's weight from the start: let a first, static "
+                                        "stage stand on supports along the base and remove them in the dynamic stage (their "
+                                        "forces then act on the base; docs/model-format.md, \"Earthquakes\")");
+        }
+        // The record must be sampled finely enough by the time step.
+        for (int r : {b.x, b.y}) {
+            if (r < 0 || r >= static_cast<int>(m.ground_motions.size())) continue;
+            const GroundMotion& g = m.ground_motions[r];
+            const double interval = sampling_interval(g);
+            const int stages = std::max<int>(1, static_cast<int>(m.stages.size()));
+            for (int s = 0; s < stages; ++s) {
+                if (!stage_is_dynamic(m, s)) continue;
+                const AnalysisSettings& a = m.stages.empty() ? m.analysis : m.stages[s].analysis;
+                const std::string where = m.stages.empty() ? "/analysis/time_step" : "/stages/" + std::to_string(s) + "/analysis/time_step";
+                if (interval > 0.0 && a.time_step > 1.01 * interval)
+                    c.error(where, "the time step " + num(a.time_step) + " s is " + num(a.time_step / interval) +
+                                       " times the sampling interval of \"" + g.name + "\" (" + num(interval) +
+                                       " s): its shaking between samples would be skipped; use at most " + num(interval) + " s");
+            }
+        }
+    }
+    // Dashpots: on boundaries without supports, and with a time step the waves can be followed at.
+    std::vector<std::pair<std::string, std::array<Point2, 2>>> dashpots;
+    for (std::size_t i = 0; i < m.absorbing_boundaries.size(); ++i) {
+        const AbsorbingBoundary& a = m.absorbing_boundaries[i];
+        const std::string path = "/absorbing_boundaries/" + std::to_string(i);
+        c.point(a.from, path + "/from");
+        c.point(a.to, path + "/to");
+        if (std::hypot(a.to.x - a.from.x, a.to.y - a.from.y) == 0.0) c.error(path, "the boundary runs from a point to itself");
+        dashpots.push_back({path, {a.from, a.to}});
+    }
+    if (b.kind == BaseMotion::Kind::Compliant) dashpots.push_back({"/base_motion", {b.from, b.to}});
+    if (!dashpots.empty()) {
+        const auto box = m.bounds();
+        const double tolerance = 1e-6 * std::max(1.0, std::hypot(box[2] - box[0], box[3] - box[1]));
+        const int stages = std::max<int>(1, static_cast<int>(m.stages.size()));
+        for (int s = 0; s < stages; ++s) {
+            if (!stage_is_dynamic(m, s)) continue;
+            const std::vector<std::string> absent = m.stages.empty() ? std::vector<std::string>{} : items_absent(m, s);
+            for (const Roller& r : m.rollers) {
+                if (std::find(absent.begin(), absent.end(), r.name) != absent.end()) continue;
+                for (const auto& [path, seg] : dashpots)
+                    if (collinear_overlap(seg[0], seg[1], r.from, r.to, tolerance) > tolerance)
+                        c.error(path, "dashpots on a boundary that also has a fixed support (roller \"" + r.name + "\"" +
+                                          (m.stages.empty() ? std::string() : " in stage \"" + m.stages[s].name + "\"") +
+                                          "): a support reflects the waves the dashpots should let out; remove it in the dynamic stage");
+            }
+            // A wave should not cross an element in one step.
+            const AnalysisSettings& a = m.stages.empty() ? m.analysis : m.stages[s].analysis;
+            double fastest = 0.0;
+            for (const Material& mat : m.materials) fastest = std::max(fastest, shear_wave_speed(mat));
+            const double size = m.mesh.size > 0.0 ? m.mesh.size : std::hypot(box[2] - box[0], box[3] - box[1]) / 20.0;
+            if (fastest > 0.0 && size > 0.0 && a.time_step * fastest > size)
+                c.error(m.stages.empty() ? "/analysis/time_step" : "/stages/" + std::to_string(s) + "/analysis/time_step",
+                        "a shear wave (" + num(fastest) + " m/s) crosses " + num(a.time_step * fastest / size) +
+                            " elements of " + num(size) + " m in one time step of " + num(a.time_step) +
+                            " s: the waves the dashpots absorb are not followed; use at most " + num(size / fastest) + " s");
+        }
+    }
+    auto check_seismic = [&](const SeismicCoefficient& k, const std::string& path) {
+        if (!std::isfinite(k.kh) || std::fabs(k.kh) > 2.0) c.error(path + "/kh", "kh must lie between -2 and 2 (got " + num(k.kh) + ")");
+        if (!std::isfinite(k.kv) || std::fabs(k.kv) > 2.0) c.error(path + "/kv", "kv must lie between -2 and 2 (got " + num(k.kv) + ")");
+        if (k.present() && m.gravity.x == 0.0 && m.gravity.y == 0.0)
+            c.warning(path, "a seismic coefficient is a fraction of gravity, and the model has none: no load");
+    };
+    check_seismic(m.seismic_coefficient, "/seismic_coefficient");
+    for (std::size_t s = 0; s < m.stages.size(); ++s)
+        if (m.stages[s].seismic_coefficient)
+            check_seismic(*m.stages[s].seismic_coefficient, "/stages/" + std::to_string(s) + "/seismic_coefficient");
+}
+
 void check_geometry(Checker& c, const Model& m) {
     if (m.regions.empty()) c.error("/regions", "at least one region is required");
     for (std::size_t i = 0; i < m.regions.size(); ++i) {
@@ -419,6 +553,7 @@ void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics) {
     check_bolts(c, model);
     check_stages(c, model);
     check_water(c, model);
+    check_earthquake(c, model);
 }
 
 namespace {

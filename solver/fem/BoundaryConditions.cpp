@@ -197,6 +197,10 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
     }
     const double gravity_factor = load_factor(model, model.gravity_table, step, time);
     if (model.gravity.x != 0.0 || model.gravity.y != 0.0) {
+        // A pseudo-static earthquake load (seismic coefficients) is a fraction of the weight.
+        const double g = std::hypot(model.gravity.x, model.gravity.y);
+        const Point2 acceleration{model.gravity.x + model.seismic_coefficient.kh * g,
+                                  model.gravity.y + model.seismic_coefficient.kv * g};
         const Water& water = model.water;
         const int points = integration_points(mesh);
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -216,8 +220,8 @@ Eigen::VectorXd external_forces(const Model& model, const Mesh& mesh, const std:
             }
             const double mass = density * area / 3.0;
             for (int node : mesh.quadratic() ? mesh.midside[t] : tri) {
-                f[2 * node] += gravity_factor * mass * model.gravity.x;
-                f[2 * node + 1] += gravity_factor * mass * model.gravity.y;
+                f[2 * node] += gravity_factor * mass * acceleration.x;
+                f[2 * node + 1] += gravity_factor * mass * acceleration.y;
             }
         }
     }

@@ -53,8 +53,34 @@ void ElementAssembly::prepare_elements(const std::vector<Point2>& nodes) {
 
 void ElementAssembly::prepare(const std::vector<Point2>& nodes, double inertia) {
     inertia_ = inertia;
+    damping_mass_ = damping_stiffness_ = damping_rate_ = 0.0;
     if (quadratic_) prepare_elements<6>(nodes);
     else prepare_elements<3>(nodes);
+}
+
+void ElementAssembly::set_damping(double alpha, double beta, double rate, Eigen::VectorXd v_rest) {
+    damping_mass_ = alpha;
+    damping_stiffness_ = beta;
+    damping_rate_ = rate;
+    damping_rest_ = std::move(v_rest);
+}
+
+void ElementAssembly::add_rigid_body_inertia(const std::vector<Point2>& nodes, const Eigen::Vector2d& a,
+                                             Eigen::VectorXd& force) const {
+    const int n = nodes_per_element();
+    for (int e = 0; e < element_count(); ++e) {
+        if (!active(e)) continue;
+        const auto& t = mesh_->triangles[e];
+        const Point2 &p = nodes[t[0]], &q = nodes[t[1]], &r = nodes[t[2]];
+        const double area = 0.5 * ((q.x - p.x) * (r.y - p.y) - (r.x - p.x) * (q.y - p.y));
+        const double mass = model_->materials[mesh_->triangle_material[e]].density * area;
+        for (int i = 0; i < n; ++i) {
+            double row = 0.0;  // M·1: the node's share of the element's mass
+            for (int j = 0; j < n; ++j) row += quadratic_ ? Triangle6::mass(i, j) : Triangle3::mass(i, j);
+            force[2 * node(e, i)] -= mass * row * a.x();
+            force[2 * node(e, i) + 1] -= mass * row * a.y();
+        }
+    }
 }
 
 void ElementAssembly::add_inertia_load(const Eigen::VectorXd& velocity, const Eigen::VectorXd& acceleration,
@@ -138,13 +164,32 @@ int ElementAssembly::evaluate_element(int e, const Eigen::VectorXd& d, const Poi
             k->noalias() += w * g.B[q].transpose() * D * g.B[q];
         }
     }
-    const double mass = inertia_ > 0.0 ? inertia_ * model_->materials[material].density * g.area : 0.0;
+    // Rayleigh damping acts on the end-of-step velocity rate·d + rest.
+    const bool damped = damping_rate_ > 0.0 && (damping_mass_ > 0.0 || damping_stiffness_ > 0.0);
+    typename Element::Forces rest = Element::Forces::Zero();
+    if (damped)
+        for (int a = 0; a < N; ++a) {
+            rest[2 * a] = damping_rest_[2 * node(e, a)];
+            rest[2 * a + 1] = damping_rest_[2 * node(e, a) + 1];
+        }
+    if (damped && damping_stiffness_ > 0.0) {
+        // βK·v as a viscous stress β·D·ε̇ at every point (the elastic D, whatever the material does).
+        const typename Element::Forces velocity = damping_rate_ * de + rest;
+        for (int q = 0; q < Element::points; ++q) {
+            const double w = g.weight(q);
+            f.noalias() += w * damping_stiffness_ * g.B[q].transpose() * (D * (g.B[q] * velocity));
+            if (k) k->noalias() += w * damping_stiffness_ * damping_rate_ * g.B[q].transpose() * D * g.B[q];
+        }
+    }
+    const double density = model_->materials[material].density * g.area;
+    const double mass = (inertia_ + (damped ? damping_mass_ * damping_rate_ : 0.0)) * density;
+    const double rest_mass = damped ? damping_mass_ * density : 0.0;
     if (mass > 0.0) {
         for (int a = 0; a < N; ++a)
             for (int b = 0; b < N; ++b) {
                 const double m = mass * Element::mass(a, b);
-                f[2 * a] += m * de[2 * b];
-                f[2 * a + 1] += m * de[2 * b + 1];
+                f[2 * a] += m * de[2 * b] + rest_mass * Element::mass(a, b) * rest[2 * b];
+                f[2 * a + 1] += m * de[2 * b + 1] + rest_mass * Element::mass(a, b) * rest[2 * b + 1];
                 if (k) {
                     (*k)(2 * a, 2 * b) += m;
                     (*k)(2 * a + 1, 2 * b + 1) += m;

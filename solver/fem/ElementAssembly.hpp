@@ -54,6 +54,14 @@ public:
     /// (0: none) for this try of the step.
     void prepare(const std::vector<Point2>& nodes, double inertia);
 
+    /// Rayleigh damping C = αM + βK (K elastic) for this try, after prepare(): the forces
+    /// C·(rate·d + v_rest) — the end-of-step velocity of Newmark — and the matrix rate·C.
+    void set_damping(double alpha, double beta, double rate, Eigen::VectorXd v_rest);
+
+    /// Adds −M·a to `force` for every node moving with acceleration a (the inertial load of a
+    /// model analysed relative to a shaken rigid base); coordinates `nodes`.
+    void add_rigid_body_inertia(const std::vector<Point2>& nodes, const Eigen::Vector2d& a, Eigen::VectorXd& force) const;
+
     /// Inertia forces M·(v/(βΔt) + (½ − β)/β·a) of a dynamic step (constant over the step).
     void add_inertia_load(const Eigen::VectorXd& velocity, const Eigen::VectorXd& acceleration, double beta,
                           double dt, Eigen::VectorXd& force) const;
@@ -114,6 +122,8 @@ private:
     mutable ChunkBuffers<3> linear_buffers_;
     mutable ChunkBuffers<6> quadratic_buffers_;
     double inertia_ = 0.0;
+    double damping_mass_ = 0.0, damping_stiffness_ = 0.0, damping_rate_ = 0.0;  ///< see set_damping
+    Eigen::VectorXd damping_rest_;
     std::vector<char> active_;  ///< see set_active()
 };
 

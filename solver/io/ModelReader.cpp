@@ -1,5 +1,6 @@
 #include "io/ModelReader.hpp"
 
+#include "io/AccelerationRecord.hpp"
 #include "io/JsonOverrides.hpp"
 #include "Version.hpp"
 #include "material/MaterialLaws.hpp"
@@ -15,6 +16,7 @@
 #include <cstdlib>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -711,6 +713,101 @@ Water parse_water(Parser& p, const json& o, const std::string& path) {
     return w;
 }
 
+/// A "seismic_coefficient" object (the model's or a stage's).
+SeismicCoefficient parse_seismic(Parser& p, const json& o, const std::string& path) {
+    SeismicCoefficient k;
+    if (!p.is_object(o, path)) return k;
+    p.check_keys(o, path, {"kh", "kv"});
+    k.kh = p.number(o, path, "kh", 0.0);
+    k.kv = p.number(o, path, "kv", 0.0);
+    return k;
+}
+
+/// "ground_motions", "base_motion" and "absorbing_boundaries" (docs/model-format.md,
+/// "Earthquakes"). Files are read later (load_ground_motion_files).
+void parse_earthquake(Parser& p, const json& root, Model& m) {
+    const json& motions = p.array(root, "", "ground_motions");
+    const auto names = collect_names(p, motions, "/ground_motions");
+    for (std::size_t i = 0; i < motions.size(); ++i) {
+        const std::string path = "/ground_motions/" + std::to_string(i);
+        const json& o = motions[i];
+        GroundMotion g;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "file", "points", "units", "scale", "baseline_correction"});
+            g.name = p.string(o, path, "name", std::nullopt);
+            if (o.contains("file") == o.contains("points"))
+                p.error(path, "give either \"file\" (a CSV or .AT2 record) or \"points\" ([[t, a], ...]), one of them");
+            g.file = p.string(o, path, "file", std::string());
+            if (o.contains("file") && g.file.empty()) p.error(path + "/file", "must name a file");
+            const json& points = p.array(o, path, "points");
+            for (std::size_t k = 0; k < points.size(); ++k) {
+                const Point2 q = p.point_value(points[k], path + "/points/" + std::to_string(k));
+                g.points.push_back({q.x, q.y});
+            }
+            const std::string units = p.string(o, path, "units", std::string("g"));
+            if (units == "g") g.units = GroundMotion::Units::G;
+            else if (units == "m/s2") g.units = GroundMotion::Units::MetresPerSecondSquared;
+            else p.error(path + "/units", "must be \"g\" or \"m/s2\", got \"" + units + "\"");
+            g.scale = p.number(o, path, "scale", 1.0);
+            g.baseline_correction = p.boolean(o, path, "baseline_correction", true);
+        }
+        m.ground_motions.push_back(std::move(g));
+    }
+    if (root.contains("base_motion") && p.is_object(root.at("base_motion"), "/base_motion")) {
+        const json& o = root.at("base_motion");
+        const std::string path = "/base_motion";
+        p.check_keys(o, path, {"type", "x", "y", "from", "to"});
+        BaseMotion& b = m.base_motion;
+        const std::string type = p.string(o, path, "type", std::string("rigid"));
+        if (type == "rigid") b.kind = BaseMotion::Kind::Rigid;
+        else if (type == "compliant") b.kind = BaseMotion::Kind::Compliant;
+        else p.error(path + "/type", "must be \"rigid\" or \"compliant\", got \"" + type + "\"");
+        b.x = optional_reference(p, o, path, "x", names, "ground motion");
+        b.y = optional_reference(p, o, path, "y", names, "ground motion");
+        if (!o.contains("x") && !o.contains("y"))
+            p.error(path, "name the ground motion of \"x\" (horizontal), \"y\" (vertical) or both");
+        if (b.kind == BaseMotion::Kind::Compliant) {
+            b.from = p.point(o, path, "from");
+            b.to = p.point(o, path, "to");
+        } else if (o.contains("from") || o.contains("to")) {
+            p.error(path, "a rigid base moves every support: \"from\" and \"to\" belong to a compliant base");
+        }
+    }
+    const json& absorbing = p.array(root, "", "absorbing_boundaries");
+    collect_names(p, absorbing, "/absorbing_boundaries");
+    for (std::size_t i = 0; i < absorbing.size(); ++i) {
+        const std::string path = "/absorbing_boundaries/" + std::to_string(i);
+        const json& o = absorbing[i];
+        AbsorbingBoundary a;
+        if (p.is_object(o, path)) {
+            p.check_keys(o, path, {"name", "from", "to"});
+            a.name = p.string(o, path, "name", "absorbing boundary " + std::to_string(i + 1));
+            a.from = p.point(o, path, "from");
+            a.to = p.point(o, path, "to");
+        }
+        m.absorbing_boundaries.push_back(a);
+    }
+    if (root.contains("seismic_coefficient"))
+        m.seismic_coefficient = parse_seismic(p, root.at("seismic_coefficient"), "/seismic_coefficient");
+}
+
+/// Reads the record files the ground motions name, relative to `directory` (the model file's).
+void load_ground_motion_files(Model& m, const std::string& directory, std::vector<Diagnostic>& diagnostics) {
+    namespace fs = std::filesystem;
+    for (std::size_t i = 0; i < m.ground_motions.size(); ++i) {
+        GroundMotion& g = m.ground_motions[i];
+        if (g.file.empty()) continue;
+        fs::path file(g.file);
+        if (file.is_relative() && !directory.empty()) file = fs::path(directory) / file;
+        try {
+            AccelerationRecord r = read_acceleration_record(file.string());
+            g.points = std::move(r.points);
+        } catch (const std::exception& e) {
+            diagnostics.push_back({Diagnostic::Severity::Error, "/ground_motions/" + std::to_string(i) + "/file", e.what()});
+        }
+    }
+}
+
 void parse_analysis(Parser& p, const json& root, Model& m) {
     if (root.contains("analysis")) parse_analysis_object(p, root.at("analysis"), "/analysis", m.analysis);
 }
@@ -767,7 +864,8 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
         st.analysis = m.analysis;
         if (p.is_object(o, path)) {
             p.check_keys(o, path, {"name", "excavate", "activate", "materials", "install", "remove", "analysis",
-                                   "release", "target_ratio", "reset_displacements", "water"});
+                                   "release", "target_ratio", "reset_displacements", "water",
+                                   "seismic_coefficient"});
             st.name = p.string(o, path, "name", std::nullopt);
             st.excavate = region_indices(o, path, "excavate");
             st.activate = region_indices(o, path, "activate");
@@ -798,6 +896,8 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
             st.target_ratio = p.number(o, path, "target_ratio", 0.0);
             st.reset_displacements = p.boolean(o, path, "reset_displacements", false);
             if (o.contains("water")) st.water = parse_water(p, o.at("water"), path + "/water");
+            if (o.contains("seismic_coefficient"))
+                st.seismic_coefficient = parse_seismic(p, o.at("seismic_coefficient"), path + "/seismic_coefficient");
         }
         m.stages.push_back(st);
     }
@@ -872,7 +972,8 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
     p.check_keys(root, "", {"format", "version", "name", "description", "materials", "joint_materials",
                             "default_joint_material", "regions", "joints", "joint_sets", "load_tables",
                             "fixed_points", "rollers", "point_loads", "edge_pressures", "gravity",
-                            "gravity_table", "initial_stress", "water", "measurement_points", "mesh", "analysis", "bolts", "stages"});
+                            "gravity_table", "initial_stress", "water", "measurement_points", "mesh", "analysis", "bolts", "stages",
+                            "ground_motions", "base_motion", "absorbing_boundaries", "seismic_coefficient"});
     const std::string format = p.string(root, "", "format", std::nullopt);
     if (!format.empty() && format != model_format_name)
         p.error("/format", "must be \"" + std::string(model_format_name) + "\", got \"" + format + "\"");
@@ -904,6 +1005,9 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
     if (root.contains("water")) m.water = parse_water(p, root.at("water"), "/water");
     parse_bolts(p, root, m);
     parse_stages(p, root, m, material_names, table_names);
+    parse_earthquake(p, root, m);
+    if (!has_errors(result.diagnostics))
+        load_ground_motion_files(m, std::filesystem::path(source).parent_path().string(), result.diagnostics);
 
     if (has_errors(result.diagnostics)) return result;
     result.model = std::move(m);

@@ -241,6 +241,44 @@ json to_json(const Model& m) {
 
     if (m.water.present()) root["water"] = water_json(m.water);
 
+    if (!m.ground_motions.empty()) {
+        json list = json::array();
+        for (const GroundMotion& g : m.ground_motions) {
+            json o{{"name", g.name}};
+            if (!g.file.empty()) {
+                o["file"] = g.file;
+            } else {
+                json points = json::array();
+                for (const auto& q : g.points) points.push_back({q[0], q[1]});
+                o["points"] = std::move(points);
+            }
+            o["units"] = g.units == GroundMotion::Units::G ? "g" : "m/s2";
+            if (g.scale != 1.0) o["scale"] = g.scale;
+            if (!g.baseline_correction) o["baseline_correction"] = false;
+            list.push_back(std::move(o));
+        }
+        root["ground_motions"] = std::move(list);
+    }
+    if (m.base_motion.present()) {
+        const BaseMotion& b = m.base_motion;
+        json o{{"type", b.kind == BaseMotion::Kind::Rigid ? "rigid" : "compliant"}};
+        if (b.x >= 0) o["x"] = name_of(m.ground_motions, b.x, "ground motion");
+        if (b.y >= 0) o["y"] = name_of(m.ground_motions, b.y, "ground motion");
+        if (b.kind == BaseMotion::Kind::Compliant) {
+            o["from"] = point(b.from);
+            o["to"] = point(b.to);
+        }
+        root["base_motion"] = std::move(o);
+    }
+    if (!m.absorbing_boundaries.empty()) {
+        json list = json::array();
+        for (const AbsorbingBoundary& a : m.absorbing_boundaries)
+            list.push_back(json{{"name", a.name}, {"from", point(a.from)}, {"to", point(a.to)}});
+        root["absorbing_boundaries"] = std::move(list);
+    }
+    if (m.seismic_coefficient.present())
+        root["seismic_coefficient"] = json{{"kh", m.seismic_coefficient.kh}, {"kv", m.seismic_coefficient.kv}};
+
     if (!m.measurement_points.empty()) {
         json list = json::array();
         for (const MeasurementPoint& p : m.measurement_points)
@@ -313,6 +351,8 @@ json to_json(const Model& m) {
             if (st.target_ratio > 0.0) o["target_ratio"] = st.target_ratio;
             if (st.reset_displacements) o["reset_displacements"] = true;
             if (st.water) o["water"] = water_json(*st.water);
+            if (st.seismic_coefficient)
+                o["seismic_coefficient"] = json{{"kh", st.seismic_coefficient->kh}, {"kv", st.seismic_coefficient->kv}};
             list.push_back(std::move(o));
         }
         root["stages"] = std::move(list);

@@ -45,6 +45,36 @@ const Water& water_of_stage(const Model& model, int stage) {
     return model.water;
 }
 
+double shear_wave_speed(const Material& m) {
+    const double shear_modulus = m.young_modulus / (2.0 * (1.0 + m.poisson_ratio));
+    return m.density > 0.0 && shear_modulus > 0.0 ? std::sqrt(shear_modulus / m.density) : 0.0;
+}
+
+double pressure_wave_speed(const Material& m) {
+    const double nu = m.poisson_ratio;
+    const double constrained = m.young_modulus * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    return m.density > 0.0 && constrained > 0.0 ? std::sqrt(constrained / m.density) : 0.0;
+}
+
+bool stage_is_dynamic(const Model& model, int stage) {
+    const AnalysisSettings& a = model.stages.empty() ? model.analysis : model.stages[static_cast<std::size_t>(stage)].analysis;
+    return a.kind == AnalysisSettings::Kind::Dynamic;
+}
+
+bool has_dynamic_stage(const Model& model) {
+    if (model.stages.empty()) return stage_is_dynamic(model, 0);
+    for (std::size_t s = 0; s < model.stages.size(); ++s)
+        if (stage_is_dynamic(model, static_cast<int>(s))) return true;
+    return false;
+}
+
+const SeismicCoefficient& seismic_of_stage(const Model& model, int stage) {
+    for (int k = std::min(stage, static_cast<int>(model.stages.size()) - 1); k >= 0; --k)
+        if (model.stages[static_cast<std::size_t>(k)].seismic_coefficient)
+            return *model.stages[static_cast<std::size_t>(k)].seismic_coefficient;
+    return model.seismic_coefficient;
+}
+
 bool has_water(const Model& model) {
     if (model.water.present()) return true;
     for (const Stage& st : model.stages)

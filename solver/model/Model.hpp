@@ -177,6 +177,51 @@ struct Water {
     double pore_pressure(Point2 p) const;
 };
 
+/// An earthquake acceleration record (one component): a two-column CSV file, a PEER NGA `.AT2`
+/// file or points given in the model. The reader loads a file's points (ModelReader.hpp); the
+/// writer writes the file's name back, not its points.
+struct GroundMotion {
+    enum class Units { G, MetresPerSecondSquared };
+    std::string name;
+    std::string file;  ///< as given in the model (relative to the model file's folder); empty: `points`
+    /// (time s, acceleration in `units`) before scaling: the file's or the model's points.
+    std::vector<std::array<double, 2>> points;
+    Units units = Units::G;
+    double scale = 1.0;  ///< factor on the accelerations (a record scaled to a design peak)
+    /// A linear correction of the acceleration, a0 + a1·t, chosen so that the base ends at rest
+    /// where it began: the integrated record does not drift (docs/model-format.md, "Earthquakes").
+    bool baseline_correction = true;
+};
+
+/// How an earthquake enters the model.
+/// Rigid: the supports move together with the record (a rigid base, a shaking table). The
+/// analysis runs relative to them: every block feels the inertial body force −m·a(t) and the
+/// displacements are those relative to the base, which is the permanent displacement engineers ask for.
+/// Compliant: the boundary [from, to] is not supported but carries Lysmer–Kuhlemeyer dashpots
+/// and the input stress 2ρVs·v(t) (horizontal) and 2ρVp·v(t) (vertical), with v the record's
+/// velocity: the upward-travelling wave enters and the waves the model sends down leave.
+struct BaseMotion {
+    enum class Kind { None, Rigid, Compliant };
+    Kind kind = Kind::None;
+    int x = -1, y = -1;  ///< indices into Model::ground_motions (−1: no motion in that direction)
+    Point2 from, to;     ///< compliant base: the boundary segment
+    bool present() const { return kind != Kind::None; }
+};
+
+/// Viscous (Lysmer–Kuhlemeyer) dashpots on the model boundary along [from, to]: normal ρVp,
+/// shear ρVs of the material beside each edge, so that waves leave instead of reflecting.
+struct AbsorbingBoundary {
+    std::string name;
+    Point2 from, to;
+};
+
+/// A pseudo-static earthquake load: every block carries kh·g horizontally (+x for kh > 0) and
+/// kv·g vertically (+y for kv > 0) per unit mass, with g the magnitude of gravity.
+struct SeismicCoefficient {
+    double kh = 0.0, kv = 0.0;
+    bool present() const { return kh != 0.0 || kv != 0.0; }
+};
+
 /// A named point whose displacement history is recorded.
 struct MeasurementPoint {
     std::string name;
@@ -249,6 +294,15 @@ struct AnalysisSettings {
     /// the iteration where much of the ground yields (docs/plasticity.md).
     enum class NonAssociatedFlow { Davis, Direct };
     NonAssociatedFlow non_associated_flow = NonAssociatedFlow::Davis;
+    /// Newmark's γ of the dynamic analysis (β = (γ + ½)²/4): 0.7 damps the highest frequencies
+    /// (run/Newmark.hpp), ½ is the average acceleration rule with no numerical damping.
+    double newmark_gamma = 0.7;
+    /// Rayleigh damping C = αM + βK: `damping_ratio` of critical at `damping_frequency` (Hz),
+    /// there its least (α = ξω, β = ξ/ω), or between it and `damping_frequency_2` (the ratio
+    /// at both). 0: none.
+    double damping_ratio = 0.0;
+    double damping_frequency = 1.0;
+    double damping_frequency_2 = 0.0;
 };
 
 /// "davis" or "direct": `non_associated_flow` in the model file.
@@ -296,6 +350,8 @@ struct Stage {
     /// Ground water from this stage on (drawdown, dewatering, a rising reservoir); none: as the
     /// stage before (the model's `water` for the first). An empty line makes the ground dry.
     std::optional<Water> water;
+    /// Pseudo-static earthquake load from this stage on; none: as the stage before.
+    std::optional<SeismicCoefficient> seismic_coefficient;
 
     /// Fraction of the stage's out-of-balance force released after `s` (fractional) stage steps.
     double released(double s, const std::vector<LoadTable>& tables) const;
@@ -321,6 +377,12 @@ struct Model {
     int gravity_table = -1;
     InitialStress initial_stress;
     Water water;                      ///< ground water before any stage changes it
+    std::vector<GroundMotion> ground_motions;
+    /// The earthquake of the dynamic stages: its record time 0 is the start of the first dynamic
+    /// stage (of the run without stages).
+    BaseMotion base_motion;
+    std::vector<AbsorbingBoundary> absorbing_boundaries;
+    SeismicCoefficient seismic_coefficient;  ///< before any stage changes it
     std::vector<MeasurementPoint> measurement_points;
     MeshControls mesh;
     AnalysisSettings analysis;
@@ -343,6 +405,18 @@ const Water& water_of_stage(const Model& model, int stage);
 
 /// Whether the model has ground water in any stage (results then carry pore pressures).
 bool has_water(const Model& model);
+
+/// Speeds of shear and pressure waves in a material (m/s; plane strain, its E, ν and density).
+double shear_wave_speed(const Material& m);
+double pressure_wave_speed(const Material& m);
+
+/// Whether the analysis of stage `stage` (the model's without stages) is dynamic, and whether
+/// any is.
+bool stage_is_dynamic(const Model& model, int stage);
+bool has_dynamic_stage(const Model& model);
+
+/// The pseudo-static load while stage `stage` runs (as water_of_stage).
+const SeismicCoefficient& seismic_of_stage(const Model& model, int stage);
 
 /// JSON pointer of a joint: "/joints/i" for explicit joints, "/joint_sets/k" for generated ones.
 std::string joint_path(const Model& model, int joint);

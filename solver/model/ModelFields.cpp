@@ -112,6 +112,23 @@ const std::vector<RecordField<AnalysisSettings>>& analysis_fields()
           Quantity::Ratio, defaults.factor_tolerance, above(0.0), Bound{0.1, true}, 0.0, nullptr,
           MCDDA_TRANSLATABLE("ModelFields", "Strength reduction: the search for the factor of safety stops once the factors that stand and that do not differ by less than this fraction")},
          &AnalysisSettings::factor_tolerance},
+        {{"newmark_gamma", "Newmark gamma", MCDDA_TRANSLATABLE("ModelFields", "Newmark γ"), Quantity::Ratio,
+          defaults.newmark_gamma, Bound{0.5, true}, Bound{1.0, true}, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Dynamic analysis: Newmark's γ (β = (γ + ½)²/4). 0.7 damps the highest frequencies; 0.5 adds no numerical damping")},
+         &AnalysisSettings::newmark_gamma},
+        {{"damping_ratio", "damping ratio", MCDDA_TRANSLATABLE("ModelFields", "Damping ratio"), Quantity::Ratio,
+          defaults.damping_ratio, from(0.0), Bound{1.0, false}, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Dynamic analysis: Rayleigh damping as a fraction of critical damping (0: none)")},
+         &AnalysisSettings::damping_ratio},
+        {{"damping_frequency", "damping frequency", MCDDA_TRANSLATABLE("ModelFields", "Damping frequency"),
+          Quantity::Frequency, defaults.damping_frequency, above(0.0), std::nullopt, 0.0, nullptr,
+          MCDDA_TRANSLATABLE("ModelFields", "Frequency at which the Rayleigh damping has the damping ratio (its least when no second frequency is given)")},
+         &AnalysisSettings::damping_frequency},
+        {{"damping_frequency_2", "second damping frequency", MCDDA_TRANSLATABLE("ModelFields", "Second damping frequency"),
+          Quantity::Frequency, defaults.damping_frequency_2, from(0.0), std::nullopt, 0.0,
+          MCDDA_TRANSLATABLE("ModelFields", "none"),
+          MCDDA_TRANSLATABLE("ModelFields", "A second frequency with the same damping ratio (less damping between the two); 0: one frequency")},
+         &AnalysisSettings::damping_frequency_2},
     };
     return fields;
 }
@@ -147,6 +164,7 @@ std::string value_text(Quantity quantity, double model_value)
     case Quantity::Stiffness:
     case Quantity::Force: out << " N/m"; break;
     case Quantity::Time: out << " s"; break;
+    case Quantity::Frequency: out << " Hz"; break;
     }
     return out.str();
 }

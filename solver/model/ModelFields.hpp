@@ -30,6 +30,7 @@ enum class Quantity {
     Stiffness,  ///< N/m per metre of model thickness
     Force,      ///< N/m per metre of model thickness
     Time,       ///< s
+    Frequency,  ///< Hz
 };
 
 /// One end of the values a field may take.

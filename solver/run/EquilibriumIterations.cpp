@@ -43,6 +43,7 @@ Eigen::VectorXd Simulation::residual(const Eigen::VectorXd& d, const Eigen::Vect
     Eigen::VectorXd r = loads - internal;
     contacts.add_forces(d, r);
     for (const BoltLink& b : bolts) b.add_forces(d, r);
+    if (viscous_try_) dashpots_.add_forces(d, velocity_rate_, velocity_rest_, incident_, r);
     if (internal_forces) *internal_forces = std::move(internal);
     timings_.assembly += seconds_since(t0);
     return r;
@@ -77,6 +78,13 @@ bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, con
     for (std::size_t i = 0; i < bolts.size(); ++i) {
         const Eigen::Matrix<double, 12, 12> kb = bolts[i].matrix();
         system_.add(elements + static_cast<int>(contacts.size() + i), kb.data());
+    }
+    if (viscous_try_) {
+        const int first = elements + static_cast<int>(contacts.size() + bolts.size());
+        for (std::size_t i = 0; i < dashpots_.dashpots().size(); ++i) {
+            const Eigen::Matrix2d c = velocity_rate_ * dashpots_.dashpots()[i].c;
+            system_.add(first + static_cast<int>(i), c.data());
+        }
     }
     timings_.assembly += seconds_since(t0);
     // An elastic matrix may keep a held elastic factor (of the last step's geometry, or of other

@@ -35,11 +35,12 @@ Eigen::VectorXd Simulation::prepare_try(const Eigen::VectorXd& external, double 
     bolt_broken_try_.assign(base_model_.bolts.size(), 0);
     attempt.bolts = bolt_links();
     rebuild_pattern_if_needed(attempt.contacts, attempt.bolts);
-    const double beta = newmark_for(state_.step).beta;
+    const double beta = newmark_for(state_.step, model_.analysis.newmark_gamma).beta;
     // Shi's static DDA keeps the mass term M/(βΔt²) (velocities reset every step): it holds
     // blocks that only contacts restrain while they settle. A small-strain static analysis is a
     // pure equilibrium problem: no load may be carried by inertia there.
     elements_.prepare(element_nodes(), is_equilibrium_only() ? 0.0 : 1.0 / (beta * dt * dt));
+    prepare_damping(dt);
     Eigen::VectorXd loads = external;
     if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic)
         elements_.add_inertia_load(state_.velocity, state_.acceleration, beta, dt, loads);
@@ -67,6 +68,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
         loads += shift;
     }
     open_close(d, loads, shift, set, attempt);
+    viscous_try_ = false;
     attempt.contacts = set.contacts();
     return attempt;
 }

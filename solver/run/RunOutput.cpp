@@ -273,6 +273,10 @@ void RunOutput::record_history(const Simulation& sim) {
         for (const Roller& r : model.rollers)
             if (r.moves()) row << "," << r.name << ":ux," << r.name << ":uy," << r.name << ":fx," << r.name << ":fy";
         for (const Bolt& b : sim.full_model().bolts) row << "," << b.name << ":force";
+        if (has_dynamic_stage(sim.full_model()))
+            for (const MeasurementPoint& m : model.measurement_points)
+                row << "," << m.name << ":vx," << m.name << ":vy," << m.name << ":ax," << m.name << ":ay";
+        if (sim.full_model().base_motion.present()) row << ",base:ax,base:ay,base:vx,base:vy,base:ux,base:uy";
         row << "\n";
         header_written_ = true;
     }
@@ -289,6 +293,18 @@ void RunOutput::record_history(const Simulation& sim) {
             << "," << f.x << "," << f.y;
     }
     for (double force : s.bolt_force) row << "," << force;
+    // Shaking: velocities (relative to a rigid base, like the displacements) and absolute
+    // accelerations (what an accelerometer records), then the base's own motion.
+    const Simulation::BaseState base = sim.base_state(s.time);
+    if (has_dynamic_stage(sim.full_model())) {
+        const Eigen::Vector2d frame = sim.relative_to_base() ? base.acceleration : Eigen::Vector2d::Zero();
+        for (int node : sim.boundary_conditions().measurement_nodes)
+            row << "," << s.velocity[2 * node] << "," << s.velocity[2 * node + 1] << ","
+                << s.acceleration[2 * node] + frame.x() << "," << s.acceleration[2 * node + 1] + frame.y();
+    }
+    if (sim.full_model().base_motion.present())
+        row << "," << base.acceleration.x() << "," << base.acceleration.y() << "," << base.velocity.x() << ","
+            << base.velocity.y() << "," << base.displacement.x() << "," << base.displacement.y();
     row << "\n";
     // One write and a flush per row: a run that stops leaves whole rows only.
     history_ << row.str() << std::flush;
@@ -312,6 +328,31 @@ void RunOutput::record_trial(const Simulation& sim, const StrengthTrial& t, cons
 }
 
 namespace {
+
+/// What the shaking left: displacements since the first dynamic stage began, relative to the
+/// base (a rigid base's analysis is relative already; a compliant base's mean is taken off).
+nlohmann::json permanent_displacement_of(const Simulation& sim) {
+    const Eigen::VectorXd u = sim.displacement_since_shaking();
+    nlohmann::json j;
+    double largest = 0.0;
+    std::size_t at = 0;
+    for (Eigen::Index n = 0; 2 * n + 1 < u.size(); ++n) {
+        const double size = std::hypot(u[2 * n], u[2 * n + 1]);
+        if (size > largest) {
+            largest = size;
+            at = static_cast<std::size_t>(n);
+        }
+    }
+    j["largest"] = largest;  // m
+    j["at"] = u.size() ? nlohmann::json::array({sim.mesh().nodes[at].x, sim.mesh().nodes[at].y}) : nlohmann::json::array();
+    nlohmann::json points = nlohmann::json::object();
+    const auto& nodes = sim.boundary_conditions().measurement_nodes;
+    for (std::size_t i = 0; i < nodes.size() && i < sim.full_model().measurement_points.size(); ++i)
+        points[sim.full_model().measurement_points[i].name] = {u[2 * nodes[i]], u[2 * nodes[i] + 1]};
+    j["points"] = std::move(points);
+    j["relative_to"] = "base";
+    return j;
+}
 
 nlohmann::json stages_of(const Simulation& sim) {
     nlohmann::json stages = nlohmann::json::array();
@@ -411,6 +452,7 @@ void RunOutput::write_summary(const Simulation* sim, RunStatus status, const std
         if (!sim->full_model().bolts.empty()) j["bolts"] = bolts_of(*sim);
         add_timings(*sim, j);
         if (sim->collapse()) j["collapse"] = collapse_of(*sim);
+        if (sim->full_model().base_motion.present()) j["permanent_displacement"] = permanent_displacement_of(*sim);
         add_study_values(*sim, j);
     }
     if (factor) j["factor_of_safety"] = factor_of_safety_of(*factor);

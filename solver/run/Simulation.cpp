@@ -83,7 +83,9 @@ Simulation::Simulation(const Preprocessed& p, double strength_factor)
     set_material_scales(all);
     initial_state();
     anchor_bolts();
+    set_up_shaking();
     if (base_model_.stages.empty()) {
+        set_stage_dashpots();
         stages_.push_back({model_.name.empty() ? std::string("analysis") : model_.name, model_.analysis.steps});
         stages_.front().started = true;
         for (std::size_t i = 0; i < model_.bolts.size(); ++i) state_.bolt_force[i] = model_.bolts[i].pretension;
@@ -192,10 +194,11 @@ void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts,
         const BoundaryEdge& e = topology_.edges[c.edge];
         contact_groups.push_back(coupling({c.node, e.from, e.to}));
     }
-    // Bolts come after the contacts (group elements + contacts + i).
+    // Bolts come after the contacts (group elements + contacts + i), dashpots after the bolts.
     for (const BoltLink& b : bolts)
         contact_groups.push_back(
             coupling({b.nodes[0], b.nodes[1], b.nodes[2], b.nodes[3], b.nodes[4], b.nodes[5]}));
+    for (const ViscousBoundary::Dashpot& d : dashpots_.dashpots()) contact_groups.push_back(coupling({d.node}));
     // Contacts come and go and move between neighbouring edges; as long as the pattern already
     // holds their couplings only the slots change and CHOLMOD's symbolic analysis is kept.
     if (!pattern_stale_ && system_.group_count() >= elements && system_.equations() == bc_.equation_count &&
@@ -304,7 +307,7 @@ void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<C
     state_.displacement += d;
     if (model_.analysis.kind == AnalysisSettings::Kind::Dynamic) {
         // Newmark: a1 from the increment, then v1; Shi's scheme is the case β = ½, γ = 1.
-        const auto [beta, gamma] = newmark_for(state_.step);
+        const auto [beta, gamma] = newmark_for(state_.step, model_.analysis.newmark_gamma);
         const Eigen::VectorXd a1 = (d - dt * state_.velocity - dt * dt * (0.5 - beta) * state_.acceleration) /
                                    (beta * dt * dt);
         state_.velocity = model_.analysis.dynamic_ratio *

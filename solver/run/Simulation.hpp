@@ -33,10 +33,12 @@
 #include "fem/BoundaryConditions.hpp"
 #include "fem/MeshTopology.hpp"
 #include "fem/PlaneStrain.hpp"
+#include "fem/ViscousBoundary.hpp"
 #include "linalg/SymmetricSystem.hpp"
 #include "fem/ElementAssembly.hpp"
 #include "linalg/AndersonMixing.hpp"
 #include "run/ConvergenceMonitor.hpp"
+#include "run/GroundShaking.hpp"
 #include "run/Newmark.hpp"
 
 #include <Eigen/Dense>
@@ -224,6 +226,20 @@ public:
     /// current stage's water, weighing with gravity's load factor.
     std::vector<double> pore_pressures() const;
 
+    /// The earthquake's base motion at analysis time `time` (m/s², m/s, m; x and y): the
+    /// record's, from the start of the first dynamic stage; zero without a base motion.
+    struct BaseState {
+        Eigen::Vector2d acceleration = Eigen::Vector2d::Zero(), velocity = Eigen::Vector2d::Zero(),
+                        displacement = Eigen::Vector2d::Zero();
+    };
+    BaseState base_state(double time) const;
+    /// A rigid base: the analysis runs relative to it (displacements and velocities relative,
+    /// accelerations absolute once the base's is added).
+    bool relative_to_base() const { return base_model_.base_motion.kind == BaseMotion::Kind::Rigid; }
+    const ViscousBoundary& dashpots() const { return dashpots_; }
+    /// Displacements since the first dynamic stage began, relative to the base (zero before).
+    Eigen::VectorXd displacement_since_shaking() const;
+
     /// Current magnitude of each point load and edge pressure, in model order.
     std::vector<std::pair<std::string, double>> load_magnitudes() const;
     /// The same at a load position (steps, fractional) of a static analysis.
@@ -276,6 +292,19 @@ private:
     /// Applied forces at a load position: the loads plus the part of the stage's start
     /// out-of-balance force not yet released.
     Eigen::VectorXd applied_forces(double position, double time) const;
+
+    // Earthquakes (Earthquake.cpp).
+    /// The base motion's records, once.
+    void set_up_shaking();
+    /// The dashpots of the stage beginning (none in a static stage); the forces its start leaves
+    /// at their nodes (the reactions of supports they replace) stay for good.
+    void set_stage_dashpots();
+    /// The earthquake's loads at analysis time `time`: −M·a of a rigid base.
+    void add_base_loads(double time, Eigen::VectorXd& f) const;
+    /// Newmark's end-of-step velocity for a dynamic try of Δt (rate·d + rest), Rayleigh damping
+    /// into the elements, the incident wave of a compliant base.
+    void prepare_damping(double dt);
+    double record_time(double time) const { return shaking_start_ < 0.0 ? -1.0 : time - shaking_start_; }
 
     // Steps (StaticStep.cpp, DynamicStep.cpp).
     StepReport advance_static();
@@ -439,6 +468,16 @@ private:
     std::vector<std::optional<BoltAnchor>> bolt_anchors_[2];  ///< per bolt: from, to (undeformed mesh)
     std::vector<char> bolt_broken_try_; ///< bolts broken by the try in progress
     Eigen::VectorXd holding_;           ///< out-of-balance force at the stage's start, negated
+    std::vector<char> held_for_good_;   ///< per dof: holding_ there is not released (see set_stage_dashpots)
+    GroundShaking shaking_[2];          ///< the base motion's x and y records
+    bool shaken_[2] = {false, false};
+    double shaking_start_ = -1.0;       ///< analysis time of record time 0 (−1: not yet)
+    Eigen::VectorXd shaking_start_displacement_;  ///< the displacements then
+    ViscousBoundary dashpots_;
+    bool viscous_try_ = false;          ///< a dynamic try in progress: the dashpots act
+    double velocity_rate_ = 0.0;        ///< see prepare_damping
+    Eigen::VectorXd velocity_rest_;
+    Eigen::Vector2d incident_ = Eigen::Vector2d::Zero();
     int stage_ = 0;
     int stage_start_step_ = 0;
     double strength_factor_ = 1.0;      ///< see set_strength_factor

@@ -52,6 +52,7 @@ void Simulation::begin_stage(int s) {
     // What the stage's changes leave out of balance is held, then released over its steps.
     holding_.resize(0);
     holding_ = -out_of_balance().residual;
+    set_stage_dashpots();
 }
 
 Simulation::StageRegions Simulation::stage_regions(int s) const {
@@ -77,6 +78,7 @@ void Simulation::set_stage_model(int s, const std::vector<int>& material) {
     model_ = base_model_;
     model_.analysis = stage.analysis;
     model_.water = water_of_stage(base_model_, s);
+    model_.seismic_coefficient = seismic_of_stage(base_model_, s);
     if (stage.analysis.strength_reduction) {
         // A safety stage: reduced strengths, solved as a small-strain equilibrium problem.
         reduce_strength(model_, strength_factor_);
@@ -192,7 +194,11 @@ Eigen::VectorXd Simulation::applied_forces(double position, double time) const {
     if (holding_.size() == f.size()) {
         const double released = base_model_.stages[stage_].released(position - stage_start_step_, base_model_.load_tables);
         if (released < 1.0) f += (1.0 - released) * holding_;
+        if (!held_for_good_.empty() && released > 0.0)
+            for (Eigen::Index dof = 0; dof < f.size(); ++dof)
+                if (held_for_good_[dof]) f[dof] += released * holding_[dof];
     }
+    add_base_loads(time, f);
     return f;
 }
 
