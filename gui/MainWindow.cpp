@@ -4,6 +4,7 @@
 #include "dialogs/HelpMenu.hpp"
 #include "document/ModelDocument.hpp"
 #include "model/Defaults.hpp"
+#include "panels/EarthquakePanel.hpp"
 #include "panels/PropertyEditor.hpp"
 #include "panels/StagesPanel.hpp"
 #include "results/ExportMenu.hpp"
@@ -134,6 +135,11 @@ void MainWindow::createDocks()
     stages_dock_ = addDock(tr("Stages"), QStringLiteral("stages"), stages, Qt::RightDockWidgetArea, model_dock_);
     // The stage's Draw button: the Water Table tool draws the water of the stage shown.
     connect(stages, &StagesPanel::drawWaterRequested, editing_, &EditingTools::useWaterTable);
+    earthquake_ = new EarthquakePanel(document_, this);
+    earthquake_dock_ = addDock(tr("Earthquake"), QStringLiteral("earthquake"), earthquake_, Qt::RightDockWidgetArea,
+                               model_dock_);
+    connect(earthquake_, &EarthquakePanel::message, this, &MainWindow::log);
+    connect(earthquake_, &EarthquakePanel::drawBaseRequested, editing_, &EditingTools::useCompliantBase);
     property_editor_ = new PropertyEditor(document_, this);
     property_dock_ = addDock(tr("Properties"), QStringLiteral("properties"), property_editor_, Qt::RightDockWidgetArea,
                              model_dock_);
@@ -200,7 +206,8 @@ void MainWindow::createActions()
     tree_->addAction(editing_->deleteAction());
 
     view_menu_ = new ViewMenu(view_, this);
-    view_menu_->addDocks({model_dock_, stages_dock_, messages_dock_, steps_dock_, query_dock_, plot_dock_, property_dock_});
+    view_menu_->addDocks({model_dock_, stages_dock_, earthquake_dock_, messages_dock_, steps_dock_, query_dock_, plot_dock_,
+                          property_dock_});
     connect(view_menu_, &ViewMenu::snappingChanged, this, &MainWindow::applySnap);
     menuBar()->addMenu(view_menu_);
 
@@ -580,6 +587,11 @@ void MainWindow::onRunFinished(RunStatus status, const QString& message)
                              ? tr("Strength reduction completed: %1.").arg(status_bar_->factorOfSafety())
                              : end_line(status, last ? last->step : 0, message);
     log(text);
+    // An earthquake's result in one line: what the shaking left, relative to the base.
+    if (const QString permanent = permanent_displacement_line(QDir(session_->resultsFolder()).absoluteFilePath(
+            QStringLiteral("summary.json")));
+        !permanent.isEmpty())
+        log(permanent);
     log(tr("Results in %1").arg(session_->resultsFolder()));
     plot_->load(resultsHistoryPath());
     if (!status_bar_->factorOfSafety().isEmpty()) plot_->setTitle(status_bar_->factorOfSafety());

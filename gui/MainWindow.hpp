@@ -42,6 +42,7 @@ class ViewMenu;
 class RunMenu;
 class WindowStatusBar;
 class QueryPlot;
+class EarthquakePanel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -126,6 +127,8 @@ public:
     /// The factor of safety of the last strength reduction run as the status bar shows it
     /// ("Factor of safety 1.547"); empty after any other run or before one.
     QString factorOfSafetyText() const;
+    /// The Earthquake dock: ground motions, the base they shake, the seismic coefficient.
+    EarthquakePanel* earthquakePanel() const { return earthquake_; }
     /// The Query dock: the field along a line drawn with Edit ▸ Query Line.
     QueryPlot* queryPlot() const { return query_; }
     /// The run and its files, and the background pre-processing (the window's logic).
@@ -227,6 +230,8 @@ private:
     QDockWidget* plot_dock_ = nullptr;
     QDockWidget* query_dock_ = nullptr;
     QDockWidget* stages_dock_ = nullptr;
+    QDockWidget* earthquake_dock_ = nullptr;
+    EarthquakePanel* earthquake_ = nullptr;
     QueryPlot* query_ = nullptr;
     QDockWidget* property_dock_ = nullptr;
     WindowStatusBar* status_bar_ = nullptr;

@@ -355,6 +355,51 @@
         <translation>Festigkeitsreduktion: die Suche nach dem Sicherheitsfaktor endet, sobald sich die Faktoren, bei denen das Modell steht und bei denen nicht, um weniger als diesen Bruchteil unterscheiden</translation>
     </message>
     <message>
+        <location filename="../solver/model/ModelFields.cpp" line="115"/>
+        <source>Newmark γ</source>
+        <translation>Newmark-γ</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="117"/>
+        <source>Dynamic analysis: Newmark&apos;s γ (β = (γ + ½)²/4). 0.7 damps the highest frequencies; 0.5 adds no numerical damping</source>
+        <translation>Dynamische Berechnung: Newmarks γ (β = (γ + ½)²/4). 0,7 dämpft die höchsten Frequenzen; 0,5 fügt keine numerische Dämpfung hinzu</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="119"/>
+        <source>Damping ratio</source>
+        <translation>Dämpfungsgrad</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="121"/>
+        <source>Dynamic analysis: Rayleigh damping as a fraction of critical damping (0: none)</source>
+        <translation>Dynamische Berechnung: Rayleigh-Dämpfung als Anteil der kritischen Dämpfung (0: keine)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="123"/>
+        <source>Damping frequency</source>
+        <translation>Dämpfungsfrequenz</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="125"/>
+        <source>Frequency at which the Rayleigh damping has the damping ratio (its least when no second frequency is given)</source>
+        <translation>Frequenz, bei der die Rayleigh-Dämpfung den Dämpfungsgrad hat (ihr Minimum, wenn keine zweite Frequenz angegeben ist)</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="127"/>
+        <source>Second damping frequency</source>
+        <translation>Zweite Dämpfungsfrequenz</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="129"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../solver/model/ModelFields.cpp" line="130"/>
+        <source>A second frequency with the same damping ratio (less damping between the two); 0: one frequency</source>
+        <translation>Eine zweite Frequenz mit demselben Dämpfungsgrad (dazwischen weniger Dämpfung); 0: nur eine Frequenz</translation>
+    </message>
+    <message>
         <location filename="../gui/panels/LawFields.cpp" line="27"/>
         <source>Law</source>
         <translation>Stoffgesetz</translation>
@@ -585,300 +630,575 @@
     </message>
 </context>
 <context>
+    <name>mcdda::gui::EarthquakePanel</name>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="45"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="80"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="230"/>
+        <source>g</source>
+        <translation>g</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="45"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="81"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="230"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="57"/>
+        <source>Ground motions (acceleration records)</source>
+        <translation>Bodenbewegungen (Beschleunigungszeitverläufe)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="62"/>
+        <source>The model&apos;s earthquake records; the one chosen is plotted and edited below</source>
+        <translation>Die Erdbebenaufzeichnungen des Modells; die gewählte wird unten dargestellt und bearbeitet</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="65"/>
+        <source>Import...</source>
+        <translation>Importieren...</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="67"/>
+        <source>Read an acceleration record: a CSV file of time (s) and acceleration, or a PEER NGA .AT2 file (in g)</source>
+        <translation>Einen Beschleunigungszeitverlauf einlesen: eine CSV-Datei mit Zeit (s) und Beschleunigung oder eine PEER-NGA-.AT2-Datei (in g)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="68"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="77"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="82"/>
+        <source>Units</source>
+        <translation>Einheiten</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="83"/>
+        <source>Unit of the accelerations in the file: g (as in .AT2 files) or m/s²</source>
+        <translation>Einheit der Beschleunigungen in der Datei: g (wie in .AT2-Dateien) oder m/s²</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="86"/>
+        <source>Scale [–]</source>
+        <translation>Skalierung [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="87"/>
+        <source>Factor on the accelerations, e.g. to scale a record to a design peak ground acceleration</source>
+        <translation>Faktor auf die Beschleunigungen, z. B. um eine Aufzeichnung auf eine Bemessungs-Bodenbeschleunigung zu skalieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="88"/>
+        <source>Baseline correction</source>
+        <translation>Basislinienkorrektur</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="91"/>
+        <source>Take a linear trend off the acceleration so that the base ends at rest where it began (the integrated record does not drift)</source>
+        <translation>Einen linearen Trend von der Beschleunigung abziehen, sodass die Basis dort in Ruhe endet, wo sie begann (die integrierte Aufzeichnung driftet nicht)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="97"/>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="108"/>
+        <source>Base motion</source>
+        <translation>Bewegung der Basis</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="112"/>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="113"/>
+        <source>Rigid base (every support moves)</source>
+        <translation>Starre Basis (alle Lager bewegen sich)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="114"/>
+        <source>Compliant base (dashpots along a segment)</source>
+        <translation>Nachgiebige Basis (Dämpfer entlang einer Strecke)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="115"/>
+        <source>Shaking</source>
+        <translation>Anregung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="116"/>
+        <source>Rigid: the supports move with the record and the analysis runs relative to them (a shaking table). Compliant: the segment carries dashpots and the incoming wave, so waves sent down leave the model. The base shakes the dynamic stages only</source>
+        <translation>Starr: die Lager bewegen sich mit der Aufzeichnung, und die Berechnung läuft relativ zu ihnen (ein Rütteltisch). Nachgiebig: die Strecke trägt Dämpfer und die einfallende Welle, sodass nach unten laufende Wellen das Modell verlassen. Die Basis regt nur die dynamischen Bauphasen an</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="121"/>
+        <source>Horizontal (x)</source>
+        <translation>Horizontal (x)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="122"/>
+        <source>The record of the horizontal acceleration</source>
+        <translation>Die Aufzeichnung der horizontalen Beschleunigung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="125"/>
+        <source>Vertical (y)</source>
+        <translation>Vertikal (y)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="126"/>
+        <source>The record of the vertical acceleration</source>
+        <translation>Die Aufzeichnung der vertikalen Beschleunigung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="130"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="135"/>
+        <source>From (x, y)</source>
+        <translation>Von (x, y)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="136"/>
+        <source>To (x, y)</source>
+        <translation>Bis (x, y)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="137"/>
+        <source>Draw...</source>
+        <translation>Zeichnen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="139"/>
+        <source>Click the two ends of the compliant base in the picture</source>
+        <translation>Die beiden Enden der nachgiebigen Basis im Bild anklicken</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="146"/>
+        <source>Seismic coefficient (pseudo-static)</source>
+        <translation>Erdbebenbeiwert (pseudostatisch)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="150"/>
+        <source>kh [–]</source>
+        <translation>kh [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="151"/>
+        <source>Horizontal seismic coefficient: every block carries kh·g per unit mass, towards +x for kh &gt; 0</source>
+        <translation>Horizontaler Erdbebenbeiwert: jeder Block erhält kh·g je Masseneinheit, für kh &gt; 0 in +x-Richtung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="154"/>
+        <source>kv [–]</source>
+        <translation>kv [–]</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="155"/>
+        <source>Vertical seismic coefficient: kv·g per unit mass, upwards for kv &gt; 0</source>
+        <translation>Vertikaler Erdbebenbeiwert: kv·g je Masseneinheit, für kv &gt; 0 nach oben</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="193"/>
+        <source>Import acceleration record</source>
+        <translation>Beschleunigungszeitverlauf importieren</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="194"/>
+        <source>Acceleration records (*.csv *.txt *.at2 *.AT2);;All files (*)</source>
+        <translation>Beschleunigungszeitverläufe (*.csv *.txt *.at2 *.AT2);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="205"/>
+        <source>The record was not imported: %1</source>
+        <translation>Die Aufzeichnung wurde nicht importiert: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="228"/>
+        <source>Imported &quot;%1&quot;: %n point(s), read in %2 (change Units if the file is in the other unit).</source>
+        <translation>
+            <numerusform>„%1“ importiert: %n Punkt, gelesen in %2 (Einheiten ändern, wenn die Datei in der anderen Einheit ist).</numerusform>
+            <numerusform>„%1“ importiert: %n Punkte, gelesen in %2 (Einheiten ändern, wenn die Datei in der anderen Einheit ist).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="251"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="283"/>
+        <source>points given in the model</source>
+        <translation>Punkte im Modell angegeben</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="298"/>
+        <source>Not applied: another ground motion is called &quot;%1&quot;.</source>
+        <translation>Nicht übernommen: eine andere Bodenbewegung heißt „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="302"/>
+        <source>Not applied: a ground motion needs a name.</source>
+        <translation>Nicht übernommen: eine Bodenbewegung braucht einen Namen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="306"/>
+        <source>Not applied: the scale must not be 0.</source>
+        <translation>Nicht übernommen: die Skalierung darf nicht 0 sein.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="317"/>
+        <source>Applied.</source>
+        <translation>Übernommen.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="338"/>
+        <source>Import a ground motion first: the base moves with it.</source>
+        <translation>Zuerst eine Bodenbewegung importieren: die Basis bewegt sich mit ihr.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="358"/>
+        <source>The supports move with the record in the dynamic stages.</source>
+        <translation>Die Lager bewegen sich in den dynamischen Bauphasen mit der Aufzeichnung.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="359"/>
+        <source>The record enters through the compliant base in the dynamic stages.</source>
+        <translation>Die Aufzeichnung tritt in den dynamischen Bauphasen durch die nachgiebige Basis ein.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="360"/>
+        <source>No base motion.</source>
+        <translation>Keine Bewegung der Basis.</translation>
+    </message>
+</context>
+<context>
     <name>mcdda::gui::EditingTools</name>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="99"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="127"/>
         <source>bolt %1</source>
         <translation>Anker %1</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="106"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="134"/>
         <source>Add bolt &quot;%1&quot;</source>
         <translation>Anker „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="120"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
         <source>The water table must run from left to right: a point cannot be moved past its neighbour.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Ein Punkt kann nicht über seinen Nachbarn hinaus verschoben werden.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="141"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="187"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="145"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="152"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="198"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="212"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="167"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="213"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="170"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="171"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="217"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="173"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="219"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="174"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="177"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="178"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="224"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="179"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="225"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="180"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="182"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="183"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="229"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="185"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="231"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="186"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="232"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="188"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="235"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="237"/>
         <source>&amp;Bolt</source>
         <translation>A&amp;nker</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="192"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="238"/>
         <source>Click the two anchors of a rock bolt (EA 98 MN/m, breaking at 160 kN/m per metre of thickness; other values and the stage that installs it are set in the model file)</source>
         <translation>Die beiden Verankerungspunkte eines Felsankers anklicken (EA 98 MN/m, Bruch bei 160 kN/m je Meter Dicke; andere Werte und die Bauphase, die ihn einbaut, stehen in der Modelldatei)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="195"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="241"/>
         <source>Draw &amp;Water Table</source>
         <translation>&amp;Grundwasserspiegel zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="196"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="242"/>
         <source>Click the points of the water table (piezometric line) from left to right; double-click or Enter finishes it. It is the water of the stage chosen in the Stages dock, or of the model as drawn</source>
         <translation>Die Punkte des Grundwasserspiegels (Piezometerlinie) von links nach rechts anklicken; Doppelklick oder Eingabetaste beendet ihn. Er gilt für die im Fenster Bauphasen gewählte Bauphase oder für das Modell wie gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="201"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
+        <source>&amp;Absorbing Boundary</source>
+        <translation>&amp;Absorbierender Rand</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="247"/>
+        <source>Click the two ends of a boundary whose dashpots let the earthquake&apos;s waves out instead of reflecting them (no support may hold it in a dynamic stage)</source>
+        <translation>Die beiden Enden eines Randes anklicken, dessen Dämpfer die Wellen des Erdbebens hinauslassen, statt sie zu reflektieren (in einer dynamischen Bauphase darf ihn kein Lager halten)</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="252"/>
         <source>&amp;Query Line</source>
         <translation>Abfragel&amp;inie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="202"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="253"/>
         <source>Click the two ends of a line across the result picture: the Query dock plots the field shown along it</source>
         <translation>Die beiden Enden einer Linie über das Ergebnisbild anklicken: das Abfrage-Fenster zeigt das Feld entlang der Linie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="206"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="257"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="211"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="262"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="214"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="265"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="267"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="278"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="233"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="285"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="236"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="288"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="237"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="289"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="238"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="290"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="239"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="291"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="253"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="305"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="256"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="306"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="308"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="306"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="255"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="307"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="256"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="308"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="258"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="310"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="259"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="311"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="260"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="312"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="262"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="314"/>
         <source>γw</source>
         <translation>γw</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="263"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="315"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="264"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="316"/>
         <source>Unit weight of water of a new water table (fresh water 9.81 kN/m³)</source>
         <translation>Wichte des Wassers eines neuen Grundwasserspiegels (Süßwasser 9,81 kN/m³)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="267"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="319"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="269"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="321"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="272"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="324"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="275"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="327"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="276"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="328"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="318"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="370"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="331"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="383"/>
         <source>The water table must run from left to right: point %1 is straight above or below point %2. Draw it again.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt genau über oder unter Punkt %2. Bitte neu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="385"/>
         <source>The water table must run from left to right: point %1 is left of point %2. Draw it again.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt links von Punkt %2. Bitte neu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="355"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="407"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="411"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="457"/>
+        <source>Import a ground motion first (Earthquake dock): the compliant base is where it enters the model.</source>
+        <translation>Zuerst eine Bodenbewegung importieren (Fenster Erdbeben): die nachgiebige Basis ist die Stelle, an der sie in das Modell eintritt.</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="461"/>
+        <source>Click the two ends of the compliant base</source>
+        <translation>Die beiden Enden der nachgiebigen Basis anklicken</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="474"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -1042,61 +1362,81 @@
     <name>mcdda::gui::HistoryPlot</name>
     <message>
         <location filename="../gui/results/HistoryPlot.cpp" line="29"/>
-        <source>Measured displacement plotted</source>
-        <translation>Dargestellte gemessene Verschiebung</translation>
+        <source>Measured quantity plotted: a point&apos;s displacement, velocity or acceleration (x or y), or the base&apos;s input motion</source>
+        <translation>Dargestellte Messgröße: Verschiebung, Geschwindigkeit oder Beschleunigung eines Punktes (x oder y) oder die Eingangsbewegung der Basis</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="32"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="33"/>
         <source>Plotted against time or a load (load-settlement curve)</source>
         <translation>Aufgetragen über der Zeit oder einer Last (Last-Setzungs-Kurve)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="63"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="64"/>
         <source>Plot</source>
         <translation>Darstellen</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="65"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="66"/>
         <source>against</source>
         <translation>über</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="111"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="89"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="90"/>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="91"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="93"/>
+        <source>base input %1 (%2)</source>
+        <translation>Eingang der Basis %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="94"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="128"/>
         <source>strength reduction factor</source>
         <translation>Festigkeitsreduktionsfaktor</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="112"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="129"/>
         <source>largest displacement (m)</source>
         <translation>größte Verschiebung (m)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="114"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="131"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="118"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="135"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="120"/>
-        <source>%1 (m)</source>
-        <translation>%1 (m)</translation>
-    </message>
-    <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="160"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="177"/>
         <source>No history: run the model.</source>
         <translation>Kein Verlauf: Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="162"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="179"/>
         <source>The model has no measurement points.</source>
         <translation>Das Modell hat keine Messpunkte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="164"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="181"/>
         <source>%n trial(s) stood, %1 did not</source>
         <translation>
             <numerusform>%n Versuch stand, %1 nicht</numerusform>
@@ -1104,7 +1444,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="166"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="183"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -1587,197 +1927,202 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="95"/>
+        <location filename="../gui/MainWindow.cpp" line="96"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="123"/>
+        <location filename="../gui/MainWindow.cpp" line="124"/>
         <source>Query</source>
         <translation>Abfrage</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="134"/>
+        <location filename="../gui/MainWindow.cpp" line="135"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="158"/>
+        <location filename="../gui/MainWindow.cpp" line="139"/>
+        <source>Earthquake</source>
+        <translation>Erdbeben</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="164"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="159"/>
+        <location filename="../gui/MainWindow.cpp" line="165"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="162"/>
+        <location filename="../gui/MainWindow.cpp" line="168"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="163"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="166"/>
+        <location filename="../gui/MainWindow.cpp" line="172"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="167"/>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="170"/>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="178"/>
+        <location filename="../gui/MainWindow.cpp" line="184"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="182"/>
+        <location filename="../gui/MainWindow.cpp" line="188"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="183"/>
+        <location filename="../gui/MainWindow.cpp" line="189"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="186"/>
+        <location filename="../gui/MainWindow.cpp" line="192"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="194"/>
+        <location filename="../gui/MainWindow.cpp" line="200"/>
         <source>&amp;Import DXF...</source>
         <translation>DXF &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="196"/>
+        <location filename="../gui/MainWindow.cpp" line="202"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="198"/>
+        <location filename="../gui/MainWindow.cpp" line="204"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="116"/>
+        <location filename="../gui/MainWindow.cpp" line="117"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="263"/>
+        <location filename="../gui/MainWindow.cpp" line="270"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="77"/>
+        <location filename="../gui/MainWindow.cpp" line="78"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="244"/>
+        <location filename="../gui/MainWindow.cpp" line="251"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="251"/>
+        <location filename="../gui/MainWindow.cpp" line="258"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="252"/>
+        <location filename="../gui/MainWindow.cpp" line="259"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="263"/>
+        <location filename="../gui/MainWindow.cpp" line="270"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="265"/>
+        <location filename="../gui/MainWindow.cpp" line="272"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="285"/>
+        <location filename="../gui/MainWindow.cpp" line="292"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="285"/>
+        <location filename="../gui/MainWindow.cpp" line="292"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="301"/>
+        <location filename="../gui/MainWindow.cpp" line="308"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="81"/>
+        <location filename="../gui/MainWindow.cpp" line="82"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="111"/>
+        <location filename="../gui/MainWindow.cpp" line="112"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="119"/>
+        <location filename="../gui/MainWindow.cpp" line="120"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="131"/>
+        <location filename="../gui/MainWindow.cpp" line="132"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="334"/>
+        <location filename="../gui/MainWindow.cpp" line="341"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="362"/>
+        <location filename="../gui/MainWindow.cpp" line="369"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="363"/>
+        <location filename="../gui/MainWindow.cpp" line="370"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="412"/>
+        <location filename="../gui/MainWindow.cpp" line="419"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="413"/>
+        <location filename="../gui/MainWindow.cpp" line="420"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="456"/>
+        <location filename="../gui/MainWindow.cpp" line="463"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="517"/>
+        <location filename="../gui/MainWindow.cpp" line="524"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -1785,67 +2130,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="553"/>
+        <location filename="../gui/MainWindow.cpp" line="560"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="553"/>
+        <location filename="../gui/MainWindow.cpp" line="560"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="500"/>
+        <location filename="../gui/MainWindow.cpp" line="507"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="580"/>
+        <location filename="../gui/MainWindow.cpp" line="587"/>
         <source>Strength reduction completed: %1.</source>
         <translation>Festigkeitsreduktion abgeschlossen: %1.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="583"/>
+        <location filename="../gui/MainWindow.cpp" line="590"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="602"/>
+        <location filename="../gui/MainWindow.cpp" line="609"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="602"/>
+        <location filename="../gui/MainWindow.cpp" line="609"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="603"/>
+        <location filename="../gui/MainWindow.cpp" line="610"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="138"/>
+        <location filename="../gui/MainWindow.cpp" line="144"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="227"/>
+        <location filename="../gui/MainWindow.cpp" line="234"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="379"/>
+        <location filename="../gui/MainWindow.cpp" line="386"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="440"/>
+        <location filename="../gui/MainWindow.cpp" line="447"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="441"/>
+        <location filename="../gui/MainWindow.cpp" line="448"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -2069,77 +2414,127 @@
         <translation>Bauphase „%1“: Boden trockenlegen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="212"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="207"/>
+        <source>Add ground motion &quot;%1&quot;</source>
+        <translation>Bodenbewegung „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="217"/>
+        <source>Change ground motion &quot;%1&quot;</source>
+        <translation>Bodenbewegung „%1“ ändern</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="231"/>
+        <source>Remove ground motion &quot;%1&quot;</source>
+        <translation>Bodenbewegung „%1“ entfernen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="235"/>
+        <source>Remove the base motion</source>
+        <translation>Bewegung der Basis entfernen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="236"/>
+        <source>Shake a rigid base</source>
+        <translation>Starre Basis anregen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="237"/>
+        <source>Shake a compliant base</source>
+        <translation>Nachgiebige Basis anregen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="244"/>
+        <source>Add absorbing boundary &quot;%1&quot;</source>
+        <translation>Absorbierenden Rand „%1“ hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="252"/>
+        <source>Set the seismic coefficient</source>
+        <translation>Erdbebenbeiwert setzen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="259"/>
+        <source>Stage &quot;%1&quot;: set the seismic coefficient</source>
+        <translation>Bauphase „%1“: Erdbebenbeiwert setzen</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="271"/>
         <source>Move %1</source>
         <translation>%1 verschieben</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="220"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="279"/>
         <source>Delete %1</source>
         <translation>%1 löschen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="233"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="292"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="234"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="293"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="235"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="294"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="236"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="295"/>
         <source>roller %1</source>
         <translation>Rollenlager %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="237"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="296"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="238"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="297"/>
         <source>pressure %1</source>
         <translation>Kantendruck %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="239"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="298"/>
         <source>point %1</source>
         <translation>Punkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="241"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="300"/>
+        <source>absorbing boundary %1</source>
+        <translation>absorbierender Rand %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="303"/>
         <source>the water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="242"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="304"/>
         <source>the water table of stage &quot;%1&quot;</source>
         <translation>Grundwasserspiegel der Bauphase „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="247"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="309"/>
         <source>hole %1 of %2</source>
         <translation>Loch %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="248"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="310"/>
         <source>vertex %1 of %2</source>
         <translation>Eckpunkt %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="261"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="323"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="263"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="325"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2287,37 +2682,47 @@
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="161"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="162"/>
+        <source>Absorbing boundaries</source>
+        <translation>Absorbierende Ränder</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="165"/>
+        <source>dashpots %1 to %2</source>
+        <translation>Dämpfer %1 bis %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="168"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="163"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="169"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="181"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="183"/>
         <source>%1 to %2, EA %3 MN/m</source>
         <translation>%1 bis %2, EA %3 MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="180"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="187"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="194"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="201"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -2325,27 +2730,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="195"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="202"/>
         <source>excavates %1</source>
         <translation>bricht %1 aus</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="196"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="203"/>
         <source>builds %1</source>
         <translation>baut %1 ein</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="197"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="204"/>
         <source>installs %1</source>
         <translation>setzt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="198"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="205"/>
         <source>removes %1</source>
         <translation>entfernt %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="199"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="206"/>
         <source>%n material change(s)</source>
         <translation>
             <numerusform>%n Materialänderung</numerusform>
@@ -2353,32 +2758,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="201"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="208"/>
         <source>water table of %1 points</source>
         <translation>Grundwasserspiegel mit %1 Punkten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="202"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="209"/>
         <source>dry</source>
         <translation>trocken</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="203"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="210"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="208"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="215"/>
         <source>Ground water</source>
         <translation>Grundwasser</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="209"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="216"/>
         <source>water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="210"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="217"/>
         <source>%1 points, γw %2 kN/m³</source>
         <translation>%1 Punkte, γw %2 kN/m³</translation>
     </message>
@@ -2446,8 +2851,8 @@
     <message>
         <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="470"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="472"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="477"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="479"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
@@ -2687,36 +3092,36 @@
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="470"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="472"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="477"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="479"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="491"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="508"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="498"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="515"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="519"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="529"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="526"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="536"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="549"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="572"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="596"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="623"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="579"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="603"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="630"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="553"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="576"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="600"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="627"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="560"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="583"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="607"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="634"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -2792,6 +3197,44 @@
         <location filename="../gui/widgets/RecentFilesMenu.cpp" line="40"/>
         <source>&amp;%1 %2</source>
         <translation>&amp;%1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>mcdda::gui::RecordPlot</name>
+    <message>
+        <location filename="../gui/results/RecordPlot.cpp" line="40"/>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/RecordPlot.cpp" line="71"/>
+        <source>g</source>
+        <translation>g</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/RecordPlot.cpp" line="71"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/RecordPlot.cpp" line="89"/>
+        <source>acceleration (%1)</source>
+        <translation>Beschleunigung (%1)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/RecordPlot.cpp" line="92"/>
+        <source>No record chosen.</source>
+        <translation>Keine Aufzeichnung gewählt.</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/RecordPlot.cpp" line="94"/>
+        <source>The record has no usable points (at least two, times increasing).</source>
+        <translation>Die Aufzeichnung hat keine brauchbaren Punkte (mindestens zwei, mit steigenden Zeiten).</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/RecordPlot.cpp" line="96"/>
+        <source>Peak %1 %2 at %3 s, duration %4 s</source>
+        <translation>Spitzenwert %1 %2 bei %3 s, Dauer %4 s</translation>
     </message>
 </context>
 <context>
@@ -3305,252 +3748,287 @@
 <context>
     <name>mcdda::gui::StagesPanel</name>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="58"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="59"/>
         <source>fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="59"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
         <source>roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="61"/>
         <source>point load</source>
         <translation>Einzellast</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="61"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="62"/>
         <source>edge pressure</source>
         <translation>Randdruck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="62"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="63"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="70"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="71"/>
         <source>line with %1 points</source>
         <translation>Linie mit %1 Punkten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="71"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="72"/>
         <source>dry</source>
         <translation>trocken</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="94"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="95"/>
         <source>Choose a stage to see the model as it stands in it; the first row shows every region</source>
         <translation>Eine Bauphase wählen, um das Modell so zu sehen, wie es in ihr steht; die erste Zeile zeigt alle Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="95"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="96"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="97"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
         <source>Add a stage at the end (10 steps, the model&apos;s analysis settings)</source>
         <translation>Eine Bauphase am Ende hinzufügen (10 Schritte, die Berechnungseinstellungen des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="99"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="100"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="101"/>
         <source>Up</source>
         <translation>Nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="102"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="103"/>
         <source>Down</source>
         <translation>Nach unten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="106"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
         <source>Name of the stage (results, tree, messages)</source>
         <translation>Name der Bauphase (Ergebnisse, Baum, Meldungen)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="108"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="109"/>
         <source>Regions removed at the start of the stage (an excavation)</source>
         <translation>Bereiche, die zu Beginn der Bauphase entfernt werden (ein Ausbruch)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="110"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="111"/>
         <source>Regions added at the start of the stage (backfill, a liner); absent before</source>
         <translation>Bereiche, die zu Beginn der Bauphase hinzukommen (Verfüllung, Ausbau); vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="112"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="113"/>
         <source>Supports, loads and bolts added at the start of the stage; absent before</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase hinzukommen; vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="114"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="115"/>
         <source>Supports, loads and bolts taken away at the start of the stage</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase entfernt werden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="116"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="117"/>
         <source>Number of load steps of the stage</source>
         <translation>Anzahl der Laststufen der Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="117"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="118"/>
         <source>over all steps</source>
         <translation>über alle Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="118"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="119"/>
         <source> steps</source>
         <translation> Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="119"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="120"/>
         <source>Over how many steps the forces the stage leaves out of balance (an excavation&apos;s) are released, linearly; fewer steps release them faster</source>
         <translation>Über wie viele Schritte die Ungleichgewichtskräfte der Bauphase (etwa eines Ausbruchs) linear freigesetzt werden; weniger Schritte setzen sie schneller frei</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
         <source>The ground water in the stage: the piezometric line drawn blue in the picture</source>
         <translation>Das Grundwasser in der Bauphase: die im Bild blau gezeichnete Piezometerlinie</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="126"/>
         <source>Draw...</source>
         <translation>Zeichnen...</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="127"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
         <source>Draw the water table of this stage with the Water Table tool: click its points from left to right, double-click or Enter finishes</source>
         <translation>Den Grundwasserspiegel dieser Bauphase mit dem Werkzeug Grundwasserspiegel zeichnen: seine Punkte von links nach rechts anklicken, Doppelklick oder Eingabetaste beendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="129"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="130"/>
         <source>Dry</source>
         <translation>Trocken</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="131"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="132"/>
         <source>No ground water from this stage on (dewatered)</source>
         <translation>Kein Grundwasser ab dieser Bauphase (entwässert)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="132"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="133"/>
         <source>As Before</source>
         <translation>Wie davor</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="134"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="135"/>
         <source>The stage keeps the water of the stage before (the model&apos;s for the first stage)</source>
         <translation>Die Bauphase behält das Grundwasser der Bauphase davor (bei der ersten das des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="135"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="136"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="146"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="147"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="147"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="148"/>
         <source>Excavates</source>
         <translation>Bricht aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="148"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="149"/>
         <source>Builds</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="149"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="150"/>
         <source>Installs</source>
         <translation>Baut ein</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="150"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="151"/>
         <source>Removes</source>
         <translation>Baut aus</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="151"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="152"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="152"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="153"/>
         <source>Release</source>
         <translation>Freisetzung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="162"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="156"/>
         <source>Ground water</source>
         <translation>Grundwasser</translation>
     </message>
     <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="162"/>
+        <source>Own (else as the stage before)</source>
+        <translation>Eigener (sonst wie die Bauphase davor)</translation>
+    </message>
+    <message>
         <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
+        <source>The stage sets its own seismic coefficient (e.g. a pseudo-static earthquake stage); cleared, it keeps the stage before&apos;s (the model&apos;s for the first stage)</source>
+        <translation>Die Bauphase setzt ihren eigenen Erdbebenbeiwert (z. B. eine pseudostatische Erdbebenphase); ohne Haken gilt der Beiwert der Bauphase davor (für die erste Bauphase der des Modells)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="168"/>
+        <source>Horizontal seismic coefficient: every block carries kh·g per unit mass, towards +x for kh &gt; 0</source>
+        <translation>Horizontaler Erdbebenbeiwert: jeder Block erhält kh·g je Masseneinheit, für kh &gt; 0 in +x-Richtung</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="171"/>
+        <source>Vertical seismic coefficient: kv·g per unit mass, upwards for kv &gt; 0</source>
+        <translation>Vertikaler Erdbebenbeiwert: kv·g je Masseneinheit, für kv &gt; 0 nach oben</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="172"/>
+        <source>Seismic coefficient</source>
+        <translation>Erdbebenbeiwert</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="174"/>
+        <source>kh</source>
+        <translation>kh</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="176"/>
+        <source>kv</source>
+        <translation>kv</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="180"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="203"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="222"/>
         <source>Model as drawn (every region)</source>
         <translation>Modell wie gezeichnet (alle Bereiche)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="205"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="224"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="208"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="227"/>
         <source>No stages: the model is analysed in one go. Add one to excavate or build regions step by step.</source>
         <translation>Keine Bauphasen: das Modell wird in einem Zug berechnet. Eine hinzufügen, um Bereiche schrittweise auszubrechen oder einzubauen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="230"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="249"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="244"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="263"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="274"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="304"/>
         <source>as the stage before (%1)</source>
         <translation>wie in der Bauphase davor (%1)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="304"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="355"/>
         <source>Edit stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="311"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="362"/>
         <source>stage %1</source>
         <translation>Bauphase %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="315"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="366"/>
         <source>Add stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="326"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="377"/>
         <source>Remove stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="335"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="386"/>
         <source>Move stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ verschieben</translation>
     </message>
@@ -3745,22 +4223,27 @@
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="202"/>
+        <location filename="../gui/panels/FormFields.cpp" line="127"/>
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/FormFields.cpp" line="203"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="203"/>
+        <location filename="../gui/panels/FormFields.cpp" line="204"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="204"/>
+        <location filename="../gui/panels/FormFields.cpp" line="205"/>
         <source>Strength reduction</source>
         <translation>Festigkeitsreduktion</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="205"/>
+        <location filename="../gui/panels/FormFields.cpp" line="206"/>
         <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding. Strength reduction: the factor of safety, the largest factor c and tan φ can be divided by while the model still stands (of the whole model, or as the last stage: a safety stage starting from the stresses of the stages before)</source>
         <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten. Festigkeitsreduktion: der Sicherheitsfaktor, der größte Faktor, durch den c und tan φ geteilt werden können, während das Modell noch steht (des ganzen Modells oder als letzte Bauphase: eine Sicherheitsphase, die von den Spannungen der Bauphasen davor ausgeht)</translation>
     </message>
@@ -3941,72 +4424,82 @@
         <translation>verformt</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="148"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="158"/>
         <source>Unassigned material</source>
         <translation>Kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="150"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="160"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="157"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="167"/>
         <source>Legend</source>
         <translation>Legende</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="187"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="197"/>
         <source>Region boundary</source>
         <translation>Bereichsrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="188"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="198"/>
         <source>Block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="190"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="200"/>
         <source>Joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="192"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="202"/>
         <source>Water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="194"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="204"/>
         <source>Fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="201"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="211"/>
         <source>Fixed line (x and y)</source>
         <translation>Feste Linie (x und y)</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="203"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="213"/>
         <source>Roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="205"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="215"/>
         <source>Bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="207"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="217"/>
+        <source>Absorbing boundary</source>
+        <translation>Absorbierender Rand</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="219"/>
+        <source>Compliant base (earthquake input)</source>
+        <translation>Nachgiebige Basis (Erdbebeneingang)</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/SceneLegend.cpp" line="221"/>
         <source>Point load</source>
         <translation>Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="209"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="223"/>
         <source>Edge pressure</source>
         <translation>Kantendruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/SceneLegend.cpp" line="211"/>
+        <location filename="../gui/view/SceneLegend.cpp" line="225"/>
         <source>Measurement point</source>
         <translation>Messpunkt</translation>
     </message>

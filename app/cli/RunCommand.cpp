@@ -11,6 +11,8 @@
 #include "run/Simulation.hpp"
 #include "run/StrengthReduction.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <ctime>
 #include <atomic>
 #include <csignal>
@@ -190,9 +192,18 @@ int run_run(const Request& r) {
     if (status != RunStatus::Completed) std::cerr << r.model << ": " << status_name(status) << ": " << end.message << "\n";
     if (status != RunStatus::Completed && status != RunStatus::Collapsed && !output->kept_results().empty())
         std::cerr << "the earlier results are kept in " << output->kept_results() << "\n";
-    if (!r.quiet)
+    if (!r.quiet) {
         std::cout << status_name(status) << ": " << simulation->state().step << " steps, t = " << simulation->state().time
-                  << " s; results in " << r.out << "\n";
+                  << " s";
+        if (simulation->full_model().base_motion.present()) {
+            // What the shaking left, relative to the base (summary.json's permanent_displacement).
+            const Eigen::VectorXd u = simulation->displacement_since_shaking();
+            double largest = 0.0;
+            for (Eigen::Index n = 0; 2 * n + 1 < u.size(); ++n) largest = std::max(largest, std::hypot(u[2 * n], u[2 * n + 1]));
+            std::cout << "; permanent displacement " << largest * 1e3 << " mm (largest, relative to the base)";
+        }
+        std::cout << "; results in " << r.out << "\n";
+    }
     if (r.profile) print_timings(simulation->timings(), simulation->state().step);
     return exit_status(status);
 }

@@ -201,6 +201,65 @@ bool ModelDocument::setWater(int stage, const std::optional<Water>& water) {
     return true;
 }
 
+int ModelDocument::addGroundMotion(const GroundMotion& motion) {
+    GroundMotion g = motion;
+    if (g.name.empty()) g.name = unused_name(model_.ground_motions, "record");
+    const QString text = tr("Add ground motion \"%1\"").arg(QString::fromStdString(g.name));
+    undo_.push(new AddItemCommand<GroundMotion>(this, &Model::ground_motions, std::move(g), text));
+    return static_cast<int>(model_.ground_motions.size()) - 1;
+}
+
+void ModelDocument::setGroundMotion(int index, const GroundMotion& motion) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.ground_motions.size()) return;
+    const auto i = static_cast<std::size_t>(index);
+    undo_.push(new SetValueCommand<GroundMotion>(
+        this, [i](Model& m) -> GroundMotion& { return m.ground_motions[i]; }, motion,
+        tr("Change ground motion \"%1\"").arg(QString::fromStdString(motion.name))));
+}
+
+void ModelDocument::removeGroundMotion(int index) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.ground_motions.size()) return;
+    Model m = model_;
+    const QString name = QString::fromStdString(m.ground_motions[static_cast<std::size_t>(index)].name);
+    m.ground_motions.erase(m.ground_motions.begin() + index);
+    // The base refers to records by index: the removed one goes, later ones move down.
+    for (int* r : {&m.base_motion.x, &m.base_motion.y}) {
+        if (*r == index) *r = -1;
+        else if (*r > index) --*r;
+    }
+    if (m.base_motion.x < 0 && m.base_motion.y < 0) m.base_motion.kind = BaseMotion::Kind::None;
+    replaceModel(std::move(m), tr("Remove ground motion \"%1\"").arg(name));
+}
+
+void ModelDocument::setBaseMotion(const BaseMotion& base) {
+    const QString text = base.kind == BaseMotion::Kind::None    ? tr("Remove the base motion")
+                         : base.kind == BaseMotion::Kind::Rigid ? tr("Shake a rigid base")
+                                                                : tr("Shake a compliant base");
+    undo_.push(new SetValueCommand<BaseMotion>(this, [](Model& m) -> BaseMotion& { return m.base_motion; }, base, text));
+}
+
+void ModelDocument::addAbsorbingBoundary(const AbsorbingBoundary& boundary) {
+    AbsorbingBoundary a = boundary;
+    if (a.name.empty()) a.name = unused_name(model_.absorbing_boundaries, "absorbing boundary");
+    const QString text = tr("Add absorbing boundary \"%1\"").arg(QString::fromStdString(a.name));
+    undo_.push(new AddItemCommand<AbsorbingBoundary>(this, &Model::absorbing_boundaries, std::move(a), text));
+}
+
+bool ModelDocument::setSeismicCoefficient(int stage, const std::optional<SeismicCoefficient>& k) {
+    if (stage < 0) {
+        undo_.push(new SetValueCommand<SeismicCoefficient>(
+            this, [](Model& m) -> SeismicCoefficient& { return m.seismic_coefficient; }, k.value_or(SeismicCoefficient{}),
+            tr("Set the seismic coefficient")));
+        return true;
+    }
+    if (static_cast<std::size_t>(stage) >= model_.stages.size()) return false;
+    const auto s = static_cast<std::size_t>(stage);
+    undo_.push(new SetValueCommand<std::optional<SeismicCoefficient>>(
+        this, [s](Model& m) -> std::optional<SeismicCoefficient>& { return m.stages[s].seismic_coefficient; }, k,
+        tr("Stage \"%1\": set the seismic coefficient").arg(QString::fromStdString(model_.stages[s].name))));
+    return true;
+}
+
 void ModelDocument::replaceModel(Model model, const QString& text) {
     // The whole model is swapped: exact undo whatever the edit touched.
     undo_.push(new SetValueCommand<Model>(this, [](Model& m) -> Model& { return m; }, std::move(model), text));
@@ -237,6 +296,9 @@ QString ModelDocument::itemName(const ItemRef& ref) const {
     case Kind::PointLoad: item = named(model_.point_loads[i].name, tr("load %1")); break;
     case Kind::EdgePressure: item = named(model_.edge_pressures[i].name, tr("pressure %1")); break;
     case Kind::MeasurementPoint: item = named(model_.measurement_points[i].name, tr("point %1")); break;
+    case Kind::AbsorbingBoundary:
+        item = named(model_.absorbing_boundaries[i].name, tr("absorbing boundary %1"));
+        break;
     case Kind::WaterTable:
         item = ref.index == 0 ? tr("the water table")
                               : tr("the water table of stage \"%1\"")

@@ -92,6 +92,21 @@ public:
     /// False when there is no such stage.
     bool setWater(int stage, const std::optional<Water>& water);
 
+    // Earthquakes (docs/model-format.md, "Earthquakes"); each one undoable edit.
+    /// Adds a ground motion (an empty name becomes "record N"); returns its index.
+    int addGroundMotion(const GroundMotion& motion);
+    /// Replaces ground motion `index` (its name, units, scale, correction).
+    void setGroundMotion(int index, const GroundMotion& motion);
+    /// Removes ground motion `index`; a base motion using it loses that component (and is
+    /// switched off when it has none left), later indices move down.
+    void removeGroundMotion(int index);
+    void setBaseMotion(const BaseMotion& base);
+    /// Adds an absorbing boundary (an empty name becomes "absorbing boundary N").
+    void addAbsorbingBoundary(const AbsorbingBoundary& boundary);
+    /// The seismic coefficient of the model (`stage` -1) or, from stage `stage` on, that stage's
+    /// (none: as the stage before). False when there is no such stage.
+    bool setSeismicCoefficient(int stage, const std::optional<SeismicCoefficient>& k);
+
     /// Replaces the whole model as one undoable edit named `text`: for edits that touch several
     /// lists at once (a deletion that renumbers references, a move of a region with its holes).
     void replaceModel(Model model, const QString& text);

@@ -75,6 +75,10 @@ std::vector<PointOf<M>*> points_of(M& m, Kind kind, int index)
     case Kind::MeasurementPoint:
         if (in_range(m.measurement_points, index)) out.push_back(&m.measurement_points[index].point);
         break;
+    case Kind::AbsorbingBoundary:
+        if (in_range(m.absorbing_boundaries, index))
+            out = {&m.absorbing_boundaries[index].from, &m.absorbing_boundaries[index].to};
+        break;
     case Kind::WaterTable:
         if (auto* water = water_of(m, index); water && water->present())
             for (auto& p : water->piezometric_line) out.push_back(&p);
@@ -163,6 +167,10 @@ ItemRef pick_item(const Model& model, const Point2& p, double tolerance, int sta
         consider(model.edge_pressures[i].from, Kind::EdgePressure, i, 0, 0);
         consider(model.edge_pressures[i].to, Kind::EdgePressure, i, 0, 1);
     }
+    for (int i = 0; i < static_cast<int>(model.absorbing_boundaries.size()); ++i) {
+        consider(model.absorbing_boundaries[i].from, Kind::AbsorbingBoundary, i, 0, 0);
+        consider(model.absorbing_boundaries[i].to, Kind::AbsorbingBoundary, i, 0, 1);
+    }
     for (int i = 0; i < static_cast<int>(model.fixed_points.size()); ++i)
         consider(model.fixed_points[i].point, Kind::FixedPoint, i, 0, -1);
     for (int i = 0; i < static_cast<int>(model.point_loads.size()); ++i)
@@ -193,6 +201,8 @@ ItemRef pick_item(const Model& model, const Point2& p, double tolerance, int sta
         line({model.rollers[i].from, model.rollers[i].to}, false, Kind::Roller, i);
     for (int i = 0; i < static_cast<int>(model.edge_pressures.size()); ++i)
         line({model.edge_pressures[i].from, model.edge_pressures[i].to}, false, Kind::EdgePressure, i);
+    for (int i = 0; i < static_cast<int>(model.absorbing_boundaries.size()); ++i)
+        line({model.absorbing_boundaries[i].from, model.absorbing_boundaries[i].to}, false, Kind::AbsorbingBoundary, i);
     if (water_line && !model.regions.empty()) {
         // As drawn: held level from its end points to the model's sides.
         std::vector<Point2> drawn = *water_line;
@@ -302,6 +312,7 @@ bool delete_item(Model& model, const ItemRef& ref)
     case Kind::PointLoad: erase_at(model.point_loads, ref.index); break;
     case Kind::EdgePressure: erase_at(model.edge_pressures, ref.index); break;
     case Kind::MeasurementPoint: erase_at(model.measurement_points, ref.index); break;
+    case Kind::AbsorbingBoundary: erase_at(model.absorbing_boundaries, ref.index); break;
     case Kind::WaterTable:  // handled above
     case Kind::None: return false;
     }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file ModelItems.hpp
 /// Names one drawn item of a model (a region, a hole of it, a joint, a support, a load, a
-/// measurement point or a water table), or one vertex of it, and the edits the Select tool makes with it:
+/// measurement point, a water table or an absorbing boundary), or one vertex of it, and the edits the Select tool makes with it:
 /// finding what is under the cursor, moving it and deleting it. Plain model operations, no Qt,
 /// so they are tested without a display.
 
@@ -12,7 +12,8 @@
 namespace mcdda::gui {
 
 struct ItemRef {
-    enum class Kind { None, Region, Joint, FixedPoint, Roller, PointLoad, EdgePressure, MeasurementPoint, WaterTable };
+    enum class Kind { None, Region, Joint, FixedPoint, Roller, PointLoad, EdgePressure, MeasurementPoint, WaterTable,
+                      AbsorbingBoundary };
     Kind kind = Kind::None;
     /// Into the model's list of that kind; a water table: 0 = the model's (Model::water), k = the
     /// one stage k − 1 sets.
@@ -33,7 +34,7 @@ struct ItemRef {
 bool item_exists(const Model& model, const ItemRef& ref);
 
 /// What lies under `p`: a vertex within `tolerance` (m) first (the nearest one), then a line
-/// (joint, roller, edge pressure, the water table; a region's boundary edge gives the region, a hole's edge the
+/// (joint, roller, edge pressure, absorbing boundary, the water table; a region's boundary edge gives the region, a hole's edge the
 /// hole), then the innermost region whose area
 /// holds `p`. Joints generated from joint sets are not picked (they are edited through their
 /// set). The water table picked is the one in force in `stage` (-1: the model as drawn), as the

@@ -395,7 +395,14 @@ void PropertyEditor::loadAnalysis()
     an_plasticity_->setChecked(a.plasticity);
     an_flow_->setCurrentIndex(an_flow_->findData(static_cast<int>(a.non_associated_flow)));
     // Only a strength reduction uses it; a hidden row also keeps the dock as short as before.
-    static_cast<QFormLayout*>(an_flow_->parentWidget()->layout())->setRowVisible(an_flow_, a.strength_reduction);
+    auto* layout = static_cast<QFormLayout*>(an_flow_->parentWidget()->layout());
+    layout->setRowVisible(an_flow_, a.strength_reduction);
+    // Newmark's γ and the Rayleigh damping act in a dynamic analysis only (an earthquake's).
+    const bool dynamic = a.kind == AnalysisSettings::Kind::Dynamic;
+    for (QDoubleSpinBox* box : an_fields_->boxes()) {
+        const QString key = box->objectName().mid(QStringLiteral("analysis_").size());
+        if (key == QLatin1String("newmark_gamma") || key.startsWith(QLatin1String("damping_"))) layout->setRowVisible(box, dynamic);
+    }
     loading_ = false;
 }
 

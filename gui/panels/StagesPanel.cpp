@@ -5,6 +5,7 @@
 #include "panels/FormFields.hpp"
 #include "widgets/ModelView.hpp"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -157,6 +158,24 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     for (QPushButton* b : {water_draw_, water_dry_, water_inherit_}) water_buttons->addWidget(b);
     water_buttons->addStretch(1);
     form->addRow(water_buttons);
+    // The pseudo-static earthquake load, like the water at once and from this stage on.
+    seismic_own_ = new QCheckBox(tr("Own (else as the stage before)"), settings);
+    seismic_own_->setObjectName(QStringLiteral("stageSeismicOwn"));
+    form::explain(seismic_own_, tr("The stage sets its own seismic coefficient (e.g. a pseudo-static earthquake stage); "
+                                   "cleared, it keeps the stage before's (the model's for the first stage)"));
+    seismic_kh_ = form::number(QStringLiteral("stageSeismicKh"), QString(), -2.0, 2.0, 3, settings);
+    seismic_kh_->setSingleStep(0.05);
+    form::explain(seismic_kh_, tr("Horizontal seismic coefficient: every block carries kh·g per unit mass, towards +x for kh > 0"));
+    seismic_kv_ = form::number(QStringLiteral("stageSeismicKv"), QString(), -2.0, 2.0, 3, settings);
+    seismic_kv_->setSingleStep(0.05);
+    form::explain(seismic_kv_, tr("Vertical seismic coefficient: kv·g per unit mass, upwards for kv > 0"));
+    form->addRow(tr("Seismic coefficient"), seismic_own_);
+    auto* seismic_row = new QHBoxLayout;
+    seismic_row->addWidget(new QLabel(tr("kh"), settings));
+    seismic_row->addWidget(seismic_kh_, 1);
+    seismic_row->addWidget(new QLabel(tr("kv"), settings));
+    seismic_row->addWidget(seismic_kv_, 1);
+    form->addRow(seismic_row);
     type_ = form::analysis_type_box(QStringLiteral("stageAnalysisType"), settings);
     form->addRow(tr("Analysis"), type_);
     // The stage's own analysis settings, declared once with the model's (model/ModelFields.hpp).
@@ -182,6 +201,9 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     connect(water_draw_, &QPushButton::clicked, this, &StagesPanel::drawWaterRequested);
     connect(water_dry_, &QPushButton::clicked, this, [this] { setStageWater(Water{}); });
     connect(water_inherit_, &QPushButton::clicked, this, [this] { setStageWater(std::nullopt); });
+    connect(seismic_own_, &QCheckBox::toggled, this, &StagesPanel::applySeismicCoefficient);
+    for (QDoubleSpinBox* box : {seismic_kh_, seismic_kv_})
+        connect(box, &QDoubleSpinBox::editingFinished, this, &StagesPanel::applySeismicCoefficient);
     connect(document_, &ModelDocument::changed, this, &StagesPanel::refresh);
     refresh();
 }
@@ -253,6 +275,17 @@ void StagesPanel::showStage()
     water_->setText(waterText());
     water_dry_->setEnabled(stage < 0 ? m.water.present() : !(st && st->water && !st->water->present()));
     water_inherit_->setEnabled(st && st->water.has_value());
+    // The seismic coefficient in force: the model's, or the stage's own, or the stage before's.
+    {
+        const SeismicCoefficient& k = seismic_of_stage(m, editing ? stage : -1);
+        const QSignalBlocker block(seismic_own_);
+        seismic_own_->setChecked(!editing || st->seismic_coefficient.has_value());
+        seismic_own_->setEnabled(editing);
+        form::display(seismic_kh_, k.kh);
+        form::display(seismic_kv_, k.kv);
+        seismic_kh_->setEnabled(seismic_own_->isChecked());
+        seismic_kv_->setEnabled(seismic_own_->isChecked());
+    }
     // The picture: the model as it stands in the stage, with the water in force in it.
     view::SceneOptions options = view_->sceneOptions();
     options.hidden_regions = stage >= 0 ? regions_absent(m, stage) : std::vector<int>{};
@@ -280,6 +313,27 @@ void StagesPanel::setStageWater(const std::optional<Water>& water)
     if (w) w->unit_weight = water_of_stage(document_->model(), stage).unit_weight;
     if (stage < 0 && !w) return;
     document_->setWater(stage, w);
+}
+
+void StagesPanel::applySeismicCoefficient()
+{
+    const Model& m = document_->model();
+    const int stage = currentStage();
+    if (stage >= static_cast<int>(m.stages.size())) return;
+    const SeismicCoefficient& shown = seismic_of_stage(m, stage);
+    SeismicCoefficient k;
+    k.kh = form::si(seismic_kh_, shown.kh, 1.0);
+    k.kv = form::si(seismic_kv_, shown.kv, 1.0);
+    if (stage < 0) {
+        if (k.kh != m.seismic_coefficient.kh || k.kv != m.seismic_coefficient.kv) document_->setSeismicCoefficient(-1, k);
+        return;
+    }
+    const std::optional<SeismicCoefficient>& own = m.stages[static_cast<std::size_t>(stage)].seismic_coefficient;
+    if (!seismic_own_->isChecked()) {
+        if (own) document_->setSeismicCoefficient(stage, std::nullopt);
+        return;
+    }
+    if (!own || own->kh != k.kh || own->kv != k.kv) document_->setSeismicCoefficient(stage, k);
 }
 
 void StagesPanel::applyStage()

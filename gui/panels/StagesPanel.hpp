@@ -6,7 +6,7 @@
 /// the supports, loads and bolts it installs or removes, its number of steps, how fast it
 /// releases the out-of-balance forces and its other number settings (time step, tolerances …),
 /// and its ground water: as the stage before, a water table of its own (drawn with the Water
-/// Table tool) or dry. Every change is one undoable edit of the document; the model checker reports stages
+/// Table tool) or dry; and its pseudo-static seismic coefficient kh, kv (or the stage before's). Every change is one undoable edit of the document; the model checker reports stages
 /// that do not make sense (excavating what is already gone) in the Messages dock.
 
 #include "panels/DeclaredFields.hpp"
@@ -16,6 +16,8 @@
 #include <memory>
 #include <optional>
 
+class QCheckBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -49,6 +51,8 @@ signals:
 
 private:
     void setStageWater(const std::optional<Water>& water);
+    /// The seismic coefficient fields applied: the model's, or the stage's own (or none).
+    void applySeismicCoefficient();
     void refresh();
     void showStage();
     void applyStage();
@@ -77,6 +81,9 @@ private:
     QPushButton* water_draw_ = nullptr;     ///< activates the Water Table tool
     QPushButton* water_dry_ = nullptr;      ///< no water from this stage on
     QPushButton* water_inherit_ = nullptr;  ///< the water of the stage before
+    QCheckBox* seismic_own_ = nullptr;      ///< the stage sets kh, kv (else as the stage before)
+    QDoubleSpinBox* seismic_kh_ = nullptr;
+    QDoubleSpinBox* seismic_kv_ = nullptr;
 };
 
 }  // namespace mcdda::gui

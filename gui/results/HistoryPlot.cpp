@@ -26,7 +26,8 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
 {
     y_box_ = new QComboBox(this);
     y_box_->setObjectName(QStringLiteral("historyColumn"));
-    y_box_->setToolTip(tr("Measured displacement plotted"));
+    y_box_->setToolTip(tr("Measured quantity plotted: a point's displacement, velocity or acceleration (x or y), or the "
+                          "base's input motion"));
     x_box_ = new QComboBox(this);
     x_box_->setObjectName(QStringLiteral("historyAbscissa"));
     x_box_->setToolTip(tr("Plotted against time or a load (load-settlement curve)"));
@@ -77,6 +78,22 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
     clear();
 }
 
+QString HistoryPlot::quantityLabel(const QString& column)
+{
+    // <point>:ux … <point>:ay (dynamic runs: velocities and accelerations too), base:… the input.
+    const int colon = column.lastIndexOf(QLatin1Char(':'));
+    if (colon < 0) return QString();
+    const QString point = column.left(colon), q = column.mid(colon + 1);
+    if (q.size() != 2 || (q[1] != QLatin1Char('x') && q[1] != QLatin1Char('y'))) return QString();
+    QString unit;
+    if (q[0] == QLatin1Char('u')) unit = tr("m");
+    else if (q[0] == QLatin1Char('v')) unit = tr("m/s");
+    else if (q[0] == QLatin1Char('a')) unit = tr("m/s²");
+    else return QString();
+    if (point == QLatin1String("base")) return tr("base input %1 (%2)").arg(q, unit);
+    return tr("%1 (%2)").arg(column, unit);
+}
+
 QChart* HistoryPlot::chart() const { return view_->chart(); }
 
 void HistoryPlot::setTitle(const QString& title) { view_->chart()->setTitle(title); }
@@ -116,8 +133,8 @@ int HistoryPlot::load(const QString& csv_path)
         for (const QString& c : table_.columns) {
             if (c.startsWith(QLatin1String("load:")))
                 x_box_->addItem(tr("load %1").arg(c.mid(5)), c);
-            else if (c.endsWith(QLatin1String(":ux")) || c.endsWith(QLatin1String(":uy")))
-                y_box_->addItem(tr("%1 (m)").arg(c), c);
+            else if (const QString label = quantityLabel(c); !label.isEmpty())
+                y_box_->addItem(label, c);
         }
         if (const int i = y_box_->findData(y); i >= 0) y_box_->setCurrentIndex(i);
         if (const int i = x_box_->findData(x); i >= 0) x_box_->setCurrentIndex(i);

@@ -1,6 +1,8 @@
 #pragma once
 /// \file HistoryPlot.hpp
-/// Plots a run's history.csv with Qt Charts: one measurement-point column (…:ux or …:uy)
+/// Plots a run's history.csv with Qt Charts: one measurement-point column (…:ux or …:uy; of a
+/// dynamic run also the velocities …:vx, …:vy and accelerations …:ax, …:ay, and the base's input
+/// motion base:…)
 /// against time or against a load column (load:<name>, a load–settlement curve), and under it
 /// the unbalanced-force ratio per step. A strength reduction's history (a row per trial) is
 /// drawn as RS2's SSR graph: the largest or a point's displacement against the factor, the
@@ -48,6 +50,9 @@ public:
     void setColumns(const QString& y_column, const QString& x_column);
     QString yColumn() const;
     QString xColumn() const;
+    /// How a history column is offered ("crest:vx (m/s)", "base input ax (m/s²)"); empty for a
+    /// column that is not a point's or the base's displacement, velocity or acceleration.
+    static QString quantityLabel(const QString& column);
     /// The unbalanced-force ratio of the same history, under the plot.
     UnbalancedPlot* unbalancedPlot() const { return unbalanced_; }
 

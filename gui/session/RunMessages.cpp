@@ -1,6 +1,10 @@
 #include "session/RunMessages.hpp"
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLocale>
 
 #include <algorithm>
@@ -54,6 +58,27 @@ QString mesh_report(const MeshStatistics& s)
            QCoreApplication::translate("mcdda::gui::RunMessages", "sharpest block corner: %1°").arg(number(s.min_input_angle_deg)) +
            QLatin1Char('\n') +
            QCoreApplication::translate("mcdda::gui::RunMessages", "triangles by smallest angle: %1").arg(histogram.join(QStringLiteral(", ")));
+}
+
+QString permanent_displacement_line(const QString& summary_path)
+{
+    QFile file(summary_path);
+    if (!file.open(QIODevice::ReadOnly)) return QString();
+    const QJsonObject summary = QJsonDocument::fromJson(file.readAll()).object();
+    const QJsonObject p = summary.value(QStringLiteral("permanent_displacement")).toObject();
+    if (p.isEmpty()) return QString();
+    auto mm = [](double metres) { return QLocale().toString(metres * 1e3, 'f', 1); };
+    const QJsonArray at = p.value(QStringLiteral("at")).toArray();
+    QString line = QCoreApplication::translate("mcdda::gui::RunMessages", "Permanent displacement (relative to the base): largest %1 mm at (%2, %3)")
+                       .arg(mm(p.value(QStringLiteral("largest")).toDouble()),
+                            QLocale().toString(at.at(0).toDouble(), 'g', 4), QLocale().toString(at.at(1).toDouble(), 'g', 4));
+    const QJsonObject points = p.value(QStringLiteral("points")).toObject();
+    for (auto it = points.begin(); it != points.end(); ++it) {
+        const QJsonArray u = it.value().toArray();
+        line += QCoreApplication::translate("mcdda::gui::RunMessages", "; %1: ux %2 mm, uy %3 mm")
+                    .arg(it.key(), mm(u.at(0).toDouble()), mm(u.at(1).toDouble()));
+    }
+    return line;
 }
 
 QString mesh_summary(const Preprocessed& p)

@@ -35,6 +35,10 @@ QString trial_line(const StrengthTrial& trial);
 QString factor_text(const FactorOfSafety& factor);
 /// The log line of a search's result: the factor, its bracket and the number of trials.
 QString factor_line(const FactorOfSafety& factor);
+/// The log line of what an earthquake left, from a run's summary.json (its
+/// "permanent_displacement": the largest, where, and each measurement point's, relative to the
+/// base); empty when the file has none (no base motion) or cannot be read.
+QString permanent_displacement_line(const QString& summary_path);
 /// How a run ended, after `step` accepted steps; `message` says why unless it completed.
 QString end_line(RunStatus status, int step, const QString& message);
 

@@ -19,6 +19,8 @@
 #include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
+#include <QPainter>
+#include <QPixmap>
 #include <QRegularExpression>
 #include <QStatusBar>
 #include <QToolBar>
@@ -49,6 +51,32 @@ bool parse_point(QString text, Point2* p)
     if (parts.size() != 2) parts = text.split(QLatin1Char(','));
     if (parts.size() != 2) return false;
     return parse_number(parts[0].trimmed(), &p->x) && parse_number(parts[1].trimmed(), &p->y);
+}
+
+/// The Absorbing Boundary tool's icon, a dashpot under a dashed line, painted here (the
+/// SVG icons under resources/ are the drawn tools' of before earthquakes).
+QIcon dashpot_icon()
+{
+    QIcon icon;
+    for (int size : {24, 48}) {
+        QPixmap pixmap(size, size);
+        pixmap.fill(Qt::transparent);
+        QPainter p(&pixmap);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.scale(size / 24.0, size / 24.0);
+        QPen pen(QColor(191, 13, 128), 1.6);
+        p.setPen(pen);
+        for (double x = 2; x < 22; x += 5) p.drawLine(QPointF(x, 4), QPointF(x + 3, 4));  // the dashed boundary
+        p.drawLine(QPointF(12, 4), QPointF(12, 11));                                 // rod
+        p.drawLine(QPointF(9, 11), QPointF(15, 11));                                 // piston
+        p.drawPolyline(QPolygonF({QPointF(8, 9), QPointF(8, 16), QPointF(16, 16), QPointF(16, 9)}));  // cylinder
+        p.drawLine(QPointF(12, 16), QPointF(12, 20));
+        p.drawLine(QPointF(6, 20), QPointF(18, 20));  // ground
+        for (double x = 7; x < 18; x += 3.5) p.drawLine(QPointF(x + 2, 20), QPointF(x, 23));
+        p.end();
+        icon.addPixmap(pixmap);
+    }
+    return icon;
 }
 
 }  // namespace
@@ -111,6 +139,24 @@ EditingTools::EditingTools(QMainWindow* window, ModelView* view, ModelDocument* 
     });
     water_tool_ = makeTool(int(DrawTool::Shape::Polyline),
                            [this](const std::vector<Point2>& points) { applyWaterTable(points); });
+    absorbing_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
+        AbsorbingBoundary a;
+        a.from = points.front();
+        a.to = points.back();
+        document_->addAbsorbingBoundary(a);
+    });
+    base_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
+        BaseMotion b = document_->model().base_motion;
+        if (b.x < 0 && b.y < 0) {  // the panel keeps a base with a record; drawn first, it takes the first one
+            if (document_->model().ground_motions.empty()) return;
+            b.x = 0;
+        }
+        b.kind = BaseMotion::Kind::Compliant;
+        b.from = points.front();
+        b.to = points.back();
+        document_->setBaseMotion(b);
+        useSelect();  // one base: the tool is done
+    });
     connect(region_tool_, &DrawTool::started, this, [this] {
         hole_shift_ = QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier);
     });
@@ -155,7 +201,7 @@ void EditingTools::createActions(QMenu* edit)
     auto tool = [&](const QString& text, const QString& name, const QString& icon, const QString& tip,
                     void (EditingTools::*slot)()) {
         QAction* action = edit->addAction(text, this, slot);
-        action->setIcon(QIcon(QStringLiteral(":/icons/") + icon + QStringLiteral(".svg")));
+        if (!icon.isEmpty()) action->setIcon(QIcon(QStringLiteral(":/icons/") + icon + QStringLiteral(".svg")));
         action->setObjectName(name);
         action->setCheckable(true);
         action->setStatusTip(tip);
@@ -197,6 +243,11 @@ void EditingTools::createActions(QMenu* edit)
                              "or Enter finishes it. It is the water of the stage chosen in the Stages dock, or of the "
                              "model as drawn"),
                           &EditingTools::useWaterTable);
+    QAction* absorbing = tool(tr("&Absorbing Boundary"), QStringLiteral("absorbingBoundaryAction"), QString(),
+                              tr("Click the two ends of a boundary whose dashpots let the earthquake's waves out "
+                                 "instead of reflecting them (no support may hold it in a dynamic stage)"),
+                              &EditingTools::useAbsorbingBoundary);
+    absorbing->setIcon(dashpot_icon());
     bar->addSeparator();
     QAction* query = tool(tr("&Query Line"), QStringLiteral("queryLineAction"), QStringLiteral("query-line"),
                           tr("Click the two ends of a line across the result picture: the Query dock plots the "
@@ -216,7 +267,8 @@ void EditingTools::createActions(QMenu* edit)
     joint_set->setStatusTip(tr("Add a family of parallel joints"));
     tool_actions_ = {{region_tool_, region}, {joint_tool_, joint}, {fixed_tool_, fixed}, {roller_tool_, roller},
                      {load_tool_, load},     {pressure_tool_, pressure}, {point_tool_, point},
-                     {query_tool_, query},   {bolt_tool_, bolt},         {water_tool_, water}};
+                     {query_tool_, query},   {bolt_tool_, bolt},         {water_tool_, water},
+                     {absorbing_tool_, absorbing}};
     select_action_->setChecked(true);
     createToolOptions();
 }
@@ -397,6 +449,17 @@ void EditingTools::useMeasurementPoint() { setTool(point_tool_); }
 void EditingTools::useQueryLine() { setTool(query_tool_); }
 void EditingTools::useBolt() { setTool(bolt_tool_); }
 void EditingTools::useWaterTable() { setTool(water_tool_); }
+void EditingTools::useAbsorbingBoundary() { setTool(absorbing_tool_); }
+
+void EditingTools::useCompliantBase()
+{
+    if (document_->model().ground_motions.empty()) {
+        tell(tr("Import a ground motion first (Earthquake dock): the compliant base is where it enters the model."));
+        return;
+    }
+    setTool(base_tool_);
+    window_->statusBar()->showMessage(tr("Click the two ends of the compliant base"), 5000);
+}
 
 void EditingTools::selectItem(const ItemRef& ref)
 {
@@ -423,7 +486,7 @@ void EditingTools::setSnapping(bool grid, double spacing)
     options.spacing = grid_spacing_;
     view_->setGridSpacing(options.grid && activeTool() ? grid_spacing_ : 0.0);
     for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_,
-                           query_tool_, bolt_tool_, water_tool_})
+                           query_tool_, bolt_tool_, water_tool_, absorbing_tool_, base_tool_})
         tool->setSnapOptions(options);
     select_tool_->setSnapOptions(options);
 }

@@ -69,6 +69,11 @@ public slots:
     /// Edit ▸ Draw Water Table: a polyline drawn left to right becomes the piezometric line of
     /// the stage the picture shows (the Stages dock's choice), or of the model as drawn.
     void useWaterTable();
+    /// Edit ▸ Absorbing Boundary: two clicks give a boundary of dashpots that lets waves out.
+    void useAbsorbingBoundary();
+    /// Two clicks give the compliant base, where the earthquake enters (the Earthquake dock's
+    /// Draw button); refused with a message while the model has no ground motion.
+    void useCompliantBase();
     /// Edit ▸ Query Line: two clicks on the result picture give queryLineDrawn().
     void useQueryLine();
     /// Makes Select the tool and selects `ref` (highlighted in the view).
@@ -121,6 +126,8 @@ private:
     DrawTool* query_tool_ = nullptr;
     DrawTool* bolt_tool_ = nullptr;
     DrawTool* water_tool_ = nullptr;
+    DrawTool* absorbing_tool_ = nullptr;
+    DrawTool* base_tool_ = nullptr;
     QAction* select_action_ = nullptr;
     QAction* delete_action_ = nullptr;
     std::vector<std::pair<DrawTool*, QAction*>> tool_actions_;

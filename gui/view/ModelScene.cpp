@@ -415,6 +415,9 @@ void build_model_scene(vtkRenderer* renderer, const Preprocessed& p, const Scene
         Shapes bolts;  // rock bolts: a line between their anchors
         for (const Bolt& b : items.bolts) bolts.lines.push_back({b.from, b.to});
         add_shapes(renderer, bolts, palette::bolt, 3.0 * st.pixel, z);
+        // Dashpots let waves out where the model is cut off: drawn with the supports they replace.
+        add_shapes(renderer, absorbing_boundary_shapes(items, st.symbol), palette::absorbing, 2.0 * st.pixel, z);
+        add_shapes(renderer, compliant_base_shapes(items, st.symbol), palette::absorbing, 2.0 * st.pixel, z);
     }
     if (options.show_loads) {
         add_shapes(renderer, edge_pressure_shapes(items, st.symbol), palette::pressure, 1.5 * st.pixel, z);

@@ -28,6 +28,9 @@ inline constexpr Rgb bolt{0.55, 0.42, 0.00};            ///< rock bolts (steel, 
 /// The piezometric line and its ▽ symbol: a bright blue, far from the supports' navy and the
 /// light blue and teal fills, so the water reads as water.
 inline constexpr Rgb water{0.00, 0.50, 1.00};
+/// Absorbing boundaries and the compliant base (dashpots): a magenta far from the joints' red,
+/// the loads' purple and the supports' navy, so a boundary that lets waves out reads apart.
+inline constexpr Rgb absorbing{0.75, 0.05, 0.50};
 inline constexpr Rgb text{0.08, 0.08, 0.10};            ///< legend and label text
 inline constexpr Rgb legend_frame{0.55, 0.56, 0.58};
 inline constexpr Rgb unassigned{0.75, 0.75, 0.75};      ///< material index −1 or out of range

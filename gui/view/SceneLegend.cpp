@@ -135,6 +135,16 @@ Shapes icon_shapes(const LegendEntry& e, Point2 c, const Metrics& m)
     case LegendEntry::Icon::Diamond:
         s = measurement_symbol(c, m.icon_h * 0.9);
         break;
+    case LegendEntry::Icon::Dashpot:
+    case LegendEntry::Icon::CompliantBase: {  // a dashed line along the top with a dashpot hanging from it
+        const double size = m.icon_h / 1.5;
+        for (double x = -w; x < w; x += 0.95 * size)
+            s.lines.push_back({{c.x + x, c.y + h}, {c.x + std::min(w, x + 0.6 * size), c.y + h}});
+        s.append(dashpot_symbol({c.x, c.y + h}, {0, -1}, size));
+        if (e.icon == LegendEntry::Icon::CompliantBase)
+            s.append(arrow({c.x + 0.6 * w, c.y - h}, {c.x + 0.6 * w, c.y + h}, 5 * m.k, 5 * m.k, 1.5 * m.k));
+        break;
+    }
     case LegendEntry::Icon::WaterTable:  // the line with its ▽ (pixels: y grows upwards here too)
         s.lines.push_back({{c.x - w, c.y - 0.1 * h}, {c.x + w, c.y - 0.1 * h}});
         s.append(water_table_symbol({c.x, c.y - 0.1 * h}, m.icon_h * 0.7));
@@ -203,6 +213,10 @@ std::vector<LegendEntry> legend_entries(const Preprocessed& p, const SceneOption
         entries.push_back({LegendEntry::Icon::Roller, palette::support, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Roller"))});
     if (options.show_supports && !m.bolts.empty())
         entries.push_back({LegendEntry::Icon::Line, palette::bolt, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Bolt"))});
+    if (options.show_supports && !m.absorbing_boundaries.empty())
+        entries.push_back({LegendEntry::Icon::Dashpot, palette::absorbing, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Absorbing boundary"))});
+    if (options.show_supports && m.base_motion.kind == BaseMotion::Kind::Compliant)
+        entries.push_back({LegendEntry::Icon::CompliantBase, palette::absorbing, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Compliant base (earthquake input)"))});
     if (options.show_loads && !m.point_loads.empty())
         entries.push_back({LegendEntry::Icon::Arrow, palette::point_load, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "Point load"))});
     if (options.show_loads && !m.edge_pressures.empty())

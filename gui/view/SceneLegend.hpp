@@ -15,7 +15,7 @@ namespace mcdda::view {
 
 /// One row of the legend: an icon and its text.
 struct LegendEntry {
-    enum class Icon { Swatch, Line, Pin, Roller, Arrow, Pressure, Diamond, WaterTable };
+    enum class Icon { Swatch, Line, Pin, Roller, Arrow, Pressure, Diamond, WaterTable, Dashpot, CompliantBase };
     Icon icon = Icon::Swatch;
     Rgb color{};
     std::string label;

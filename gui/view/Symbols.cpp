@@ -187,6 +187,58 @@ Shapes edge_pressure_shapes(const Model& model, double size)
     return s;
 }
 
+Shapes dashpot_symbol(Point2 at, Point2 outward, double size)
+{
+    Shapes s;
+    const double rod = 0.7 * size, cup_from = 0.45 * size, cup_to = 1.1 * size, half = 0.32 * size;
+    const double ground = 1.4 * size;
+    s.lines.push_back({at, frame(at, outward, rod, 0)});
+    s.lines.push_back({frame(at, outward, rod, -0.8 * half), frame(at, outward, rod, 0.8 * half)});  // the piston
+    s.lines.push_back({frame(at, outward, cup_from, -half), frame(at, outward, cup_to, -half),
+                       frame(at, outward, cup_to, half), frame(at, outward, cup_from, half)});
+    s.lines.push_back({frame(at, outward, cup_to, 0), frame(at, outward, ground, 0)});
+    s.lines.push_back({frame(at, outward, ground, -1.4 * half), frame(at, outward, ground, 1.4 * half)});
+    for (int i = 0; i < 4; ++i) {  // hatching beyond the ground line
+        const double v = -1.4 * half + 0.8 * half * i;
+        s.lines.push_back({frame(at, outward, ground, v + 0.5 * half), frame(at, outward, ground + 0.25 * size, v)});
+    }
+    return s;
+}
+
+Shapes dashpot_line_shapes(const Model& model, Point2 from, Point2 to, double size, bool input)
+{
+    Shapes s;
+    const double len = std::hypot(to.x - from.x, to.y - from.y);
+    if (!(len > 0.0) || !std::isfinite(len)) return s;
+    const Point2 d{(to.x - from.x) / len, (to.y - from.y) / len};
+    // Dashed, so it is not taken for a block edge or a roller's line.
+    const double dash = 0.6 * size, gap = 0.35 * size;
+    for (double t = 0.0; t < len; t += dash + gap)
+        s.lines.push_back({add(from, scale(d, t)), add(from, scale(d, std::min(len, t + dash)))});
+    const Point2 n = normal_into_material(model, from, to, 0.25 * size);
+    const Point2 out{-n.x, -n.y};
+    for (const Point2& at : markers_along(from, to, 1.2 * size)) {
+        s.append(dashpot_symbol(at, out, 0.8 * size));
+        if (input)  // the wave coming in: an arrow from beyond the ground line up to the boundary
+            s.append(arrow(add(at, add(scale(out, 1.6 * size), scale(d, 0.5 * size))), add(at, scale(d, 0.5 * size)),
+                           0.45 * size, 0.35 * size, 0.08 * size));
+    }
+    return s;
+}
+
+Shapes absorbing_boundary_shapes(const Model& model, double size)
+{
+    Shapes s;
+    for (const AbsorbingBoundary& a : model.absorbing_boundaries) s.append(dashpot_line_shapes(model, a.from, a.to, size));
+    return s;
+}
+
+Shapes compliant_base_shapes(const Model& model, double size)
+{
+    if (model.base_motion.kind != BaseMotion::Kind::Compliant) return {};
+    return dashpot_line_shapes(model, model.base_motion.from, model.base_motion.to, size, true);
+}
+
 Shapes measurement_shapes(const Model& model, double size)
 {
     Shapes s;

@@ -31,6 +31,20 @@ Shapes water_table_symbol(Point2 at, double size);
 /// line at `symbol_x`. Empty when the ground is dry.
 Shapes water_table_shapes(const Water& water, double xmin, double xmax, double symbol_x, double size);
 
+/// A dashpot (viscous damper) standing on the boundary at `at` and reaching out along the unit
+/// vector `outward`: a rod to a piston inside a cylinder open towards the boundary, and the
+/// cylinder's rod to a hatched ground line.
+Shapes dashpot_symbol(Point2 at, Point2 outward, double size);
+
+/// A dashed line along [from, to] with dashpots spread along it on the side away from the rock:
+/// an absorbing (Lysmer–Kuhlemeyer) boundary. With `input` an arrow into the rock beside every
+/// dashpot: the compliant base, where the earthquake enters.
+Shapes dashpot_line_shapes(const Model& model, Point2 from, Point2 to, double size, bool input = false);
+/// Every absorbing boundary of `model`.
+Shapes absorbing_boundary_shapes(const Model& model, double size);
+/// The compliant base of `model` (none unless its base motion is compliant).
+Shapes compliant_base_shapes(const Model& model, double size);
+
 /// Pin symbols at every fixed point, drawn on the side away from the rock.
 Shapes fixed_point_shapes(const Model& model, double size);
 /// The roller lines and roller markers spread along them, one marker per fixed direction.

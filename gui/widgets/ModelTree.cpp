@@ -158,6 +158,13 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
         row(supports, to_qt(m.rollers[i].name),
             tr("roller %1 to %2").arg(point_text(m.rollers[i].from), point_text(m.rollers[i].to)),
             {Kind::Roller, static_cast<int>(i)});
+    if (!m.absorbing_boundaries.empty()) {
+        QTreeWidgetItem* absorbing = group(tr("Absorbing boundaries"), m.absorbing_boundaries.size());
+        for (std::size_t i = 0; i < m.absorbing_boundaries.size(); ++i)
+            row(absorbing, to_qt(m.absorbing_boundaries[i].name),
+                tr("dashpots %1 to %2").arg(point_text(m.absorbing_boundaries[i].from), point_text(m.absorbing_boundaries[i].to)),
+                {Kind::AbsorbingBoundary, static_cast<int>(i)});
+    }
     QTreeWidgetItem* loads = group(tr("Loads"), m.point_loads.size() + m.edge_pressures.size());
     for (std::size_t i = 0; i < m.point_loads.size(); ++i)
         row(loads, to_qt(m.point_loads[i].name), tr("point load at %1").arg(point_text(m.point_loads[i].point)),

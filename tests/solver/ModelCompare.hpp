@@ -22,6 +22,11 @@ public:
         eq(p + "/unit_weight", x.unit_weight, y.unit_weight);
     }
 
+    void seismic(const std::string& p, const SeismicCoefficient& x, const SeismicCoefficient& y) {
+        eq(p + "/kh", x.kh, y.kh);
+        eq(p + "/kv", x.kv, y.kv);
+    }
+
     std::string compare(const Model& a, const Model& b) {
         out_.str({});
         eq("name", a.name, b.name);
@@ -119,6 +124,31 @@ public:
         eq("/initial_stress/surface_y", s.surface_y, t.surface_y);
         eq("/initial_stress/k0", s.k0, t.k0);
         water("/water", a.water, b.water);
+        list("/ground_motions", a.ground_motions, b.ground_motions,
+             [this](const std::string& p, const GroundMotion& x, const GroundMotion& y) {
+                 eq(p + "/name", x.name, y.name);
+                 eq(p + "/file", x.file, y.file);
+                 eq(p + "/points", static_cast<long>(x.points.size()), static_cast<long>(y.points.size()));
+                 for (std::size_t k = 0; k < std::min(x.points.size(), y.points.size()); ++k) {
+                     eq(p + "/points/" + std::to_string(k) + "/0", x.points[k][0], y.points[k][0]);
+                     eq(p + "/points/" + std::to_string(k) + "/1", x.points[k][1], y.points[k][1]);
+                 }
+                 eq(p + "/units", static_cast<int>(x.units), static_cast<int>(y.units));
+                 eq(p + "/scale", x.scale, y.scale);
+                 eq(p + "/baseline_correction", x.baseline_correction, y.baseline_correction);
+             });
+        eq("/base_motion/kind", static_cast<int>(a.base_motion.kind), static_cast<int>(b.base_motion.kind));
+        eq("/base_motion/x", a.base_motion.x, b.base_motion.x);
+        eq("/base_motion/y", a.base_motion.y, b.base_motion.y);
+        eq("/base_motion/from", a.base_motion.from, b.base_motion.from);
+        eq("/base_motion/to", a.base_motion.to, b.base_motion.to);
+        list("/absorbing_boundaries", a.absorbing_boundaries, b.absorbing_boundaries,
+             [this](const std::string& p, const AbsorbingBoundary& x, const AbsorbingBoundary& y) {
+                 eq(p + "/name", x.name, y.name);
+                 eq(p + "/from", x.from, y.from);
+                 eq(p + "/to", x.to, y.to);
+             });
+        seismic("/seismic_coefficient", a.seismic_coefficient, b.seismic_coefficient);
         list("/measurement_points", a.measurement_points, b.measurement_points,
              [this](const std::string& p, const MeasurementPoint& x, const MeasurementPoint& y) {
                  eq(p + "/name", x.name, y.name);
@@ -150,6 +180,10 @@ public:
         eq("/analysis/output_every", u.output_every, v.output_every);
         eq("/analysis/plasticity", u.plasticity, v.plasticity);
         eq("/analysis/equilibrium_ratio", u.equilibrium_ratio, v.equilibrium_ratio);
+        eq("/analysis/newmark_gamma", u.newmark_gamma, v.newmark_gamma);
+        eq("/analysis/damping_ratio", u.damping_ratio, v.damping_ratio);
+        eq("/analysis/damping_frequency", u.damping_frequency, v.damping_frequency);
+        eq("/analysis/damping_frequency_2", u.damping_frequency_2, v.damping_frequency_2);
         list("/bolts", a.bolts, b.bolts, [this](const std::string& p, const Bolt& x, const Bolt& y) {
             eq(p + "/name", x.name, y.name);
             eq(p + "/from", x.from, y.from);
@@ -179,6 +213,9 @@ public:
             eq(p + "/target_ratio", x.target_ratio, y.target_ratio);
             eq(p + "/water?", x.water.has_value(), y.water.has_value());
             if (x.water && y.water) water(p + "/water", *x.water, *y.water);
+            eq(p + "/seismic_coefficient?", x.seismic_coefficient.has_value(), y.seismic_coefficient.has_value());
+            if (x.seismic_coefficient && y.seismic_coefficient)
+                seismic(p + "/seismic_coefficient", *x.seismic_coefficient, *y.seismic_coefficient);
         });
         return out_.str();
     }

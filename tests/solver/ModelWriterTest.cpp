@@ -73,9 +73,16 @@ Model everything_model() {
       "measurement_points": [{"name": "crown", "point": [0, 3]}],
       "mesh": {"size": 0.5, "min_angle": 28, "grading": 0.2, "max_elements": 12345,
                "local": [{"point": [0, 0], "size": 0.1, "radius": 3}, {"from": [0, 0], "to": [1, 1], "size": 0.2}]},
+      "ground_motions": [{"name": "pulse", "points": [[0, 0], [0.1, 0.25], [0.2, -0.1], [0.3, 0]], "units": "g",
+                          "scale": 1.5, "baseline_correction": false},
+                         {"name": "vertical", "points": [[0, 0], [0.5, 1.5]], "units": "m/s2"}],
+      "base_motion": {"type": "compliant", "x": "pulse", "y": "vertical", "from": [-10, -10], "to": [10, -10]},
+      "absorbing_boundaries": [{"name": "left", "from": [-10, -10], "to": [-10, 10]}],
+      "seismic_coefficient": {"kh": -0.15, "kv": 0.05},
       "analysis": {"type": "dynamic", "steps": 7, "time_step": 0.003, "max_displacement_ratio": 0.001,
                    "penalty": 1e10, "dynamic_ratio": 0.9, "open_close_iterations": 6, "plastic_iterations": 50,
-                   "plastic_tolerance": 1e-5, "output_every": 3, "plasticity": false}})";
+                   "plastic_tolerance": 1e-5, "output_every": 3, "plasticity": false, "newmark_gamma": 0.55,
+                   "damping_ratio": 0.05, "damping_frequency": 2, "damping_frequency_2": 8}})";
     const ReadResult r = read_model_text(text);
     EXPECT_TRUE(r.model) << all_messages(r.diagnostics);
     return r.model ? *r.model : Model{};
