@@ -2150,22 +2150,22 @@
         <translation>Festigkeitsreduktion abgeschlossen: %1.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="590"/>
+        <location filename="../gui/MainWindow.cpp" line="595"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="609"/>
+        <location filename="../gui/MainWindow.cpp" line="614"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="609"/>
+        <location filename="../gui/MainWindow.cpp" line="614"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="610"/>
+        <location filename="../gui/MainWindow.cpp" line="615"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
@@ -3202,37 +3202,37 @@
 <context>
     <name>mcdda::gui::RecordPlot</name>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="40"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="41"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="71"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="76"/>
         <source>g</source>
         <translation>g</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="71"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="76"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="89"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="94"/>
         <source>acceleration (%1)</source>
         <translation>Beschleunigung (%1)</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="92"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="97"/>
         <source>No record chosen.</source>
         <translation>Keine Aufzeichnung gewählt.</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="94"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="99"/>
         <source>The record has no usable points (at least two, times increasing).</source>
         <translation>Die Aufzeichnung hat keine brauchbaren Punkte (mindestens zwei, mit steigenden Zeiten).</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="96"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="101"/>
         <source>Peak %1 %2 at %3 s, duration %4 s</source>
         <translation>Spitzenwert %1 %2 bei %3 s, Dauer %4 s</translation>
     </message>
@@ -3552,42 +3552,52 @@
 <context>
     <name>mcdda::gui::RunMessages</name>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="22"/>
+        <location filename="../gui/session/RunMessages.cpp" line="26"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="26"/>
+        <location filename="../gui/session/RunMessages.cpp" line="30"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="43"/>
+        <location filename="../gui/session/RunMessages.cpp" line="47"/>
         <source>%1 blocks, %2 nodes, %3 triangles</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Dreiecke</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="48"/>
+        <location filename="../gui/session/RunMessages.cpp" line="52"/>
         <source>angles: smallest %1°, largest %2°</source>
         <translation>Winkel: kleinster %1°, größter %2°</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="51"/>
+        <location filename="../gui/session/RunMessages.cpp" line="55"/>
         <source>areas: smallest %1 m², largest %2 m², total %3 m²</source>
         <translation>Flächen: kleinste %1 m², größte %2 m², gesamt %3 m²</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="54"/>
+        <location filename="../gui/session/RunMessages.cpp" line="58"/>
         <source>sharpest block corner: %1°</source>
         <translation>spitzeste Blockecke: %1°</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="56"/>
+        <location filename="../gui/session/RunMessages.cpp" line="60"/>
         <source>triangles by smallest angle: %1</source>
         <translation>Dreiecke nach kleinstem Winkel: %1</translation>
     </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="72"/>
+        <source>Permanent displacement (relative to the base): largest %1 mm at (%2, %3)</source>
+        <translation>Bleibende Verschiebung (relativ zur Basis): größte %1 mm bei (%2, %3)</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="78"/>
+        <source>; %1: ux %2 mm, uy %3 mm</source>
+        <translation>; %1: ux %2 mm, uy %3 mm</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="63"/>
+        <location filename="../gui/session/RunMessages.cpp" line="88"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -3595,17 +3605,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="66"/>
+        <location filename="../gui/session/RunMessages.cpp" line="91"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="79"/>
+        <location filename="../gui/session/RunMessages.cpp" line="104"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="88"/>
+        <location filename="../gui/session/RunMessages.cpp" line="113"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -3613,12 +3623,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="94"/>
+        <location filename="../gui/session/RunMessages.cpp" line="119"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="109"/>
+        <location filename="../gui/session/RunMessages.cpp" line="134"/>
         <source>Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding</source>
         <translation>
             <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkt plastifiziert</numerusform>
@@ -3626,12 +3636,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="120"/>
+        <location filename="../gui/session/RunMessages.cpp" line="145"/>
         <source>Strength reduction: trial %1, strengths divided by %2...</source>
         <translation>Festigkeitsreduktion: Versuch %1, Festigkeiten geteilt durch %2 …</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="127"/>
+        <location filename="../gui/session/RunMessages.cpp" line="152"/>
         <source>largest displacement %1 m, %n iteration(s), %2 s</source>
         <translation>
             <numerusform>größte Verschiebung %1 m, %n Iteration, %2 s</numerusform>
@@ -3639,37 +3649,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="133"/>
+        <location filename="../gui/session/RunMessages.cpp" line="158"/>
         <source>Trial %1: F = %2 stands (%3)</source>
         <translation>Versuch %1: F = %2 steht (%3)</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="137"/>
+        <location filename="../gui/session/RunMessages.cpp" line="162"/>
         <source>Trial %1: F = %2 does not stand (%3): %4</source>
         <translation>Versuch %1: F = %2 steht nicht (%3): %4</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="147"/>
+        <location filename="../gui/session/RunMessages.cpp" line="172"/>
         <source>above %1</source>
         <translation>über %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="149"/>
+        <location filename="../gui/session/RunMessages.cpp" line="174"/>
         <source>below %1</source>
         <translation>unter %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="151"/>
+        <location filename="../gui/session/RunMessages.cpp" line="176"/>
         <source>between %1 and %2</source>
         <translation>zwischen %1 und %2</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="154"/>
+        <location filename="../gui/session/RunMessages.cpp" line="179"/>
         <source>not found</source>
         <translation>nicht gefunden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="160"/>
+        <location filename="../gui/session/RunMessages.cpp" line="185"/>
         <source>Factor of safety %1 (%n trial(s)).</source>
         <translation>
             <numerusform>Sicherheitsfaktor %1 (%n Versuch).</numerusform>
@@ -3677,7 +3687,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="162"/>
+        <location filename="../gui/session/RunMessages.cpp" line="187"/>
         <source>Factor of safety %1: the model stands with its strengths divided by %2, not by %3 (%n trial(s)).</source>
         <translation>
             <numerusform>Sicherheitsfaktor %1: das Modell steht mit durch %2 geteilten Festigkeiten, nicht mit durch %3 geteilten (%n Versuch).</numerusform>
@@ -3685,7 +3695,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="173"/>
+        <location filename="../gui/session/RunMessages.cpp" line="198"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
@@ -3693,22 +3703,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="178"/>
+        <location filename="../gui/session/RunMessages.cpp" line="203"/>
         <source>Run ended but the model is not in equilibrium: %1</source>
         <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="180"/>
+        <location filename="../gui/session/RunMessages.cpp" line="205"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="181"/>
+        <location filename="../gui/session/RunMessages.cpp" line="206"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="182"/>
+        <location filename="../gui/session/RunMessages.cpp" line="207"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>

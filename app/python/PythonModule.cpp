@@ -81,7 +81,7 @@ py::dict fields_dict(const StepFields& f)
     return d;
 }
 
-py::dict history_dict(const std::vector<HistoryRow>& rows)
+py::dict history_dict(const std::vector<HistoryRow>& rows, const Model& model)
 {
     auto column = [&](auto member) {
         using T = std::decay_t<decltype(rows.front().*member)>;
@@ -98,6 +98,23 @@ py::dict history_dict(const std::vector<HistoryRow>& rows)
     d["max_displacement"] = column(&HistoryRow::max_displacement);
     d["yielding"] = column(&HistoryRow::yielding);
     d["iterations"] = column(&HistoryRow::iterations);
+    // Per measurement point (and the base's record with a base motion) the motion's columns,
+    // named as in history.csv ("<point>:ux", "base:ax"): the dict stays one DataFrame.
+    auto motion = [&](const std::string& prefix, auto pick) {
+        for (const auto& [key, member] : {std::pair{"ux", &HistoryRow::PointMotion::ux}, {"uy", &HistoryRow::PointMotion::uy},
+                                          {"vx", &HistoryRow::PointMotion::vx}, {"vy", &HistoryRow::PointMotion::vy},
+                                          {"ax", &HistoryRow::PointMotion::ax}, {"ay", &HistoryRow::PointMotion::ay}}) {
+            std::vector<double> values;
+            values.reserve(rows.size());
+            for (const HistoryRow& r : rows) values.push_back(pick(r).*member);
+            d[py::str(prefix + ":" + key)] = array(values);
+        }
+    };
+    for (std::size_t i = 0; i < model.measurement_points.size(); ++i)
+        motion(model.measurement_points[i].name, [i](const HistoryRow& r) {
+            return i < r.points.size() ? r.points[i] : HistoryRow::PointMotion{};
+        });
+    if (model.base_motion.present()) motion("base", [](const HistoryRow& r) { return r.base; });
     return d;
 }
 
@@ -151,7 +168,18 @@ py::object run(Analysis& analysis, const std::optional<std::string>& output_fold
     out["collapse_carried"] = r.collapse_carried;
     out["collapse_not_carried"] = r.collapse_not_carried;
     out["seconds"] = r.seconds;
-    out["history"] = history_dict(r.history);
+    out["history"] = history_dict(r.history, analysis.model());
+    if (r.shaken) {
+        py::dict permanent;
+        permanent["largest"] = r.permanent_displacement;
+        py::dict points;
+        const auto& names = analysis.model().measurement_points;
+        for (std::size_t i = 0; i < names.size() && i < r.permanent_displacement_points.size(); ++i)
+            points[py::str(names[i].name)] = py::make_tuple(r.permanent_displacement_points[i][0],
+                                                            r.permanent_displacement_points[i][1]);
+        permanent["points"] = points;
+        out["permanent_displacement"] = permanent;
+    }
     py::list saved;
     for (const StepFields& f : r.saved) saved.append(fields_dict(f));
     out["fields"] = saved;

@@ -5,6 +5,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QFont>
 #include <QLabel>
 #include <QLocale>
 #include <QLineSeries>
@@ -38,6 +39,10 @@ RecordPlot::RecordPlot(QWidget* parent) : QWidget(parent)
     x_axis_ = new QValueAxis(chart);
     y_axis_ = new QValueAxis(chart);
     x_axis_->setTitleText(tr("time (s)"));
+    QFont title = x_axis_->titleFont();
+    title.setPointSizeF(0.85 * title.pointSizeF());  // "acceleration (m/s²)" fits beside a short plot
+    x_axis_->setTitleFont(title);
+    y_axis_->setTitleFont(title);
     chart->addAxis(x_axis_, Qt::AlignBottom);
     chart->addAxis(y_axis_, Qt::AlignLeft);
     for (QXYSeries* s : {static_cast<QXYSeries*>(series_), static_cast<QXYSeries*>(peak_)}) {

@@ -217,11 +217,11 @@ Shapes dashpot_line_shapes(const Model& model, Point2 from, Point2 to, double si
         s.lines.push_back({add(from, scale(d, t)), add(from, scale(d, std::min(len, t + dash)))});
     const Point2 n = normal_into_material(model, from, to, 0.25 * size);
     const Point2 out{-n.x, -n.y};
-    for (const Point2& at : markers_along(from, to, 1.2 * size)) {
-        s.append(dashpot_symbol(at, out, 0.8 * size));
+    for (const Point2& at : markers_along(from, to, 1.5 * size)) {
+        s.append(dashpot_symbol(at, out, 1.2 * size));
         if (input)  // the wave coming in: an arrow from beyond the ground line up to the boundary
-            s.append(arrow(add(at, add(scale(out, 1.6 * size), scale(d, 0.5 * size))), add(at, scale(d, 0.5 * size)),
-                           0.45 * size, 0.35 * size, 0.08 * size));
+            s.append(arrow(add(at, add(scale(out, 2.0 * size), scale(d, 0.6 * size))), add(at, scale(d, 0.6 * size)),
+                           0.6 * size, 0.5 * size, 0.12 * size));
     }
     return s;
 }

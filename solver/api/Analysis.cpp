@@ -45,8 +45,9 @@ double largest_displacement(const SimulationState& s)
     return largest;
 }
 
-HistoryRow history_row(const StepReport& report, const SimulationState& s)
+HistoryRow history_row(const StepReport& report, const Simulation& simulation)
 {
+    const SimulationState& s = simulation.state();
     HistoryRow row;
     row.step = report.step;
     row.stage = report.stage + 1;
@@ -55,6 +56,16 @@ HistoryRow history_row(const StepReport& report, const SimulationState& s)
     row.max_displacement = largest_displacement(s);
     row.yielding = report.yielding;
     row.iterations = report.plastic_iterations;
+    const Simulation::BaseState base = simulation.base_state(s.time);
+    const Eigen::Vector2d frame = simulation.relative_to_base() ? base.acceleration : Eigen::Vector2d::Zero();
+    const Eigen::VectorXd u = s.reported_displacement();
+    for (int node : simulation.boundary_conditions().measurement_nodes) {
+        const Eigen::Index x = 2 * node;
+        row.points.push_back({u[x], u[x + 1], s.velocity[x], s.velocity[x + 1], s.acceleration[x] + frame.x(),
+                              s.acceleration[x + 1] + frame.y()});
+    }
+    row.base = {base.displacement.x(), base.displacement.y(), base.velocity.x(), base.velocity.y(), base.acceleration.x(),
+                base.acceleration.y()};
     return row;
 }
 
@@ -228,7 +239,7 @@ RunResult Analysis::run(const RunOptions& options)
     const int keep_every = options.keep_every != 0 ? options.keep_every : std::max(1, p.model.analysis.output_every);
     bool stopped_by_callback = false;
     auto on_step = [&](const StepReport& report) {
-        result.history.push_back(history_row(report, simulation.state()));
+        result.history.push_back(history_row(report, simulation));
         if (keep_every > 0 && report.step % keep_every == 0) result.saved.push_back(fields_of(simulation));
         if (options.on_step && !options.on_step(progress_of(result.history.back(), simulation)))
             stopped_by_callback = true;
@@ -247,6 +258,14 @@ RunResult Analysis::run(const RunOptions& options)
     result.unbalanced_ratio = s.unbalanced_ratio;
     result.collapse_carried = end.collapse_carried;
     result.collapse_not_carried = end.collapse_not_carried;
+    if (simulation.full_model().base_motion.present()) {
+        result.shaken = true;
+        const Eigen::VectorXd u = simulation.displacement_since_shaking();
+        for (Eigen::Index n = 0; 2 * n + 1 < u.size(); ++n)
+            result.permanent_displacement = std::max(result.permanent_displacement, std::hypot(u[2 * n], u[2 * n + 1]));
+        for (int node : simulation.boundary_conditions().measurement_nodes)
+            result.permanent_displacement_points.push_back({u[2 * node], u[2 * node + 1]});
+    }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;
 }
@@ -269,7 +288,7 @@ RunResult Analysis::run_strength_reduction(const RunOptions& options)
     StrengthReductionSearch::Callbacks callbacks;
     callbacks.should_stop = [&] { return stopped_by_callback || impl_->cancel.load(); };
     callbacks.on_step = [&](const StepReport& report) {  // the construction stages
-        result.history.push_back(history_row(report, search->simulation().state()));
+        result.history.push_back(history_row(report, search->simulation()));
         if (options.on_step && !options.on_step(progress_of(result.history.back(), search->simulation())))
             stopped_by_callback = true;
     };

@@ -97,6 +97,7 @@ class EarthquakeTest : public QObject {
 private slots:
     void initTestCase();
     void importedRecordIsPlotted();
+    void at2RecordInG();
     void badRecordIsRefusedInWords();
     void absorbingBoundaryTool();
     void baseAndSeismicCoefficientSavedAndReadBack();
@@ -181,6 +182,23 @@ void EarthquakeTest::importedRecordIsPlotted()
     doc->undoStack()->redo();
     QCOMPARE(doc->model().ground_motions.size(), std::size_t(1));
     QCOMPARE(plot->series()->count(), 201);
+}
+
+// A PEER .AT2 file (the shipped synthetic record) is read in g: its peak is 0.3 g.
+void EarthquakeTest::at2RecordInG()
+{
+    MainWindow window;
+    QVERIFY(show_square(window));
+    QTRY_VERIFY(settled(window));
+    gui::EarthquakePanel* panel = show_panel(window);
+    QVERIFY(panel->importRecord(QStringLiteral(MCDDA_EXAMPLES_DIR "/records/synthetic-0.3g.AT2")));
+    const GroundMotion& g = window.document()->model().ground_motions.at(0);
+    QVERIFY(g.units == GroundMotion::Units::G);
+    QCOMPARE(g.points.size(), std::size_t(1400));
+    auto* baseline = panel->findChild<QCheckBox*>(QStringLiteral("recordBaseline"));
+    baseline->setChecked(false);  // the file's own peak
+    QVERIFY2(std::fabs(panel->recordPlot()->peak() - 0.3) < 0.005, qPrintable(panel->recordPlot()->summary()));
+    QVERIFY(std::fabs(panel->recordPlot()->duration() - 13.99) < 0.011);
 }
 
 // A file the reader refuses (a word among the numbers, or no file at all) changes nothing and is
@@ -316,6 +334,7 @@ void EarthquakeTest::baseAndSeismicCoefficientSavedAndReadBack()
     for (const view::LegendEntry& e : view::legend_entries(*window.modelView()->scene(), window.modelView()->sceneOptions()))
         legend = legend || e.icon == view::LegendEntry::Icon::CompliantBase;
     QVERIFY(legend);
+    window.modelView()->grabFrame().save(QStringLiteral(MCDDA_TEST_OUTPUT_DIR "/earthquake_compliant_base.png"));
     doc->undoStack()->undo();
     QVERIFY(doc->model().base_motion.kind == BaseMotion::Kind::Rigid);
     doc->undoStack()->redo();
@@ -456,6 +475,7 @@ void EarthquakeTest::slidingBlockRunInTheWindow()
     QVERIFY2(std::fabs(peak - 0.3 * 9.81) < 0.1, qPrintable(QString::number(peak)));  // the record, in m/s²
     plot->setColumns(QStringLiteral("block:vx"), QStringLiteral("time"));
     QVERIFY(plot->series()->count() > 100);
+    window.grab().save(QStringLiteral(MCDDA_TEST_OUTPUT_DIR "/earthquake_window.png"));
 }
 
 QTEST_MAIN(EarthquakeTest)

@@ -221,6 +221,24 @@ class RunTest(unittest.TestCase):
         self.assertEqual(statuses[45], "completed")
         self.assertNotEqual(statuses[30], "completed")
 
+    def test_shaking_histories_and_permanent_displacement(self):
+        """Newmark's sliding block: the point's motion, the base's record, what the shaking left."""
+        a = mcdda.Analysis.from_file(os.path.join(EXAMPLES, "newmark-sliding-block.json"), ["/analysis/steps=600"])
+        r = a.run()
+        self.assertEqual(r["status"], "completed", r["message"])
+        h = r["history"]
+        for key in ("ux", "uy", "vx", "vy", "ax", "ay"):
+            self.assertEqual(len(h["block:" + key]), 600, key)
+            self.assertEqual(len(h["base:" + key]), 600, key)
+        # The base follows the record: 0.3 g at its peaks.
+        self.assertAlmostEqual(max(h["base:ax"]), 0.3 * 9.81, delta=0.01)
+        # The block slides down the joint (towards -x) and ends where the summary says.
+        self.assertLess(h["block:ux"][-1], -0.01)
+        largest = r["permanent_displacement"]["largest"]
+        ux, uy = r["permanent_displacement"]["points"]["block"]
+        self.assertGreaterEqual(largest, (ux * ux + uy * uy) ** 0.5 - 1e-12)
+        self.assertAlmostEqual(ux, h["block:ux"][-1], delta=1e-9)
+
 
 if __name__ == "__main__":
     unittest.main()

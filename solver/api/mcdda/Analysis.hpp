@@ -13,6 +13,7 @@
 #include "model/Diagnostic.hpp"
 #include "model/Model.hpp"
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -73,6 +74,13 @@ struct HistoryRow {
     double max_displacement = 0.0;  ///< largest nodal displacement magnitude (m)
     int yielding = 0;               ///< elements yielding in the step
     int iterations = 0;             ///< equilibrium iterations of the step
+    /// Per measurement point: displacement (m), velocity (m/s), acceleration (m/s²), x and y,
+    /// as history.csv's columns (relative to a rigid base, accelerations absolute).
+    struct PointMotion {
+        double ux = 0.0, uy = 0.0, vx = 0.0, vy = 0.0, ax = 0.0, ay = 0.0;
+    };
+    std::vector<PointMotion> points;
+    PointMotion base;  ///< the base motion's record as applied (zero without one)
 };
 
 /// What the progress callback hears after each accepted step.
@@ -115,6 +123,11 @@ struct RunResult {
     double collapse_carried = 0.0, collapse_not_carried = 0.0;
     std::vector<HistoryRow> history;
     std::vector<StepFields> saved;  ///< fields kept (RunOptions::keep_every), the last step last
+    /// With a base motion: summary.json's permanent_displacement — the largest (m) and each
+    /// measurement point's (ux, uy) since the first dynamic stage began, relative to the base.
+    bool shaken = false;
+    double permanent_displacement = 0.0;
+    std::vector<std::array<double, 2>> permanent_displacement_points;
     double seconds = 0.0;           ///< wall-clock time of the run
 
     /// A strength reduction analysis (the model's or its last stage's): the factor of safety,
