@@ -83,6 +83,15 @@ void check_supports_on_blocks(const Model& model, const std::vector<Block>& bloc
             diagnostics.push_back({Diagnostic::Severity::Error, "/edge_pressures/" + std::to_string(i),
                                    "pressure \"" + e.name + "\" lies along no block boundary"});
     }
+    for (std::size_t i = 0; i < model.absorbing_boundaries.size(); ++i) {
+        const AbsorbingBoundary& a = model.absorbing_boundaries[i];
+        if (!along_block_boundary(blocks, a.from, a.to, tolerance, false))
+            diagnostics.push_back({Diagnostic::Severity::Error, "/absorbing_boundaries/" + std::to_string(i),
+                                   "absorbing boundary \"" + a.name + "\" lies along no block boundary"});
+    }
+    if (model.base_motion.kind == BaseMotion::Kind::Compliant &&
+        !along_block_boundary(blocks, model.base_motion.from, model.base_motion.to, tolerance, false))
+        diagnostics.push_back({Diagnostic::Severity::Error, "/base_motion", "the compliant base lies along no block boundary"});
     // Points go to the nearest node, wherever they are: one outside every block is a mistake
     // (a typo in a coordinate) that would otherwise load, fix or measure some corner silently.
     auto check_point = [&](Point2 p, const std::string& path, const std::string& what) {

@@ -206,6 +206,10 @@ TEST(EarthquakeInput, BadRecordsBasesAndDashpots) {
     expect_error({shaken, R"(/analysis={"type": "dynamic", "time_step": 0.01})",
                   R"(/absorbing_boundaries=[{"name": "side", "from": [10, 0], "to": [10, 10]}])"},
                  "/analysis/time_step", "crosses 4 elements");
+    // Dashpots that lie along no boundary would silently do nothing.
+    expect_error({shaken, R"(/analysis={"type": "dynamic", "time_step": 0.001})",
+                  R"(/absorbing_boundaries=[{"name": "inside", "from": [5, 0], "to": [5, 10]}])"},
+                 "/absorbing_boundaries/0", "absorbing boundary \"inside\" lies along no block boundary");
     expect_error({R"(/seismic_coefficient={"kh": 3, "kv": 0})"}, "/seismic_coefficient/kh", "between -2 and 2");
     expect_error({R"(/seismic_coefficient={"kh": 0.1, "kz": 0})"}, "/seismic_coefficient/kz", "unknown key");
 }
