@@ -299,6 +299,7 @@ QString ModelDocument::itemName(const ItemRef& ref) const {
     case Kind::AbsorbingBoundary:
         item = named(model_.absorbing_boundaries[i].name, tr("absorbing boundary %1"));
         break;
+    case Kind::CompliantBase: item = tr("the compliant base"); break;
     case Kind::WaterTable:
         item = ref.index == 0 ? tr("the water table")
                               : tr("the water table of stage \"%1\"")

@@ -75,6 +75,9 @@ std::vector<PointOf<M>*> points_of(M& m, Kind kind, int index)
     case Kind::MeasurementPoint:
         if (in_range(m.measurement_points, index)) out.push_back(&m.measurement_points[index].point);
         break;
+    case Kind::CompliantBase:
+        if (index == 0 && m.base_motion.kind == BaseMotion::Kind::Compliant) out = {&m.base_motion.from, &m.base_motion.to};
+        break;
     case Kind::AbsorbingBoundary:
         if (in_range(m.absorbing_boundaries, index))
             out = {&m.absorbing_boundaries[index].from, &m.absorbing_boundaries[index].to};
@@ -171,6 +174,11 @@ ItemRef pick_item(const Model& model, const Point2& p, double tolerance, int sta
         consider(model.absorbing_boundaries[i].from, Kind::AbsorbingBoundary, i, 0, 0);
         consider(model.absorbing_boundaries[i].to, Kind::AbsorbingBoundary, i, 0, 1);
     }
+    const bool compliant = model.base_motion.kind == BaseMotion::Kind::Compliant;
+    if (compliant) {
+        consider(model.base_motion.from, Kind::CompliantBase, 0, 0, 0);
+        consider(model.base_motion.to, Kind::CompliantBase, 0, 0, 1);
+    }
     for (int i = 0; i < static_cast<int>(model.fixed_points.size()); ++i)
         consider(model.fixed_points[i].point, Kind::FixedPoint, i, 0, -1);
     for (int i = 0; i < static_cast<int>(model.point_loads.size()); ++i)
@@ -203,6 +211,7 @@ ItemRef pick_item(const Model& model, const Point2& p, double tolerance, int sta
         line({model.edge_pressures[i].from, model.edge_pressures[i].to}, false, Kind::EdgePressure, i);
     for (int i = 0; i < static_cast<int>(model.absorbing_boundaries.size()); ++i)
         line({model.absorbing_boundaries[i].from, model.absorbing_boundaries[i].to}, false, Kind::AbsorbingBoundary, i);
+    if (compliant) line({model.base_motion.from, model.base_motion.to}, false, Kind::CompliantBase, 0);
     if (water_line && !model.regions.empty()) {
         // As drawn: held level from its end points to the model's sides.
         std::vector<Point2> drawn = *water_line;
@@ -313,6 +322,7 @@ bool delete_item(Model& model, const ItemRef& ref)
     case Kind::EdgePressure: erase_at(model.edge_pressures, ref.index); break;
     case Kind::MeasurementPoint: erase_at(model.measurement_points, ref.index); break;
     case Kind::AbsorbingBoundary: erase_at(model.absorbing_boundaries, ref.index); break;
+    case Kind::CompliantBase: model.base_motion = BaseMotion{}; break;
     case Kind::WaterTable:  // handled above
     case Kind::None: return false;
     }

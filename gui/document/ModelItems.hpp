@@ -13,10 +13,10 @@ namespace mcdda::gui {
 
 struct ItemRef {
     enum class Kind { None, Region, Joint, FixedPoint, Roller, PointLoad, EdgePressure, MeasurementPoint, WaterTable,
-                      AbsorbingBoundary };
+                      AbsorbingBoundary, CompliantBase };
     Kind kind = Kind::None;
     /// Into the model's list of that kind; a water table: 0 = the model's (Model::water), k = the
-    /// one stage k − 1 sets.
+    /// one stage k − 1 sets; the compliant base (Model::base_motion's segment): 0.
     int index = -1;
     int ring = 0;     ///< regions: 0 = the boundary, k = hole k − 1
     int vertex = -1;  ///< a vertex of the item (of `ring` for regions); −1 = the whole item
@@ -63,7 +63,8 @@ bool move_item(Model& model, const ItemRef& ref, const Point2& delta);
 /// two-point one goes as a whole); a vertex of a point or two-point item deletes the item; a hole named without a
 /// vertex goes as a hole, anything else as a whole item. A water table that goes leaves the
 /// model, or its stage, dry. False when `ref` does not exist or
-/// the vertex is one of a triangle's.
+/// the vertex is one of a triangle's. The compliant base that goes takes the base motion with
+/// it (no base shakes).
 bool delete_item(Model& model, const ItemRef& ref);
 
 }  // namespace mcdda::gui

@@ -158,10 +158,19 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
         row(supports, to_qt(m.rollers[i].name),
             tr("roller %1 to %2").arg(point_text(m.rollers[i].from), point_text(m.rollers[i].to)),
             {Kind::Roller, static_cast<int>(i)});
-    if (!m.absorbing_boundaries.empty()) {
-        QTreeWidgetItem* absorbing = group(tr("Absorbing boundaries"), m.absorbing_boundaries.size());
+    // The earthquake: its records, the base they shake, the dashpot boundaries (these two selectable).
+    const bool compliant = m.base_motion.kind == BaseMotion::Kind::Compliant;
+    if (!m.ground_motions.empty() || !m.absorbing_boundaries.empty() || m.base_motion.present()) {
+        QTreeWidgetItem* quake = group(tr("Earthquake"), m.ground_motions.size() + m.absorbing_boundaries.size() + (compliant ? 1 : 0));
+        for (const GroundMotion& g : m.ground_motions)
+            row(quake, to_qt(g.name), g.file.empty() ? tr("record of %n point(s)", "", static_cast<int>(g.points.size()))
+                                                     : tr("record %1").arg(to_qt(g.file)));
+        if (m.base_motion.kind == BaseMotion::Kind::Rigid) row(quake, tr("rigid base"), tr("every support moves"));
+        if (compliant)
+            row(quake, tr("compliant base"), tr("dashpots %1 to %2").arg(point_text(m.base_motion.from), point_text(m.base_motion.to)),
+                {Kind::CompliantBase, 0});
         for (std::size_t i = 0; i < m.absorbing_boundaries.size(); ++i)
-            row(absorbing, to_qt(m.absorbing_boundaries[i].name),
+            row(quake, to_qt(m.absorbing_boundaries[i].name),
                 tr("dashpots %1 to %2").arg(point_text(m.absorbing_boundaries[i].from), point_text(m.absorbing_boundaries[i].to)),
                 {Kind::AbsorbingBoundary, static_cast<int>(i)});
     }

@@ -335,6 +335,15 @@ void EarthquakeTest::baseAndSeismicCoefficientSavedAndReadBack()
         legend = legend || e.icon == view::LegendEntry::Icon::CompliantBase;
     QVERIFY(legend);
     window.modelView()->grabFrame().save(QStringLiteral(MCDDA_TEST_OUTPUT_DIR "/earthquake_compliant_base.png"));
+    // Picked on its line (over the roller there), deleted with its base motion, undone.
+    const gui::ItemRef base = gui::pick_item(doc->model(), {5.0, 0.0}, 0.2);
+    QVERIFY(base.kind == gui::ItemRef::Kind::CompliantBase);
+    QCOMPARE(doc->itemName(base), QStringLiteral("the compliant base"));
+    QVERIFY(doc->deleteItem(base));
+    QVERIFY(!doc->model().base_motion.present());
+    QCOMPARE(kind->currentIndex(), 0);
+    doc->undoStack()->undo();
+    QVERIFY(doc->model().base_motion.kind == BaseMotion::Kind::Compliant);
     doc->undoStack()->undo();
     QVERIFY(doc->model().base_motion.kind == BaseMotion::Kind::Rigid);
     doc->undoStack()->redo();

@@ -296,3 +296,106 @@ TEST(Earthquake, ACompliantBaseCarriesTheWeightItsSupportsCarried) {
     std::printf("Column on a compliant base: static settlement %.3g mm, largest change afterwards %.3g mm\n",
                 -1e3 * settled, 1e3 * sinking);
 }
+
+namespace {
+
+/// The column of column_model() standing on a rigid base, without dashpots, shaken by the same
+/// pulse and then left to vibrate: its surface's motion relative to the base after the pulse.
+std::vector<std::pair<double, double>> free_vibration(const std::vector<std::string>& overrides) {
+    std::string text = column_model();
+    const std::string compliant = R"("base_motion": {"type": "compliant", "x": "pulse", "from": [0, 0], "to": [1, 0]})";
+    text.replace(text.find(compliant), compliant.size(), R"("base_motion": {"type": "rigid", "x": "pulse"})");
+    const std::string rollers = R"("rollers": [)";
+    text.insert(text.find(rollers) + rollers.size(), R"({"name": "base", "from": [0, 0], "to": [1, 0], "fixed": "xy"}, )");
+    // A slower push than the wave pulse, sampled for the free vibration's time step: one
+    // half-sine of base acceleration over 0.2 s, which excites the first mode mostly.
+    std::ostringstream push;
+    push << R"("points": [)";
+    for (int k = 0; k <= 100; ++k)
+        push << (k ? ", " : "") << "[" << k * 0.002 << ", " << (k == 0 || k == 100 ? 0.0 : std::sin(pi * k / 100.0)) << "]";
+    push << "]";
+    const auto first = text.find(R"("points": [[)"), last = text.find(R"(], "units": "m/s2")");
+    text.replace(first, last + 1 - first, push.str());
+    std::vector<std::string> all = {"/mesh/size=1", "/analysis/time_step=0.002", "/analysis/steps=1500"};
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    test::Run run = test::run_text(text, all);
+    std::vector<std::pair<double, double>> motion;
+    if (!run.simulation) return motion;
+    for (std::size_t i = 0; i < run.history.time.size(); ++i)
+        motion.emplace_back(run.history.time[i], run.history.points[i][0].x);
+    return motion;
+}
+
+/// The damping ratio of the decay between the first and the last of the positive peaks after
+/// t0: ln(first/last)/(2π n) for n periods between them (the logarithmic decrement).
+double decay_ratio(const std::vector<std::pair<double, double>>& motion, double t0, double* period) {
+    std::vector<std::pair<double, double>> peaks;
+    for (std::size_t i = 1; i + 1 < motion.size(); ++i)
+        if (motion[i].first > t0 && motion[i].second > 0.0 && motion[i].second >= motion[i - 1].second &&
+            motion[i].second > motion[i + 1].second)
+            peaks.push_back(motion[i]);
+    if (peaks.size() < 3) return -1.0;
+    const double n = static_cast<double>(peaks.size() - 1);
+    if (period) *period = (peaks.back().first - peaks.front().first) / n;
+    const double delta = std::log(peaks.front().second / peaks.back().second) / n;
+    return delta / std::sqrt(4.0 * pi * pi + delta * delta);
+}
+
+}  // namespace
+
+TEST(Earthquake, RayleighDampingDecaysTheColumnAtItsRatio) {
+    // The column's first shear mode: f1 = Vs/4H = 2.5 Hz. Rayleigh damping of 5 % there (its
+    // least, α = ξω, β = ξ/ω); the higher modes the pulse excites die out faster.
+    const double f1 = shear_speed / (4.0 * column_height);
+    std::ostringstream frequency;
+    frequency << "/analysis/damping_frequency=" << f1;
+    double period = 0.0;
+    const double damped = decay_ratio(free_vibration({"/analysis/damping_ratio=0.05", frequency.str()}), 0.5, &period);
+    EXPECT_NEAR(period, 1.0 / f1, 0.02 / f1);
+    EXPECT_NEAR(damped, 0.05, 0.0025);
+    // Without Rayleigh damping and with Newmark's γ = ½ the column rings on undamped.
+    const double undamped = decay_ratio(free_vibration({}), 0.5, nullptr);
+    EXPECT_NEAR(undamped, 0.0, 0.002);
+    std::printf("Rayleigh damping 5 %% at f1 = %.2f Hz: period %.4f s (1/f1 %.4f), decay ratio %.4f; undamped %.5f\n", f1,
+                period, 1.0 / f1, damped, undamped);
+}
+
+TEST(Earthquake, ShearPulseInAWideLayerWithAbsorbingSides) {
+    // No free-field columns: a layer wide against its depth with absorbing sides. At its centre
+    // the surface sees the 1-D motion (twice the incident wave); the sides' dashpots let the
+    // layer's waves out but distort the motion next to them.
+    std::string text = column_model();
+    auto replace = [&](const std::string& from, const std::string& to) {
+        const auto at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    };
+    replace(R"([[0, 0], [1, 0], [1, 20], [0, 20]])", R"([[0, 0], [80, 0], [80, 20], [0, 20]])");
+    replace(R"("rollers": [{"name": "left", "from": [0, 0], "to": [0, 20], "fixed": "y"}, {"name": "right", "from": [1, 0], "to": [1, 20], "fixed": "y"}],)",
+            R"("fixed_points": [{"name": "corner", "point": [0, 0]}],
+  "absorbing_boundaries": [{"name": "left", "from": [0, 0], "to": [0, 20]}, {"name": "right", "from": [80, 0], "to": [80, 20]}],)");
+    replace(R"("from": [0, 0], "to": [1, 0]})", R"("from": [0, 0], "to": [80, 0]})");
+    replace(R"([{"name": "surface", "point": [0.5, 20]}])", R"([{"name": "centre", "point": [40, 20]}, {"name": "edge", "point": [0, 20]}])");
+    ReadResult read = read_model_text(text, {"/mesh/size=1.5"});
+    ASSERT_TRUE(read.model) << (read.diagnostics.empty() ? "" : format_diagnostic(read.diagnostics.front()));
+    const Preprocessed p = preprocess_model(*read.model);
+    ASSERT_TRUE(p.ok);
+    Simulation s(p);
+    const int centre = s.boundary_conditions().measurement_nodes.at(0), edge = s.boundary_conditions().measurement_nodes.at(1);
+    double peak = 0.0, peak_time = 0.0, edge_peak = 0.0;
+    while (!s.finished()) {
+        s.advance();
+        const double v = s.state().velocity[2 * centre];
+        if (v > peak) {
+            peak = v;
+            peak_time = s.state().time;
+        }
+        edge_peak = std::max(edge_peak, s.state().velocity[2 * edge]);
+    }
+    const double arrival = peak_time - 0.5 * pulse, expected = column_height / shear_speed;
+    EXPECT_NEAR(arrival, expected, 0.02 * expected);
+    EXPECT_NEAR(peak, 2.0 * pulse_speed, 0.05 * 2.0 * pulse_speed);
+    std::printf("Wide layer with absorbing sides: centre arrival %.4f s (%+.2f %%), peak %.4f m/s (%+.2f %% of 2 V0); "
+                "at the side %.4f m/s\n",
+                arrival, 100.0 * (arrival / expected - 1.0), peak, 100.0 * (peak / (2 * pulse_speed) - 1.0), edge_peak);
+}
