@@ -1019,7 +1019,7 @@
     <message>
         <location filename="../gui/tools/EditingTools.cpp" line="246"/>
         <source>&amp;Absorbing Boundary</source>
-        <translation>&amp;Absorbierender Rand</translation>
+        <translation>Absorbi&amp;erender Rand</translation>
     </message>
     <message>
         <location filename="../gui/tools/EditingTools.cpp" line="247"/>
@@ -2509,32 +2509,37 @@
         <translation>absorbierender Rand %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="303"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="302"/>
+        <source>the compliant base</source>
+        <translation>die nachgiebige Basis</translation>
+    </message>
+    <message>
+        <location filename="../gui/document/ModelDocument.cpp" line="304"/>
         <source>the water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="304"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="305"/>
         <source>the water table of stage &quot;%1&quot;</source>
         <translation>Grundwasserspiegel der Bauphase „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="309"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="310"/>
         <source>hole %1 of %2</source>
         <translation>Loch %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="310"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="311"/>
         <source>vertex %1 of %2</source>
         <translation>Eckpunkt %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="323"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="324"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="325"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="326"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2682,47 +2687,76 @@
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="162"/>
-        <source>Absorbing boundaries</source>
-        <translation>Absorbierende Ränder</translation>
+        <location filename="../gui/widgets/ModelTree.cpp" line="164"/>
+        <source>Earthquake</source>
+        <translation>Erdbeben</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/widgets/ModelTree.cpp" line="166"/>
+        <source>record of %n point(s)</source>
+        <translation>
+            <numerusform>Aufzeichnung mit %n Punkt</numerusform>
+            <numerusform>Aufzeichnung mit %n Punkten</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="165"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="167"/>
+        <source>record %1</source>
+        <translation>Aufzeichnung %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="168"/>
+        <source>rigid base</source>
+        <translation>starre Basis</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="168"/>
+        <source>every support moves</source>
+        <translation>alle Lager bewegen sich</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
         <source>dashpots %1 to %2</source>
         <translation>Dämpfer %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="168"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
+        <source>compliant base</source>
+        <translation>nachgiebige Basis</translation>
+    </message>
+    <message>
+        <location filename="../gui/widgets/ModelTree.cpp" line="177"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="179"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="185"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="181"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="190"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="183"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="192"/>
         <source>%1 to %2, EA %3 MN/m</source>
         <translation>%1 bis %2, EA %3 MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="187"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="196"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="201"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="210"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
@@ -2730,27 +2764,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="202"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="211"/>
         <source>excavates %1</source>
         <translation>bricht %1 aus</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="203"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="212"/>
         <source>builds %1</source>
         <translation>baut %1 ein</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="204"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="213"/>
         <source>installs %1</source>
         <translation>setzt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="205"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="214"/>
         <source>removes %1</source>
         <translation>entfernt %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="206"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="215"/>
         <source>%n material change(s)</source>
         <translation>
             <numerusform>%n Materialänderung</numerusform>
@@ -2758,32 +2792,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="208"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="217"/>
         <source>water table of %1 points</source>
         <translation>Grundwasserspiegel mit %1 Punkten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="209"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="218"/>
         <source>dry</source>
         <translation>trocken</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="210"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="219"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="215"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="224"/>
         <source>Ground water</source>
         <translation>Grundwasser</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="216"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="225"/>
         <source>water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="217"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="226"/>
         <source>%1 points, γw %2 kN/m³</source>
         <translation>%1 Punkte, γw %2 kN/m³</translation>
     </message>

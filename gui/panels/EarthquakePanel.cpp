@@ -157,6 +157,7 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
 
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setWidget(inner);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -169,6 +170,11 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
     connect(units_, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyRecord(); });
     connect(scale_, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyRecord(); });
     connect(baseline_, &QCheckBox::toggled, this, [this] { if (!loading_) applyRecord(); });
+    // Long choices (record names, the base's kinds) must not widen the dock.
+    for (QComboBox* box : {units_, base_kind_, base_x_, base_y_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(10);
+    }
     for (QComboBox* box : {base_kind_, base_x_, base_y_})
         connect(box, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyBase(); });
     for (QDoubleSpinBox* box : {base_from_[0], base_from_[1], base_to_[0], base_to_[1]})

@@ -91,6 +91,7 @@ void RecordPlot::showRecord(const GroundMotion* g)
     y_axis_->setRange(-1.1 * top, 1.1 * top);
     y_axis_->applyNiceNumbers();
     x_axis_->setRange(points.isEmpty() ? 0.0 : points.front().x(), points.isEmpty() ? 1.0 : points.back().x());
+    x_axis_->applyNiceNumbers();  // ticks at round times
     y_axis_->setTitleText(tr("acceleration (%1)").arg(unit));
     peak_value_ = std::fabs(peak_value_);
     if (!g)

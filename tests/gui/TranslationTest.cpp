@@ -111,6 +111,13 @@ private slots:
         QCOMPARE(tr_editing("Draw &Joint"), QStringLiteral("&Kluft zeichnen"));
         QCOMPARE(tr_editing("Draw &Water Table"), QStringLiteral("&Grundwasserspiegel zeichnen"));
         QCOMPARE(QCoreApplication::translate("mcdda::view", "pore pressure"), QStringLiteral("Porenwasserdruck"));
+        // Earthquakes.
+        QCOMPARE(tr_editing("&Absorbing Boundary"), QStringLiteral("Absorbi&erender Rand"));
+        QCOMPARE(QCoreApplication::translate("mcdda::view", "Absorbing boundary"), QStringLiteral("Absorbierender Rand"));
+        QCOMPARE(tr_main_window("Earthquake"), QStringLiteral("Erdbeben"));
+        QCOMPARE(QCoreApplication::translate("mcdda::gui::EarthquakePanel", "Seismic coefficient (pseudo-static)"),
+                 QStringLiteral("Erdbebenbeiwert (pseudostatisch)"));
+        QCOMPARE(QCoreApplication::translate("ModelFields", "Damping ratio"), QStringLiteral("Dämpfungsgrad"));
         // The Run menu.
         QCOMPARE(tr_run("&Run"), QStringLiteral("Be&rechnung"));
         QCOMPARE(tr_run("&Pause"), QStringLiteral("&Pause"));
@@ -128,7 +135,8 @@ private slots:
         // The Edit menu: undo/redo, the tools' entries.
         QStringList edit{tr_editing("&Undo"), tr_editing("&Redo")};
         for (const char* source : {"&Select", "Draw &Region", "Draw &Joint", "&Fixed Point", "R&oller", "Point &Load",
-                                   "Edge &Pressure", "&Measurement Point", "&Bolt", "Draw &Water Table", "&Query Line",
+                                   "Edge &Pressure", "&Measurement Point", "&Bolt", "Draw &Water Table", "&Absorbing Boundary",
+                                   "&Query Line",
                                    "&Delete", "Add Joint Se&t..."})
             edit << tr_editing(source);
         QVERIFY(distinct_mnemonics(edit));
