@@ -17,11 +17,7 @@ namespace {
 
 /// Runs the square model with `overrides` up to block cutting and expects an error at `path`.
 void expect_error(const std::vector<std::string>& overrides, const std::string& path, const std::string& fragment) {
-    const Preprocessed p = preprocess_text(square_model_json(), overrides, PreprocessStage::Cut);
-    EXPECT_FALSE(p.ok);
-    EXPECT_TRUE(has_diagnostic(p.diagnostics, Severity::Error, path, fragment))
-        << "expected error at " << path << " containing \"" << fragment << "\", got:\n"
-        << all_messages(p.diagnostics);
+    EXPECT_EQ(mcdda::test::refusal_mismatch(overrides, path, fragment), "");
 }
 
 }  // namespace

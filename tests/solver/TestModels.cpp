@@ -43,6 +43,13 @@ std::vector<std::string> example_files() {
     return files;
 }
 
+std::string refusal_mismatch(const std::vector<std::string>& overrides, const std::string& path,
+                             const std::string& fragment) {
+    const Preprocessed p = preprocess_text(square_model_json(), overrides, PreprocessStage::Cut);
+    if (!p.ok && has_diagnostic(p.diagnostics, Diagnostic::Severity::Error, path, fragment)) return "";
+    return "expected error at " + path + " containing \"" + fragment + "\", got:\n" + all_messages(p.diagnostics);
+}
+
 bool has_diagnostic(const std::vector<Diagnostic>& diagnostics, Diagnostic::Severity severity,
                     const std::string& path, const std::string& fragment) {
     return std::any_of(diagnostics.begin(), diagnostics.end(), [&](const Diagnostic& d) {

@@ -28,4 +28,9 @@ bool has_diagnostic(const std::vector<Diagnostic>& diagnostics, Diagnostic::Seve
 /// All diagnostics joined, for failure messages.
 std::string all_messages(const std::vector<Diagnostic>& diagnostics);
 
+/// The square model with `overrides`, cut into blocks: "" when it is refused with an error at
+/// `path` whose message holds `fragment`, otherwise what was expected and the messages it gave.
+std::string refusal_mismatch(const std::vector<std::string>& overrides, const std::string& path,
+                             const std::string& fragment);
+
 }  // namespace mcdda::test
