@@ -50,6 +50,7 @@ ViscousBoundary::ViscousBoundary(const Model& model, const Mesh& mesh, const Mes
                 Dashpot& d = at_node[node];
                 d.node = node;
                 d.c += share * length * c;
+                if (input) d.input_c += share * length * c;
                 d.input = d.input || input;
             }
             break;  // one segment's dashpots per edge
@@ -62,9 +63,9 @@ void ViscousBoundary::add_forces(const Eigen::VectorXd& d, double rate, const Ei
                                  const Eigen::Vector2d& incident, Eigen::VectorXd& r) const {
     for (const Dashpot& p : dashpots_) {
         const Eigen::Index x = 2 * p.node;
-        Eigen::Vector2d v(rate * d[x] + v_rest[x], rate * d[x + 1] + v_rest[x + 1]);
-        if (p.input) v -= 2.0 * incident;
-        const Eigen::Vector2d f = p.c * v;
+        const Eigen::Vector2d v(rate * d[x] + v_rest[x], rate * d[x + 1] + v_rest[x + 1]);
+        Eigen::Vector2d f = p.c * v;
+        if (p.input) f -= 2.0 * p.input_c * incident;
         r[x] -= f.x();
         r[x + 1] -= f.y();
     }

@@ -4,7 +4,7 @@
 /// takes the traction −(ρVp vn n + ρVs vs s) of the material beside it, so that a wave hitting
 /// it leaves instead of reflecting; a compliant base takes besides the input 2(ρVp (vᵢ·n) n +
 /// ρVs (vᵢ·s) s) of an incident wave of velocity vᵢ (the record's), which makes the traction
-/// C(2vᵢ − v). Lumped to the nodes with the edge's load shares (½ each; 1/6, 2/3, 1/6 on
+/// 2C·vᵢ − C·v. Lumped to the nodes with the edge's load shares (½ each; 1/6, 2/3, 1/6 on
 /// six-node edges), like pressures.
 
 #include "fem/MeshTopology.hpp"
@@ -22,6 +22,9 @@ public:
     struct Dashpot {
         int node = -1;
         Eigen::Matrix2d c = Eigen::Matrix2d::Zero();  ///< N·s/m per metre thickness
+        /// The compliant base's share of c, through which the incident wave enters (a corner
+        /// shared with an absorbing side takes the input through the base's dashpots only).
+        Eigen::Matrix2d input_c = Eigen::Matrix2d::Zero();
         bool input = false;                          ///< on the compliant base
     };
 
