@@ -634,14 +634,14 @@
     <message>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="45"/>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="80"/>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="230"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="241"/>
         <source>g</source>
         <translation>g</translation>
     </message>
     <message>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="45"/>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="81"/>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="230"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="241"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -722,13 +722,13 @@
     </message>
     <message>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="113"/>
-        <source>Rigid base (every support moves)</source>
-        <translation>Starre Basis (alle Lager bewegen sich)</translation>
+        <source>Rigid (supports move)</source>
+        <translation>Starr (Lager bewegen sich)</translation>
     </message>
     <message>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="114"/>
-        <source>Compliant base (dashpots along a segment)</source>
-        <translation>Nachgiebige Basis (Dämpfer entlang einer Strecke)</translation>
+        <source>Compliant (dashpots)</source>
+        <translation>Nachgiebig (Dämpfer)</translation>
     </message>
     <message>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="115"/>
@@ -766,67 +766,67 @@
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="135"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="138"/>
         <source>From (x, y)</source>
         <translation>Von (x, y)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="136"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="139"/>
         <source>To (x, y)</source>
         <translation>Bis (x, y)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="137"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="140"/>
         <source>Draw...</source>
         <translation>Zeichnen...</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="139"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="142"/>
         <source>Click the two ends of the compliant base in the picture</source>
         <translation>Die beiden Enden der nachgiebigen Basis im Bild anklicken</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="146"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="149"/>
         <source>Seismic coefficient (pseudo-static)</source>
         <translation>Erdbebenbeiwert (pseudostatisch)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="150"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="153"/>
         <source>kh [–]</source>
         <translation>kh [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="151"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="154"/>
         <source>Horizontal seismic coefficient: every block carries kh·g per unit mass, towards +x for kh &gt; 0</source>
         <translation>Horizontaler Erdbebenbeiwert: jeder Block erhält kh·g je Masseneinheit, für kh &gt; 0 in +x-Richtung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="154"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="157"/>
         <source>kv [–]</source>
         <translation>kv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="155"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="158"/>
         <source>Vertical seismic coefficient: kv·g per unit mass, upwards for kv &gt; 0</source>
         <translation>Vertikaler Erdbebenbeiwert: kv·g je Masseneinheit, für kv &gt; 0 nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="193"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="204"/>
         <source>Import acceleration record</source>
         <translation>Beschleunigungszeitverlauf importieren</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="194"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="205"/>
         <source>Acceleration records (*.csv *.txt *.at2 *.AT2);;All files (*)</source>
         <translation>Beschleunigungszeitverläufe (*.csv *.txt *.at2 *.AT2);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="205"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="216"/>
         <source>The record was not imported: %1</source>
         <translation>Die Aufzeichnung wurde nicht importiert: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="228"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="239"/>
         <source>Imported &quot;%1&quot;: %n point(s), read in %2 (change Units if the file is in the other unit).</source>
         <translation>
             <numerusform>„%1“ importiert: %n Punkt, gelesen in %2 (Einheiten ändern, wenn die Datei in der anderen Einheit ist).</numerusform>
@@ -834,52 +834,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="251"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="262"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="283"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="294"/>
         <source>points given in the model</source>
         <translation>Punkte im Modell angegeben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="298"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="309"/>
         <source>Not applied: another ground motion is called &quot;%1&quot;.</source>
         <translation>Nicht übernommen: eine andere Bodenbewegung heißt „%1“.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="302"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="313"/>
         <source>Not applied: a ground motion needs a name.</source>
         <translation>Nicht übernommen: eine Bodenbewegung braucht einen Namen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="306"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="317"/>
         <source>Not applied: the scale must not be 0.</source>
         <translation>Nicht übernommen: die Skalierung darf nicht 0 sein.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="317"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="328"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="338"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="349"/>
         <source>Import a ground motion first: the base moves with it.</source>
         <translation>Zuerst eine Bodenbewegung importieren: die Basis bewegt sich mit ihr.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="358"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="369"/>
         <source>The supports move with the record in the dynamic stages.</source>
         <translation>Die Lager bewegen sich in den dynamischen Bauphasen mit der Aufzeichnung.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="359"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="370"/>
         <source>The record enters through the compliant base in the dynamic stages.</source>
         <translation>Die Aufzeichnung tritt in den dynamischen Bauphasen durch die nachgiebige Basis ein.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="360"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="371"/>
         <source>No base motion.</source>
         <translation>Keine Bewegung der Basis.</translation>
     </message>
@@ -3251,22 +3251,22 @@
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="94"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="95"/>
         <source>acceleration (%1)</source>
         <translation>Beschleunigung (%1)</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="97"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="98"/>
         <source>No record chosen.</source>
         <translation>Keine Aufzeichnung gewählt.</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="99"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="100"/>
         <source>The record has no usable points (at least two, times increasing).</source>
         <translation>Die Aufzeichnung hat keine brauchbaren Punkte (mindestens zwei, mit steigenden Zeiten).</translation>
     </message>
     <message>
-        <location filename="../gui/results/RecordPlot.cpp" line="101"/>
+        <location filename="../gui/results/RecordPlot.cpp" line="102"/>
         <source>Peak %1 %2 at %3 s, duration %4 s</source>
         <translation>Spitzenwert %1 %2 bei %3 s, Dauer %4 s</translation>
     </message>

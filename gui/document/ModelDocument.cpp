@@ -1,5 +1,6 @@
 #include "document/ModelDocument.hpp"
 
+#include <QDir>
 #include <QFileInfo>
 
 #include "document/EditCommands.hpp"
@@ -56,11 +57,30 @@ bool ModelDocument::save(QString* error) {
 }
 
 bool ModelDocument::saveAs(const QString& path, QString* error) {
+    // Record files are named relative to the model's folder: saved into another folder, they
+    // are named from there, or the file would point beside the new model (where they are not).
+    Model rebased = model_;
+    bool moved = false;
+    if (!path_.isEmpty()) {
+        const QDir from = QFileInfo(path_).absoluteDir(), to = QFileInfo(path).absoluteDir();
+        for (GroundMotion& g : rebased.ground_motions) {
+            const QString file = QString::fromStdString(g.file);
+            if (file.isEmpty() || QFileInfo(file).isAbsolute() || from == to) continue;
+            g.file = to.relativeFilePath(from.absoluteFilePath(file)).toStdString();
+            moved = true;
+        }
+    }
     try {
-        write_model_file(local_path(path), model_);
+        write_model_file(local_path(path), rebased);
     } catch (const std::exception& e) {
         if (error) *error = tr("Cannot save %1: %2").arg(path, QString::fromLocal8Bit(e.what()));
         return false;
+    }
+    if (moved) {
+        // The edits before name the files from the old folder: their history goes with it.
+        undo_.clear();
+        model_ = std::move(rebased);
+        emit changed();
     }
     setPath(path);
     undo_.setClean();

@@ -47,7 +47,9 @@ public:
     /// Writes the model to its file (atomically: a failure leaves the old file as it was).
     /// Returns false with a message in `error` when the document has no file or writing failed.
     bool save(QString* error = nullptr);
-    /// Writes the model to `path` and makes that the document's file on success.
+    /// Writes the model to `path` and makes that the document's file on success. Record files
+    /// named relative to the old file's folder are named from the new one's; when that changes
+    /// any, the undo history is cleared (its edits name them from the old folder).
     bool saveAs(const QString& path, QString* error = nullptr);
 
     // Undoable edits (each pushes one command; see Commands.hpp).

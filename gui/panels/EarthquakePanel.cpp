@@ -110,8 +110,8 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
     base_kind_ = new QComboBox(base);
     base_kind_->setObjectName(QStringLiteral("baseKind"));
     base_kind_->addItem(tr("None"), static_cast<int>(BaseMotion::Kind::None));
-    base_kind_->addItem(tr("Rigid base (every support moves)"), static_cast<int>(BaseMotion::Kind::Rigid));
-    base_kind_->addItem(tr("Compliant base (dashpots along a segment)"), static_cast<int>(BaseMotion::Kind::Compliant));
+    base_kind_->addItem(tr("Rigid (supports move)"), static_cast<int>(BaseMotion::Kind::Rigid));
+    base_kind_->addItem(tr("Compliant (dashpots)"), static_cast<int>(BaseMotion::Kind::Compliant));
     base_form->addRow(tr("Shaking"), base_kind_);
     explain(base_kind_, tr("Rigid: the supports move with the record and the analysis runs relative to them (a shaking "
                            "table). Compliant: the segment carries dashpots and the incoming wave, so waves sent down "
@@ -128,6 +128,9 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
         auto* row = new QHBoxLayout;
         for (int k = 0; k < 2; ++k) {
             boxes[k] = form::number(name + (k == 0 ? QStringLiteral("X") : QStringLiteral("Y")), tr("m"), -1e7, 1e7, 3, base);
+            // Two on a row: they share the width instead of asking for room for ±10⁷ m each.
+            boxes[k]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+            boxes[k]->setMinimumWidth(70);
             row->addWidget(boxes[k]);
         }
         base_form->addRow(label, row);
@@ -174,6 +177,8 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
     for (QComboBox* box : {units_, base_kind_, base_x_, base_y_}) {
         box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
         box->setMinimumContentsLength(10);
+        box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        box->setMinimumWidth(100);
     }
     for (QComboBox* box : {base_kind_, base_x_, base_y_})
         connect(box, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyBase(); });

@@ -271,6 +271,13 @@ void StagesPanel::showStage()
     release_->setValue(st ? st->release_steps : 0);
     analysis_->show(st ? st->analysis : m.analysis);
     form::show_analysis_type(type_, st ? st->analysis : m.analysis);
+    // Newmark's γ and the Rayleigh damping: rows of a dynamic stage only (as in the Analysis tab).
+    const bool dynamic = (st ? st->analysis : m.analysis).kind == AnalysisSettings::Kind::Dynamic;
+    for (QDoubleSpinBox* box : analysis_->boxes()) {
+        const QString key = box->objectName().mid(QStringLiteral("stage_").size());
+        if (key == QLatin1String("newmark_gamma") || key.startsWith(QLatin1String("damping_")))
+            static_cast<QFormLayout*>(box->parentWidget()->layout())->setRowVisible(box, dynamic);
+    }
     // The water: the model as drawn has its own; a stage sets one or keeps the stage before's.
     water_->setText(waterText());
     water_dry_->setEnabled(stage < 0 ? m.water.present() : !(st && st->water && !st->water->present()));

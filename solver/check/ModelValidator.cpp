@@ -206,6 +206,12 @@ void check_earthquake(Checker& c, const Model& m) {
     }
     const BaseMotion& b = m.base_motion;
     if (b.present()) {
+        // What an editor can produce and the file cannot say: a base shaken by nothing, a record that is not there.
+        const int records = static_cast<int>(m.ground_motions.size());
+        if (b.x < 0 && b.y < 0)
+            c.error("/base_motion", "name the ground motion of \"x\" (horizontal), \"y\" (vertical) or both");
+        for (const auto& [index, key] : {std::pair{b.x, "/base_motion/x"}, std::pair{b.y, "/base_motion/y"}})
+            if (index >= records) c.error(key, "names no ground motion of the model (" + std::to_string(records) + " given)");
         if (!has_dynamic_stage(m))
             c.warning("/base_motion", "the base motion shakes only dynamic stages and this model has none (\"analysis\": {\"type\": \"dynamic\"})");
         if (b.kind == BaseMotion::Kind::Rigid && m.fixed_points.empty() && m.rollers.empty())

@@ -22,7 +22,8 @@ public:
     double velocity(double t) const;
     double displacement(double t) const;
 
-    double duration() const { return time_.empty() ? 0.0 : time_.back(); }
+    /// From the first sample to the last (s).
+    double duration() const { return time_.empty() ? 0.0 : time_.back() - time_.front(); }
     double peak_acceleration() const;
     /// The linear correction a0 + a1·(t − t0) taken off the record (m/s², m/s³).
     double correction_constant() const { return correction_[0]; }

@@ -486,6 +486,16 @@ void EarthquakeTest::slidingBlockRunInTheWindow()
     plot->setColumns(QStringLiteral("block:vx"), QStringLiteral("time"));
     QVERIFY(plot->series()->count() > 100);
     panel->grab().save(QStringLiteral(MCDDA_TEST_OUTPUT_DIR "/earthquake_dock.png"));
+
+    // Saved into another folder, the record is named from there and the copy reads back.
+    QVERIFY(QDir(folder.path()).mkpath(QStringLiteral("copy")));
+    const QString copy = folder.filePath(QStringLiteral("copy/block.json"));
+    QVERIFY(window.saveModelAs(copy));
+    QCOMPARE(QString::fromStdString(window.document()->model().ground_motions[0].file),
+             QStringLiteral("../records/sine-2hz-3-cycles.csv"));
+    const ReadResult back = read_model_file(QFile::encodeName(copy).toStdString());
+    QVERIFY(back.model);
+    QCOMPARE(back.model->ground_motions[0].points.size(), window.document()->model().ground_motions[0].points.size());
 }
 
 QTEST_MAIN(EarthquakeTest)

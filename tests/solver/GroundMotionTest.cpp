@@ -4,6 +4,7 @@
 
 #include "ModelCompare.hpp"
 #include "TestModels.hpp"
+#include "check/ModelValidator.hpp"
 #include "io/AccelerationRecord.hpp"
 #include "io/ModelReader.hpp"
 #include "io/ModelWriter.hpp"
@@ -208,6 +209,21 @@ TEST(EarthquakeInput, BadRecordsBasesAndDashpots) {
                  "/absorbing_boundaries/0", "absorbing boundary \"inside\" lies along no block boundary");
     expect_error({R"(/seismic_coefficient={"kh": 3, "kv": 0})"}, "/seismic_coefficient/kh", "between -2 and 2");
     expect_error({R"(/seismic_coefficient={"kh": 0.1, "kz": 0})"}, "/seismic_coefficient/kz", "unknown key");
+}
+
+TEST(EarthquakeInput, AnEditedBaseWithoutARecordIsAnError) {
+    // What the desktop program or the API can make and a file cannot say.
+    ReadResult r = read_model_text(square_model_json(), {shaken, R"(/base_motion={"type": "rigid", "x": "quake"})"});
+    ASSERT_TRUE(r.model) << all_messages(r.diagnostics);
+    Model m = *r.model;
+    m.base_motion.x = -1;
+    std::vector<Diagnostic> d;
+    validate_model(m, d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/base_motion", "name the ground motion")) << all_messages(d);
+    m.base_motion.x = 3;
+    d.clear();
+    validate_model(m, d);
+    EXPECT_TRUE(has_diagnostic(d, Severity::Error, "/base_motion/x", "names no ground motion")) << all_messages(d);
 }
 
 TEST(EarthquakeInput, StagesAndRecordFilesRoundTrip) {
