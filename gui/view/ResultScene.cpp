@@ -17,6 +17,7 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
+#include <vtkLogger.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -36,11 +37,16 @@
 #include <vtkWindow.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkIdList.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <cctype>
 #include <limits>
 #include <map>
 #include <utility>
@@ -199,6 +205,82 @@ vtkSmartPointer<vtkUnstructuredGrid> present_cells(vtkSmartPointer<vtkUnstructur
     return kept;
 }
 
+/// The point and cell counts a .vtu file declares on its first <Piece>, read as text before VTK
+/// allocates anything from them; a count that is not a whole number is refused.
+std::pair<long long, long long> declared_counts(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::string head(1 << 16, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    const std::size_t piece = head.find("<Piece");
+    if (piece == std::string::npos)
+        throw std::runtime_error("cannot read results " + path + ": no <Piece> element near its start (not a result file "
+                                 "of mcdda run)");
+    auto count = [&](const std::string& name) {
+        const std::size_t at = head.find(name + "=\"", piece);
+        if (at == std::string::npos) throw std::runtime_error("cannot read results " + path + ": its <Piece> has no " + name);
+        const std::size_t from = at + name.size() + 2, to = head.find('"', from);
+        const std::string text = head.substr(from, to == std::string::npos ? 0 : to - from);
+        if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
+            throw std::runtime_error("cannot read results " + path + ": " + name + " \"" + text.substr(0, 40) +
+                                     "\" is not a count");
+        return std::stoll(text);
+    };
+    return {count("NumberOfPoints"), count("NumberOfCells")};
+}
+
+/// Every cell a triangle of the kind the model's mesh has, every point index within the points,
+/// every coordinate finite: a damaged or foreign file must not reach the drawing code.
+void check_cells(vtkUnstructuredGrid* grid, const Preprocessed& model, const std::string& source)
+{
+    const bool quadratic = !model.mesh.midside.empty();
+    const int type = quadratic ? VTK_QUADRATIC_TRIANGLE : VTK_TRIANGLE, corners = quadratic ? 6 : 3;
+    const vtkIdType points = grid->GetNumberOfPoints();
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        if (grid->GetCellType(c) != type)
+            throw std::runtime_error("cannot read results " + source + ": cell " + std::to_string(c) + " is of VTK type " +
+                                     std::to_string(grid->GetCellType(c)) + ", not the " +
+                                     (quadratic ? "six" : "three") + "-node triangle of the model's mesh");
+        grid->GetCellPoints(c, ids);
+        if (ids->GetNumberOfIds() != corners)
+            throw std::runtime_error("cannot read results " + source + ": cell " + std::to_string(c) + " has " +
+                                     std::to_string(ids->GetNumberOfIds()) + " points instead of " + std::to_string(corners));
+        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+            if (ids->GetId(k) < 0 || ids->GetId(k) >= points)
+                throw std::runtime_error("cannot read results " + source + ": cell " + std::to_string(c) +
+                                         " names point " + std::to_string(ids->GetId(k)) + ", but the file has " +
+                                         std::to_string(points) + " points (connectivity damaged)");
+    }
+    for (vtkIdType i = 0; i < points; ++i) {
+        double x[3];
+        grid->GetPoint(i, x);
+        if (!std::isfinite(x[0]) || !std::isfinite(x[1]))
+            throw std::runtime_error("cannot read results " + source + ": point " + std::to_string(i) +
+                                     " has a coordinate that is not a finite number");
+    }
+}
+
+/// The arrays drawn hold finite numbers only (a NaN would colour nothing and scale nothing).
+void check_finite(vtkDataArray* a, const std::string& source, const std::string& what)
+{
+    if (a == nullptr) return;
+    vtkIdType bad = 0, first = -1;
+    const int components = a->GetNumberOfComponents();
+    for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
+        for (int c = 0; c < components; ++c)
+            if (!std::isfinite(a->GetComponent(t, c))) {
+                if (first < 0) first = t;
+                ++bad;
+                break;
+            }
+    if (bad > 0)
+        throw ResultFieldError("results " + source + ": " + what + " \"" + a->GetName() + "\" holds values that are not "
+                               "finite numbers (NaN or infinity) at " + std::to_string(bad) + " entries, the first at " +
+                               std::to_string(first));
+}
+
 /// Checks a result grid (read from `source`) against the model and the options.
 Result check_result(vtkSmartPointer<vtkUnstructuredGrid> grid, const Preprocessed& model, const std::string& source,
                     const FieldInfo& field, const ResultOptions& options)
@@ -221,10 +303,12 @@ Result check_result(vtkSmartPointer<vtkUnstructuredGrid> grid, const Preprocesse
         throw ResultFieldError("results " + source + " hold no field \"" + options.field + "\" (available: " +
                                list_names(present) + ")");
     }
-    if (options.deform != 0.0) {
+    check_finite(find_array(r.grid, field), source, "the field's array");
+    if (options.deform != 0.0 || options.deform_auto) {
         vtkDataArray* d = r.grid->GetPointData()->GetArray("displacement");
         if (d == nullptr || d->GetNumberOfComponents() < 2)
             throw ResultFieldError("results " + source + " hold no displacement to deform the mesh with");
+        check_finite(d, source, "the array");
     }
     return r;
 }
@@ -240,8 +324,46 @@ Result load_result(const Preprocessed& model, const std::string& path, const Res
     vtkNew<vtkXMLUnstructuredGridReader> reader;
     if (reader->CanReadFile(path.c_str()) == 0)
         throw std::runtime_error("cannot read results " + path + ": not a VTK XML unstructured grid (.vtu)");
+    // The declared sizes against the model's before VTK allocates from them (a count of 3·10⁹
+    // is a few bytes in the file).
+    const auto [points, cells] = declared_counts(path);
+    if (static_cast<std::size_t>(points) != model.mesh.nodes.size() ||
+        static_cast<std::size_t>(cells) != model.mesh.triangles.size())
+        throw std::runtime_error("results " + path + " declare " + std::to_string(points) + " points and " +
+                                 std::to_string(cells) + " cells but the model's mesh has " +
+                                 std::to_string(model.mesh.nodes.size()) + " nodes and " +
+                                 std::to_string(model.mesh.triangles.size()) +
+                                 " triangles: were they written by a run of this model (with the same --set options)?");
     reader->SetFileName(path.c_str());
+    // VTK's own messages about a damaged file go to this observer, not to the terminal; the
+    // first is the reason given.
+    vtkNew<vtkCallbackCommand> on_error;
+    std::string vtk_error;
+    on_error->SetClientData(&vtk_error);
+    on_error->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
+        auto* text = static_cast<std::string*>(client);
+        if (text->empty() && call != nullptr) *text = static_cast<const char*>(call);
+    });
+    reader->AddObserver(vtkCommand::ErrorEvent, on_error);
+    reader->AddObserver(vtkCommand::WarningEvent, on_error);
+    // (its XML parser and pipeline log theirs: silenced while reading)
+    const vtkLogger::Verbosity logged = vtkLogger::GetCurrentVerbosityCutoff();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
     reader->Update();
+    vtkLogger::SetStderrVerbosity(logged);
+    if (!vtk_error.empty() || reader->GetErrorCode() != 0) {
+        std::string why = vtk_error.empty() ? "VTK could not read it" : vtk_error;
+        // VTK's text starts with its own source location ("ERROR: In …, line N vtkXML…Reader (0x…): ").
+        if (const std::size_t at = why.find("): "); at != std::string::npos) why = why.substr(at + 3);
+        while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back()))) why.pop_back();
+        throw std::runtime_error("cannot read results " + path + ": the file is damaged (" + why + ")");
+    }
+    if (reader->GetOutput()->GetNumberOfPoints() != points || reader->GetOutput()->GetNumberOfCells() != cells)
+        throw std::runtime_error("cannot read results " + path + ": the file is damaged (it holds " +
+                                 std::to_string(reader->GetOutput()->GetNumberOfPoints()) + " points and " +
+                                 std::to_string(reader->GetOutput()->GetNumberOfCells()) + " cells of the " +
+                                 std::to_string(points) + " and " + std::to_string(cells) + " it declares)");
+    check_cells(reader->GetOutput(), model, path);
     Result r = check_result(reader->GetOutput(), model, path, field, options);
     if (const double step = field_number(reader->GetOutput(), "step"); std::isfinite(step)) r.step = static_cast<int>(step);
     if (const double stage = field_number(reader->GetOutput(), "stage"); std::isfinite(stage)) r.stage = static_cast<int>(stage);
