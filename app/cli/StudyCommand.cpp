@@ -7,9 +7,9 @@
 
 #include "Commands.hpp"
 
-#include "Preprocess.hpp"
 #include "io/AtomicFile.hpp"
 #include "study/Study.hpp"
+#include "study/StudyCheck.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -128,8 +128,10 @@ public:
         }
         if (row_is_finished(row)) {
             const json record{{"overrides", run(index).overrides}, {"row", json::parse(row_to_json(row))}};
-            write_file_atomically((folder(index) / "run.json").string(),
-                                  [&](std::ostream& o) { o << record.dump(2) << "\n"; });
+            // The row's message may quote the --out path in whatever bytes it has.
+            write_file_atomically((folder(index) / "run.json").string(), [&](std::ostream& o) {
+                o << record.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
+            });
         }
         return row;
     }
@@ -204,13 +206,14 @@ int run_study(const Request& r)
         for (const Diagnostic& d : problems) std::cerr << r.model << ": " << format_diagnostic(d) << "\n";
     if (!study) return exit_model_error;
     const std::vector<StudyRun> runs = expand_study(*study);
-    // The base model with the first run's values: a broken model or override fails here, once.
-    const Preprocessed base = preprocess_file(study->model, runs.front().overrides, PreprocessStage::Validate);
-    if (!base.ok) {
-        if (rank == 0)
-            for (const Diagnostic& d : base.diagnostics) std::cerr << study->model << ": " << format_diagnostic(d) << "\n";
-        return exit_model_error;
+    // The base model with the values of the runs, and the outputs: a broken model, override,
+    // value or output fails here, once, before anything runs.
+    const StudyCheck check = check_study(*study, runs);
+    if (rank == 0) {
+        for (const Diagnostic& d : check.model) std::cerr << study->model << ": " << format_diagnostic(d) << "\n";
+        for (const Diagnostic& d : check.study) std::cerr << r.model << ": " << format_diagnostic(d) << "\n";
     }
+    if (!check.ok) return exit_model_error;
     const int threads = study->threads_per_run > 0 ? study->threads_per_run : r.threads > 0 ? r.threads : ranks > 1 ? 1 : 0;
     const fs::path out = r.out;
     Runner runner(*study, runs, out, threads);
@@ -272,6 +275,8 @@ int run_study(const Request& r)
             std::cout << "[" << rows.size() << "/" << runs.size() << "] run " << row.index << " " << row.status
                       << (ranks > 1 ? " (rank " + std::to_string(by) + ")" : std::string())
                       << (row_is_finished(row) ? std::string() : ": " + row.message) << std::endl;
+        else if (!row_is_finished(row))  // --quiet keeps errors
+            std::cerr << "mcdda study: run " << row.index << " " << row.status << ": " << row.message << std::endl;
     };
     write_table();
 

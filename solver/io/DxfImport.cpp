@@ -1,6 +1,9 @@
 #include "io/DxfImport.hpp"
 
 #include "geometry/PolygonChecks.hpp"
+#include "io/DxfFileCheck.hpp"
+#include "io/FileKind.hpp"
+#include "io/TextEncoding.hpp"
 #include "model/Defaults.hpp"
 
 #include <dxflib/dl_creationadapter.h>
@@ -141,7 +144,8 @@ public:
     }
 
 private:
-    std::string layer() { return getAttributes().getLayer(); }
+    // Drawings before AutoCAD 2007 name layers in the Windows code page, not UTF-8.
+    std::string layer() { return as_utf8(getAttributes().getLayer()); }
     void skip(const std::string& kind)
     {
         finish();
@@ -188,10 +192,15 @@ DxfImportResult import_dxf_file(const std::string& path, const DxfImportOptions&
     auto warning = [&](const std::string& message) {
         result.diagnostics.push_back({Diagnostic::Severity::Warning, "", message});
     };
-    if (!std::filesystem::is_regular_file(path)) {
-        error("cannot open " + path);
+    if (const std::string kind = not_a_regular_file(path); !kind.empty()) {
+        error(kind == "does not exist" ? "cannot open " + path + ": no such file"
+                                       : path + " " + kind + ", not a DXF drawing");
         return result;
     }
+    // dxflib believes the file (counts, numbers, encoding): what it cannot cope with is refused
+    // first.
+    result.diagnostics = check_dxf_file(path);
+    if (has_errors(result.diagnostics)) return result;
     Collector c;
     DL_Dxf dxf;
     if (!dxf.in(path, &c)) {
@@ -300,8 +309,8 @@ DxfImportResult import_dxf_file(const std::string& path, const DxfImportOptions&
         error("no closed polyline (LWPOLYLINE or POLYLINE) outside a holes/openings layer: nothing to make a region of");
         return result;
     }
-    m.name = std::filesystem::path(path).stem().string();
-    m.description = "Imported from " + std::filesystem::path(path).filename().string() + " (units: " + units +
+    m.name = as_utf8(std::filesystem::path(path).stem().string());
+    m.description = "Imported from " + as_utf8(std::filesystem::path(path).filename().string()) + " (units: " + units +
                     "); materials and joint materials carry default properties.";
     std::ostringstream summary;
     summary << m.regions.size() << " regions (layers " << joined(region_layers) << "), " << hole_count << " holes, "

@@ -1,5 +1,7 @@
 #include "io/JsonOverrides.hpp"
 
+#include "io/TextEncoding.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -17,7 +19,9 @@ std::string pointer_problem(const nlohmann::json::exception& e, const std::strin
     switch (e.id) {
         case 107: return "a pointer starts with '/', e.g. /materials/0/cohesion (got \"" + pointer + "\")";
         case 108: return "'~' in a pointer must be followed by 0 ('~') or 1 ('/')";
+        case 106: return "an array index in the pointer must not begin with 0 (got \"" + pointer + "\")";
         case 109: return "an array index in the pointer is not a number";
+        case 410: return "an array index in the pointer is too large";
         case 401:
         case 403:
         case 404: return "no such field in the model";
@@ -42,8 +46,18 @@ void apply_overrides(nlohmann::json& document, const std::vector<std::string>& a
         }
         const std::string pointer_text = assignment.substr(0, eq);
         const std::string value_text = assignment.substr(eq + 1);
+        if (!is_utf8(pointer_text)) {
+            diagnostics.push_back(override_error(pointer_text, "the pointer is not UTF-8 text"));
+            continue;
+        }
         json value = json::parse(value_text, nullptr, /*allow_exceptions=*/false);
-        if (value.is_discarded()) value = value_text;  // a bare word is a string
+        if (value.is_discarded()) {  // a bare word is a string, which JSON holds in UTF-8 only
+            if (!is_utf8(value_text)) {
+                diagnostics.push_back(override_error(pointer_text, "the value is not UTF-8 text"));
+                continue;
+            }
+            value = value_text;
+        }
 
         try {
             const json::json_pointer pointer(pointer_text);

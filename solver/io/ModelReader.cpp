@@ -1,19 +1,15 @@
 #include "io/ModelReader.hpp"
 
 #include "io/AccelerationRecord.hpp"
+#include "io/FileKind.hpp"
 #include "io/JsonOverrides.hpp"
+#include "io/JsonText.hpp"
 #include "Version.hpp"
 #include "material/MaterialLaws.hpp"
 #include "model/Defaults.hpp"
 #include "model/ModelFields.hpp"
 
 #include <nlohmann/json.hpp>
-
-#include <cctype>
-
-#include <cstring>
-
-#include <cstdlib>
 
 #include <cmath>
 #include <filesystem>
@@ -903,68 +899,14 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
     }
 }
 
-/// Line and column (1-based) of a byte offset, for messages about malformed JSON.
-std::pair<std::size_t, std::size_t> line_and_column(const std::string& text, std::size_t byte) {
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
-    }
-    return {line, column};
-}
-
-/// Byte offset and text of the first number literal outside strings that overflows a double.
-std::pair<std::size_t, std::string> first_overflowing_number(const std::string& text) {
-    bool in_string = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char ch = text[i];
-        if (in_string) {
-            if (ch == '\\') ++i;
-            else if (ch == '"') in_string = false;
-            continue;
-        }
-        if (ch == '"') {
-            in_string = true;
-            continue;
-        }
-        if (ch != '-' && !std::isdigit(static_cast<unsigned char>(ch))) continue;
-        std::size_t end = i;
-        while (end < text.size() && std::strchr("+-.eE0123456789", text[end]) != nullptr) ++end;
-        const std::string literal = text.substr(i, end - i);
-        if (!std::isfinite(std::strtod(literal.c_str(), nullptr))) return {i, literal};
-        i = end - 1;
-    }
-    return {0, "?"};
-}
-
 }  // namespace
 
 ReadResult read_model_text(const std::string& text, const std::vector<std::string>& overrides,
                            const std::string& source) {
     ReadResult result;
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        // nlohmann reports the byte just past the problem; step back to point at it.
-        const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
-        const auto [line, column] = line_and_column(text, byte);
-        std::string what = e.what();
-        const auto colon = what.rfind(": ");
-        if (colon != std::string::npos) what = what.substr(colon + 2);
-        result.diagnostics.push_back({Diagnostic::Severity::Error, "",
-                                      source + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                                          ": malformed JSON: " + what});
-        return result;
-    } catch (const json::out_of_range&) {
-        // A number beyond the range of a double (1e400): nlohmann gives no position, so the
-        // first such literal is found here.
-        const auto [byte, literal] = first_overflowing_number(text);
-        const auto [line, column] = line_and_column(text, byte);
-        result.diagnostics.push_back({Diagnostic::Severity::Error, "",
-                                      source + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                                          ": number " + literal + " is too large (beyond ±1.8e308)"});
-        return result;
-    }
+    std::optional<json> parsed = parse_json_text(text, source, result.diagnostics);
+    if (!parsed) return result;
+    json& root = *parsed;
     apply_overrides(root, overrides, result.diagnostics);
 
     Parser p(result.diagnostics);
@@ -975,7 +917,7 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
                             "gravity_table", "initial_stress", "water", "measurement_points", "mesh", "analysis", "bolts", "stages",
                             "ground_motions", "base_motion", "absorbing_boundaries", "seismic_coefficient"});
     const std::string format = p.string(root, "", "format", std::nullopt);
-    if (!format.empty() && format != model_format_name)
+    if (root.contains("format") && root.at("format").is_string() && format != model_format_name)
         p.error("/format", "must be \"" + std::string(model_format_name) + "\", got \"" + format + "\"");
     const long version = p.integer(root, "", "version", -1);
     if (!root.contains("version")) p.error("/version", "required format version is missing");
@@ -1015,6 +957,14 @@ ReadResult read_model_text(const std::string& text, const std::vector<std::strin
 }
 
 ReadResult read_model_file(const std::string& path, const std::vector<std::string>& overrides) {
+    // A directory or a device is refused before reading (/dev/zero never ends); a named pipe
+    // (a shell's process substitution) is read like a file.
+    const std::string kind = not_a_regular_file(path);
+    if (!kind.empty() && kind != "does not exist" && !is_named_pipe(path)) {
+        ReadResult r;
+        r.diagnostics.push_back({Diagnostic::Severity::Error, "", path + " " + kind + ", not a model file"});
+        return r;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         ReadResult r;

@@ -1,5 +1,9 @@
 #include "study/Study.hpp"
 
+#include "io/FileKind.hpp"
+#include "io/JsonText.hpp"
+#include "io/NumberText.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -11,6 +15,7 @@
 #include <numeric>
 #include <random>
 #include <sstream>
+#include <string_view>
 
 namespace mcdda {
 
@@ -70,10 +75,26 @@ private:
     std::vector<Diagnostic>& d_;
 };
 
+/// A value as a message quotes it: "2", "1.5", "the text \"1\"", "a list".
+std::string shown(const json& v)
+{
+    if (v.is_array()) return "a list";
+    if (v.is_object()) return "an object";
+    const std::string text = v.dump();
+    const std::string cut = text.size() > 40 ? text.substr(0, 40) + "..." : text;
+    return v.is_string() ? "the text " + cut : cut;
+}
+
+/// A cell of study.csv (RFC 4180: quoted when it holds a comma, quote or line break; a line
+/// break becomes a space, one row per line). Text that a spreadsheet would take for a formula —
+/// beginning with =, +, -, @, a tab or a carriage return, and not a number — gets a leading '
+/// and quotes (OWASP's rule against CSV injection): a name or message is shown, never run.
 std::string csv_cell(const std::string& text)
 {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string quoted = "\"";
+    const bool formula = !text.empty() && std::string_view("=+-@\t\r").find(text[0]) != std::string_view::npos &&
+                         !decimal_number(text);
+    if (!formula && text.find_first_of(",\"\n\r") == std::string::npos) return text;
+    std::string quoted = formula ? "\"'" : "\"";
     for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
     return quoted + "\"";
 }
@@ -109,17 +130,13 @@ std::string StudyRun::folder_name() const
 }
 
 std::optional<StudyDefinition> read_study_text(const std::string& text, const std::string& folder,
-                                               std::vector<Diagnostic>& diagnostics)
+                                               std::vector<Diagnostic>& diagnostics, const std::string& source)
 {
     const std::size_t errors_before = diagnostics.size();
     Reader r(diagnostics);
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        r.error("", std::string("not valid JSON: ") + e.what());
-        return std::nullopt;
-    }
+    const std::optional<json> parsed = parse_json_text(text, source, diagnostics);
+    if (!parsed) return std::nullopt;
+    const json& root = *parsed;
     if (!root.is_object()) {
         r.error("", "a study file is a JSON object");
         return std::nullopt;
@@ -133,8 +150,15 @@ std::optional<StudyDefinition> read_study_text(const std::string& text, const st
     }
     if (r.text(root, "", "format", true) != "mcdda-study" && root.contains("format"))
         r.error("/format", "must be \"mcdda-study\"");
+    // One version so far; a file of a later one must not be read as if it were this one.
+    if (!root.contains("version"))
+        r.error("/version", "is required: 1, the version of the study format this program reads");
+    else if (const json& v = root["version"]; !v.is_number() || v.get<double>() != 1.0)
+        r.error("/version", "must be 1, the version of the study format this program reads (got " + shown(v) + ")");
     StudyDefinition s;
     s.model = r.text(root, "", "model", true);
+    if (root.contains("model") && root["model"].is_string() && s.model.empty())
+        r.error("/model", "must name the base model file");
     if (!s.model.empty() && fs::path(s.model).is_relative()) s.model = (fs::path(folder) / s.model).lexically_normal().string();
     if (root.contains("set")) {
         if (!root["set"].is_array()) r.error("/set", "must be a list of \"/pointer=value\" texts");
@@ -247,14 +271,26 @@ std::optional<StudyDefinition> read_study_text(const std::string& text, const st
 
 std::optional<StudyDefinition> read_study_file(const std::string& path, std::vector<Diagnostic>& diagnostics)
 {
-    std::ifstream in(path);
-    if (!in) {
-        diagnostics.push_back({Diagnostic::Severity::Error, "", "cannot open the study file " + path});
+    auto error = [&](const std::string& where, const std::string& message) {
+        diagnostics.push_back({Diagnostic::Severity::Error, where, message});
         return std::nullopt;
-    }
+    };
+    // What is not a file is refused by what it is, before reading: /dev/zero never ends.
+    if (const std::string kind = not_a_regular_file(path); !kind.empty())
+        return error("", "the study file " + path + " " + kind + (kind == "does not exist" ? "" : ", not a file"));
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return error("", "cannot open the study file " + path);
     std::stringstream text;
     text << in.rdbuf();
-    return read_study_text(text.str(), fs::path(path).parent_path().string(), diagnostics);
+    std::optional<StudyDefinition> study =
+        read_study_text(text.str(), fs::path(path).parent_path().string(), diagnostics, path);
+    if (!study) return std::nullopt;
+    // Every run reads the model: it must be a file, and one whose name the system can take.
+    if (study->model.find('\0') != std::string::npos)
+        return error("/model", "the file name holds a NUL character (\\u0000), which no file name can");
+    if (const std::string kind = not_a_regular_file(study->model); !kind.empty())
+        return error("/model", study->model + " " + kind + (kind == "does not exist" ? "" : ", not a model file"));
+    return study;
 }
 
 std::vector<StudyRun> expand_study(const StudyDefinition& study)
@@ -373,7 +409,7 @@ std::string study_csv(const StudyDefinition& study, const std::vector<StudyRow>&
     for (const StudyRow& r : rows) sorted.push_back(&r);
     std::sort(sorted.begin(), sorted.end(), [](const StudyRow* a, const StudyRow* b) { return a->index < b->index; });
     for (const StudyRow* r : sorted) {
-        out << r->index << "," << r->status;
+        out << r->index << "," << csv_cell(r->status);
         for (double v : r->values) out << "," << exact(v);
         for (const std::optional<double>& v : r->outputs) out << "," << (v ? exact(*v) : std::string());
         out << "," << csv_cell(r->message) << "\n";
@@ -387,7 +423,8 @@ std::string row_to_json(const StudyRow& row)
     json outputs = json::array();
     for (const std::optional<double>& v : row.outputs) outputs.push_back(v ? json(*v) : json());
     j["outputs"] = outputs;
-    return j.dump();
+    // A message may quote a path of the command line, in whatever bytes it has: never a failure.
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 std::optional<StudyRow> row_from_json(const std::string& text)

@@ -52,10 +52,13 @@ struct StudyRun {
 };
 
 /// Reads a study file; the model path is resolved against the study file's folder. Problems are
-/// diagnostics naming their JSON pointer; nullopt when there is any error.
+/// diagnostics naming their JSON pointer (malformed JSON: `source`, line and column); nullopt
+/// when there is any error. The file's variant also refuses a study file or model that is not a
+/// regular file (a directory, /dev/zero), before reading it.
 std::optional<StudyDefinition> read_study_file(const std::string& path, std::vector<Diagnostic>& diagnostics);
 std::optional<StudyDefinition> read_study_text(const std::string& text, const std::string& folder,
-                                               std::vector<Diagnostic>& diagnostics);
+                                               std::vector<Diagnostic>& diagnostics,
+                                               const std::string& source = "study");
 
 /// The runs of the study in order: the grid's every combination (the last parameter varying
 /// fastest), or `samples` draws (deterministic for a seed, on any machine).

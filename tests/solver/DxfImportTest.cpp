@@ -4,10 +4,12 @@
 
 #include "mcdda/Analysis.hpp"
 #include "io/DxfImport.hpp"
+#include "io/ModelWriter.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +49,8 @@ public:
     {
         return add({0, "CIRCLE"}).add({8, layer}).add({10, c.x}).add({20, c.y}).add({40, r});
     }
+    /// Any group, as a damaged or hostile file has it.
+    Drawing& group(int code, const std::string& value) { return add({code, value}); }
     std::string save(const std::string& name)
     {
         const std::string path = (std::filesystem::temp_directory_path() / name).string();
@@ -92,6 +96,21 @@ Drawing tunnel_drawing(int insunits)
 bool says(const std::vector<Diagnostic>& d, const std::string& words)
 {
     return std::any_of(d.begin(), d.end(), [&](const Diagnostic& x) { return x.message.find(words) != std::string::npos; });
+}
+
+std::string messages(const std::vector<Diagnostic>& d)
+{
+    std::string text;
+    for (const Diagnostic& x : d) text += format_diagnostic(x) + "\n";
+    return text;
+}
+
+/// A file of exactly these bytes.
+std::string save_bytes(const std::string& name, const std::string& bytes)
+{
+    const std::string path = (std::filesystem::temp_directory_path() / name).string();
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
 }
 
 }  // namespace
@@ -182,4 +201,83 @@ TEST(DxfImport, ALineEndingInTheRockBecomesACrack) {
     EXPECT_NEAR(length, 2.0 * std::hypot(6.0, 1.0), 1e-9);  // both faces of the 6.08 m line
     std::set<int> blocks(mesh.block.begin(), mesh.block.end());
     EXPECT_EQ(blocks.size(), 1u);
+}
+
+// A count is believed only as far as the file holds its items: dxflib allocates what it declares
+// (10⁹ vertices in a 104-byte file were 3 GB, or std::bad_alloc). Refused at once, with the line.
+TEST(DxfImport, DeclaredCountsBeyondTheContentAreRefused) {
+    Drawing lw(6);
+    lw.group(0, "LWPOLYLINE").group(8, "rock").group(90, "1000000000").group(70, "1");
+    for (const char* v : {"0", "0", "1", "0", "0", "1"}) lw.group(10, v).group(20, v);
+    const auto start = std::chrono::steady_clock::now();
+    const DxfImportResult r = import_dxf_file(lw.save("mcdda-count-1e9.dxf"));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    EXPECT_FALSE(r.model.has_value());
+    // The LWPOLYLINE starts on line 15 (after the header's 14), the value of its 90 is on line 20.
+    EXPECT_TRUE(says(r.diagnostics, "line 20: the LWPOLYLINE on layer \"rock\" from line 15 declares 1000000000 "
+                                    "vertices (group code 90) but holds 6"))
+        << messages(r.diagnostics);
+    // Fewer than it holds: dxflib would overwrite the last vertex with the rest.
+    Drawing fewer(6);
+    fewer.group(0, "LWPOLYLINE").group(8, "rock").group(90, "3").group(70, "1");
+    for (const char* v : {"0", "5", "5", "0"}) fewer.group(10, v).group(20, v);
+    EXPECT_TRUE(says(import_dxf_file(fewer.save("mcdda-count-fewer.dxf")).diagnostics, "declares 3 vertices"));
+    // Entities that are not imported still must not make dxflib allocate beyond their content.
+    Drawing spline(6);
+    spline.lwpolyline("rock", {{0, 0}, {1, 0}, {1, 1}}, true).group(0, "SPLINE").group(8, "0").group(72, "2000000000");
+    EXPECT_TRUE(says(import_dxf_file(spline.save("mcdda-count-spline.dxf")).diagnostics,
+                     "the SPLINE on layer \"0\" from line 35 declares 2000000000 knots (group code 72) but holds 0"));
+}
+
+// dxflib reads "abc", "NaN", "-inf", "1e" and "" as 0 without a word: each is an error with its
+// line, entity and layer.
+TEST(DxfImport, CoordinatesThatAreNotNumbersAreRefusedWithTheirLine) {
+    for (const std::string& bad : {"abc", "NaN", "-inf", "1e", "", "0x10", "1e999"}) {
+        Drawing d(6);
+        d.group(0, "LWPOLYLINE").group(8, "rock").group(90, "3").group(70, "1");
+        d.group(10, "0").group(20, "0").group(10, bad).group(20, "0").group(10, "1").group(20, "1");
+        const DxfImportResult r = import_dxf_file(d.save("mcdda-bad-number.dxf"));
+        EXPECT_FALSE(r.model.has_value()) << bad;
+        const std::string quoted = bad.empty() ? "is empty, not a number" : "is \"" + bad + "\"";
+        const std::string where = "line 28: the x (group code 10) of the LWPOLYLINE on layer \"rock\" from line 15 ";
+        EXPECT_TRUE(says(r.diagnostics, where + quoted)) << bad << ": " << messages(r.diagnostics);
+    }
+    // A decimal comma is what dxflib reads too; it is a number.
+    Drawing comma(6);
+    comma.group(0, "LWPOLYLINE").group(8, "rock").group(90, "3").group(70, "1");
+    comma.group(10, "0").group(20, "0").group(10, "1,5").group(20, "0").group(10, "1").group(20, "1");
+    const DxfImportResult ok = import_dxf_file(comma.save("mcdda-comma.dxf"));
+    ASSERT_TRUE(ok.model.has_value()) << messages(ok.diagnostics);
+    EXPECT_EQ(ok.model->regions[0].boundary[1].x, 1.5);
+}
+
+// Layer names of drawings before AutoCAD 2007 are in the Windows code page: read as such into
+// UTF-8, the model file (JSON) can hold them.
+TEST(DxfImport, Latin1LayerNamesBecomeUtf8) {
+    Drawing d(6);
+    d.lwpolyline("ro\xff" "ck", {{0, 0}, {20, 0}, {20, 10}, {0, 10}}, true).line("Kl\xfc" "fte", {0, 5}, {20, 6});
+    const DxfImportResult r = import_dxf_file(d.save("mcdda-latin1.dxf"));
+    ASSERT_TRUE(r.model.has_value()) << messages(r.diagnostics);
+    EXPECT_EQ(r.model->materials[0].name, "ro\u00ffck");
+    EXPECT_EQ(r.model->joint_materials[0].name, "Kl\u00fcfte");
+    EXPECT_NE(write_model_text(*r.model).find("\"ro\u00ffck\""), std::string::npos);
+}
+
+// What is not an ASCII DXF says what it is, not "no closed polyline".
+TEST(DxfImport, BinaryUtf16AndOtherFilesSayWhatTheyAre) {
+    auto error_of = [](const std::string& path) { return messages(import_dxf_file(path).diagnostics); };
+    EXPECT_NE(error_of(save_bytes("mcdda-binary.dxf", std::string("AutoCAD Binary DXF\r\n\x1a\0\0\0", 26)))
+                  .find("a binary DXF, which is not supported: save the drawing as ASCII DXF"),
+              std::string::npos);
+    const std::string text = "0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n";
+    std::string le = "\xff\xfe", be = "\xfe\xff", bare;
+    for (char c : text) le += std::string{c, '\0'}, be += std::string{'\0', c}, bare += std::string{c, '\0'};
+    for (const std::string& bytes : {le, be, bare})
+        EXPECT_NE(error_of(save_bytes("mcdda-utf16.dxf", bytes)).find("UTF-16 text, which is not supported"),
+                  std::string::npos);
+    const std::string png("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16);
+    EXPECT_NE(error_of(save_bytes("mcdda-png.dxf", png)).find("NUL byte"), std::string::npos);
+    EXPECT_NE(error_of(save_bytes("mcdda-text.dxf", "hello\nworld\n")).find("line 1: \"hello\" is not a DXF group code"),
+              std::string::npos);
+    EXPECT_NE(error_of("/dev/zero").find("/dev/zero is a character device, not a DXF drawing"), std::string::npos);
 }

@@ -58,6 +58,34 @@ TEST(ModelReader, MalformedJsonReportsLineAndColumn) {
     EXPECT_NE(r.diagnostics[0].message.find("malformed JSON"), std::string::npos);
 }
 
+// Any format but "mcdda-model" is refused, the empty one too.
+TEST(ModelReader, FormatMustBeTheModelFormat) {
+    for (const std::string& format : {std::string(""), std::string("mcdda-study"), std::string("MCDDA-MODEL")}) {
+        const ReadResult r = read_model_text(square_model_json(), {"/format=\"" + format + "\""});
+        EXPECT_FALSE(r.model) << format;
+        const std::string words = "must be \"mcdda-model\", got \"" + format + "\"";
+        EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/format", words)) << all_messages(r.diagnostics);
+    }
+}
+
+// A directory or device is refused by what it is, before reading (/dev/zero never ends).
+TEST(ModelReader, WhatIsNotAFileIsRefusedUnread) {
+    for (const char* path : {"/dev/zero", "/tmp"}) {
+        const ReadResult r = read_model_file(path);
+        EXPECT_FALSE(r.model);
+        EXPECT_NE(all_messages(r.diagnostics).find(std::string(path) + " is a "), std::string::npos)
+            << all_messages(r.diagnostics);
+    }
+}
+
+// A --set value that is not valid JSON is text, which JSON holds in UTF-8 only: other bytes are
+// refused there, not left for writing the results to fail on.
+TEST(ModelReader, OverrideTextMustBeUtf8) {
+    const ReadResult r = read_model_text(square_model_json(), {"/name=ro\xff" "ck"});
+    EXPECT_FALSE(r.model);
+    EXPECT_TRUE(has_diagnostic(r.diagnostics, Severity::Error, "/name", "not UTF-8")) << all_messages(r.diagnostics);
+}
+
 // A 10 MB key was printed in full twice (pointer and message); '/' and '~' in a key
 // must be escaped in its pointer.
 TEST(ModelReader, AVeryLongOrOddUnknownKeyIsShownShortAndEscaped) {

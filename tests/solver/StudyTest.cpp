@@ -90,8 +90,90 @@ TEST(Study, ProblemsNameTheirPlace) {
     EXPECT_TRUE(has("/outputs/0", "either"));
     EXPECT_TRUE(has("/extra", "unknown key"));
     d.clear();
-    EXPECT_FALSE(read_study_text("{not json", ".", d).has_value());
-    EXPECT_TRUE(has("", "not valid JSON"));
+    EXPECT_FALSE(read_study_text("{not json", ".", d, "s.json").has_value());
+    EXPECT_TRUE(has("", "s.json:1:2: malformed JSON"));
+}
+
+// Malformed JSON and numbers beyond a double are said with file, line and column as the model
+// reader says them, never in the JSON library's words (an overflow was an "unexpected failure").
+TEST(Study, MalformedJsonIsSaidWithLineAndColumn) {
+    const std::string text = R"({"format": "mcdda-study", "version": 1, "model": "m.json",
+        "parameters": [{"name": "a", "path": "/x", "values": [VALUE]}]})";
+    using Case = std::pair<std::string, std::string>;  // value, the message's beginning
+    for (const auto& [value, words] : {Case{"NaN", "s.json:2:63: malformed JSON: NaN is not a number"},
+                                       Case{"1e400", "s.json:2:63: number 1e400 is too large"}}) {
+        std::string t = text;
+        t.replace(t.find("VALUE"), 5, value);
+        std::vector<Diagnostic> d;
+        EXPECT_FALSE(read_study_text(t, ".", d, "s.json").has_value());
+        ASSERT_EQ(d.size(), 1u);
+        EXPECT_EQ(d[0].message.find(words), 0u) << d[0].message;
+        EXPECT_EQ(d[0].message.find("json.exception"), std::string::npos) << d[0].message;
+    }
+}
+
+// The version is the integer 1 (a later format must not be read as this one); the message says
+// what is accepted.
+TEST(Study, VersionMustBeOne) {
+    for (const std::string version : {"0", "2", "\"1\"", "1.5", "true", "null"}) {
+        std::vector<Diagnostic> d;
+        const std::string text = R"({"format": "mcdda-study", "version": )" + version +
+                                 R"(, "model": "m.json", "parameters": [{"path": "/x", "values": [1]}]})";
+        EXPECT_FALSE(read_study_text(text, ".", d).has_value()) << version;
+        ASSERT_EQ(d.size(), 1u) << version;
+        EXPECT_EQ(d[0].path, "/version");
+        EXPECT_NE(d[0].message.find("must be 1, the version of the study format this program reads"), std::string::npos)
+            << d[0].message;
+    }
+    std::vector<Diagnostic> d;
+    const std::string none = R"({"format": "mcdda-study", "model": "m.json", "parameters": [{"path": "/x", "values": [1]}]})";
+    EXPECT_FALSE(read_study_text(none, ".", d).has_value());
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].path, "/version");
+}
+
+// The study file and its model must be regular files, refused by what they are before anything
+// reads them: a model /dev/zero was read for 23 s before "malformed JSON".
+TEST(Study, StudyAndModelMustBeFiles) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "mcdda-study-files";
+    std::filesystem::create_directories(folder);
+    auto problems_with_model = [&](const std::string& model) {
+        std::ofstream(folder / "s.json") << R"({"format": "mcdda-study", "version": 1, "model": )" << model
+                                         << R"(, "parameters": [{"path": "/x", "values": [1]}]})";
+        std::vector<Diagnostic> d;
+        EXPECT_FALSE(read_study_file((folder / "s.json").string(), d).has_value()) << model;
+        std::string text;
+        for (const Diagnostic& x : d) text += format_diagnostic(x) + "\n";
+        return text;
+    };
+    EXPECT_NE(problems_with_model("\"/dev/zero\"").find("/model: /dev/zero is a character device, not a model file"),
+              std::string::npos);
+    EXPECT_NE(problems_with_model("\"/tmp\"").find("/tmp is a directory"), std::string::npos);
+    EXPECT_NE(problems_with_model("\"m\\u0000.json\"").find("/model: the file name holds a NUL character"),
+              std::string::npos);
+    EXPECT_NE(problems_with_model("\"missing.json\"").find("missing.json does not exist"), std::string::npos);
+    std::vector<Diagnostic> d;
+    EXPECT_FALSE(read_study_file("/dev/zero", d).has_value());
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_NE(d[0].message.find("the study file /dev/zero is a character device"), std::string::npos);
+    std::filesystem::remove_all(folder);
+}
+
+// A cell a spreadsheet would take for a formula (=, +, -, @, tab, CR first, and not a number)
+// starts with ' and is quoted (OWASP's rule against CSV injection); numbers stay numbers.
+TEST(Study, CsvCellsAreNeverFormulas) {
+    StudyDefinition s;
+    s.parameters = {{"=HYPERLINK(\"http://x\")", "/a", {}, std::nullopt}, {"-b", "/b", {}, std::nullopt}};
+    s.outputs = {{"@SUM(A1)", "/steps", ""}, {"+c", "", "c"}, {"\tcmd", "", "d"}};
+    StudyRow row;
+    row.index = 1;
+    row.status = "failed";
+    row.message = "-2+3,cmd|' /C calc'!A0";
+    row.values = {-1.5, 2};
+    row.outputs = {-0.25, std::nullopt, 1e-300};
+    const std::string csv = study_csv(s, {row});
+    EXPECT_EQ(csv, "run,status,\"'=HYPERLINK(\"\"http://x\"\")\",\"'-b\",\"'@SUM(A1)\",\"'+c\",\"'\tcmd\",message\n"
+                   "1,failed,-1.5,2,-0.25,,1e-300,\"'-2+3,cmd|' /C calc'!A0\"\n");
 }
 
 TEST(Study, RowsFromRunFilesAndBackThroughJson) {
