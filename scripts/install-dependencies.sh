@@ -22,6 +22,9 @@ packages=(
   # Parameter studies over MPI ranks (mpirun) and their tests (pkill).
   openmpi-bin libopenmpi-dev procps
   xvfb xauth mesa-utils libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core
+  # The Debian package (cpack -G DEB: dpkg-shlibdeps) and its test (desktop-file-validate,
+  # appstreamcli).
+  dpkg-dev desktop-file-utils appstream
 )
 
 missing=()
@@ -31,6 +34,15 @@ done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-dependencies: all ${#packages[@]} packages present"
   exit 0
+fi
+
+# ParaView's Python (python3-paraview, which Debian's paraview recommends) conflicts with
+# python3-vtk9, which libvtk9-dev needs: apt-get -y would remove it unasked (README.md, "ParaView").
+if [[ " ${missing[*]} " == *" libvtk9-dev "* ]] \
+   && dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null | grep -q "install ok installed"; then
+  echo "install-dependencies: libvtk9-dev cannot be installed beside python3-paraview (ParaView's Python);" \
+       "build in a container or install the .deb instead (README.md, \"ParaView\")" >&2
+  exit 1
 fi
 
 if [ "$(id -u)" -eq 0 ]; then

@@ -210,10 +210,44 @@ py::object run(Analysis& analysis, const std::optional<std::string>& output_fold
     return std::move(out);
 }
 
+/// pybind11 reads NumPy's array descriptors itself; before 2.12 (Debian 12 has 2.10) it knows
+/// only NumPy 1's layout.
+constexpr bool reads_numpy_2 = PYBIND11_VERSION_MAJOR > 2 || PYBIND11_VERSION_MINOR >= 12;
+
+/// Meshes and results are NumPy arrays: without a NumPy it can use, say so at import with the
+/// remedy rather than fail at the first array (a virtual environment made without
+/// --system-site-packages does not see Debian's python3-numpy). Raised as import_error, not as
+/// a Python error, which PYBIND11_MODULE would bury under "initialization failed".
+void require_numpy()
+{
+    const std::string python = py::str(py::module_::import("sys").attr("executable"));
+    const std::string remedy = std::string(". Install it into this environment (python3 -m pip install ") +
+                               (reads_numpy_2 ? "numpy" : "'numpy<2'") +
+                               "), or create the virtual environment with `python3 -m venv "
+                               "--system-site-packages` so that it sees Debian's python3-numpy.";
+    py::module_ numpy;
+    try {
+        numpy = py::module_::import("numpy");
+    } catch (py::error_already_set& e) {
+        if (!e.matches(PyExc_ImportError)) throw;
+        const std::string reason = py::str(e.value());
+        throw py::import_error("mcdda needs NumPy, which this Python (" + python + ") cannot import (" + reason +
+                               ")" + remedy);
+    }
+    const std::string version = py::str(numpy.attr("__version__"));
+    if (!reads_numpy_2 && version.rfind("1.", 0) != 0)
+        throw py::import_error("mcdda needs NumPy 1 (it was built with pybind11 " +
+                               std::to_string(PYBIND11_VERSION_MAJOR) + "." + std::to_string(PYBIND11_VERSION_MINOR) +
+                               ", which predates NumPy 2), and this Python (" + python + ") has NumPy " + version +
+                               remedy);
+}
+
 }  // namespace
 
 PYBIND11_MODULE(mcdda, m)
 {
+    require_numpy();
+
     m.doc() = "mcdda: elastic-plastic discontinuous deformation analysis (docs/python.md)";
     m.attr("__version__") = library_version();
     py::register_exception<ModelError>(m, "ModelError", PyExc_ValueError);
