@@ -35,7 +35,7 @@ Commands:
            --results it draws a result .vtu of `mcdda run` of the same model instead
   run      run the analysis: DIR/<model>.pvd with one .vtu per saved step
            (displacement, velocity, stress, block, material), DIR/history.csv and
-           DIR/summary.json (status, timing); Ctrl-C stops after the current step
+           DIR/summary.json (status, timing); Ctrl-C stops within the current step
   study    run a parameter study (docs/study.md): every run of STUDY.json in
            DIR/runs/run_NNNN, one row each in DIR/study.csv; under mpirun the runs are
            spread over the ranks; a rerun skips the runs that have their result;

@@ -1,5 +1,5 @@
 // `mcdda run`: the headless analysis. Results stay valid at every moment (see RunOutput); Ctrl-C
-// stops after the current step.
+// stops at the next equilibrium iteration, keeping the last load increment accepted.
 
 #include "Commands.hpp"
 #include "Progress.hpp"
@@ -44,7 +44,7 @@ void print_timings(const RunTimings& t, int steps) {
                   << " s; step / factorization = " << (t.total / steps) / (t.factorization / t.factorizations) << "\n";
 }
 
-/// Ctrl-C and SIGTERM (a batch system's stop) end the run after the current step while this lives.
+/// Ctrl-C and SIGTERM (a batch system's stop) end the run while this lives (within the step).
 class StopOnSignals {
 public:
     StopOnSignals() {
@@ -74,7 +74,13 @@ std::unique_ptr<RunOutput> open_output(const Request& r, const std::string& stem
     }
 }
 
+/// After a failed write: where the earlier run's results are, when the run kept them.
+void note_previous(const RunOutput& output) {
+    if (!output.kept_results().empty()) std::cerr << "the earlier results are kept in " << output.kept_results() << "\n";
+}
+
 /// summary.json; false, said on stderr, when the folder became unwritable or full during the run.
+
 bool write_summary(RunOutput& output, const Simulation& simulation, const RunEnd& end,
                    const FactorOfSafety* factor = nullptr) {
     try {
@@ -82,6 +88,7 @@ bool write_summary(RunOutput& output, const Simulation& simulation, const RunEnd
         return true;
     } catch (const std::exception& e) {
         std::cerr << "error: cannot write the run's summary: " << e.what() << "\n";
+        note_previous(output);
         return false;
     }
 }
@@ -126,6 +133,7 @@ int run_strength_reduction(const Request& r, const Preprocessed& p, const std::s
         end = search->run(output.get(), callbacks);
     } catch (const std::exception& e) {  // writing results failed
         std::cerr << "error: " << e.what() << "\n";
+        note_previous(*output);
         return exit_output_error;
     }
     if (!write_summary(*output, search->simulation(), end, &search->factor())) return exit_output_error;
@@ -184,6 +192,7 @@ int run_run(const Request& r) {
     } catch (const std::exception& e) {  // writing results failed
         progress.finish();
         std::cerr << "error: " << e.what() << "\n";
+        note_previous(*output);
         return exit_output_error;
     }
     progress.finish();

@@ -154,6 +154,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
     // tangent factor is not.
     bool elastic_matrix = factor_valid && !held_.tangent;
     for (int k = 0;; ++k) {
+        if (stop_check_ && stop_check_()) throw StepInterrupted();
         // Refactorise when K is stale: contacts changed, or the last iteration contracted slowly.
         const ElementMatrix matrix =
             factor_valid ? ElementMatrix::None : (newton ? ElementMatrix::Tangent : ElementMatrix::Elastic);

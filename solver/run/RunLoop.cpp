@@ -46,6 +46,8 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         output->save_step(simulation);
         last_saved = 0;
     }
+    // A stop is also heard inside a step (one step of a large model can take minutes).
+    simulation.set_stop_check(should_stop);
     while (!simulation.finished()) {
         if (until_stage >= 0 && simulation.stage_complete() && simulation.current_stage() + 1 >= until_stage) break;
         if (should_stop && should_stop()) {
@@ -55,6 +57,15 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         StepReport report;
         try {
             report = simulation.advance();
+        } catch (const StepInterrupted&) {
+            end = {RunStatus::Cancelled, "cancelled by the user during step " + std::to_string(simulation.state().step + 1) +
+                                             " (the results are those of the last load increment accepted)"};
+            if (output && simulation.state().step_fraction > 0.0) {
+                output->record_history(simulation);
+                output->save_state(simulation, simulation.state(), simulation.state().step + 1, simulation.state().time);
+                last_saved = simulation.state().step;
+            }
+            break;
         } catch (const PlasticCollapse& e) {
             end = collapse_end(simulation, e);
             if (output && simulation.state().step_fraction > 0.0) {
@@ -80,6 +91,7 @@ RunEnd run_steps(Simulation& simulation, RunOutput* output, const std::function<
         }
         if (on_step) on_step(report);
     }
+    simulation.set_stop_check(nullptr);
     if (end.status == RunStatus::Completed) end = equilibrium_end(simulation);
     // An early ending still leaves its last accepted step on disk.
     if (output && last_saved != simulation.state().step) output->save_step(simulation);

@@ -117,6 +117,12 @@ struct PlasticCollapse : std::runtime_error {
     double not_carried = 0.0;  ///< the smallest position tried beyond it that could not be carried
 };
 
+/// A stop was requested (Ctrl-C, a batch system's SIGTERM, Cancel) while a step was being solved:
+/// the step is abandoned and the state stays that of the last load increment accepted.
+struct StepInterrupted : std::runtime_error {
+    StepInterrupted() : std::runtime_error("stopped during the step") {}
+};
+
 /// What one accepted step did.
 struct StepReport {
     int step = 0;
@@ -186,6 +192,9 @@ public:
     void set_iteration_observer(std::function<void(const IterationInfo&)> observer) {
         iteration_observer_ = std::move(observer);
     }
+    /// Asked at every equilibrium iteration; when it answers true, advance() throws
+    /// StepInterrupted, so that a stop does not wait for a long step to end.
+    void set_stop_check(std::function<bool()> stop) { stop_check_ = std::move(stop); }
 
     /// The state at this moment, and a return to it (the next advance() then begins the stage
     /// after the checkpoint's, with the strength factor in force then).
@@ -316,7 +325,7 @@ private:
     /// or moved too far.
     double time_step_cut(const Attempt& attempt, double largest, double singular_factor) const;
     /// What a static step does after a try.
-    enum class StaticResponse { Accept, SmallerLoad, Collapse, SmallerShare, SmallerTimeStep };
+    enum class StaticResponse { Accept, SmallerLoad, Collapse, SmallerTimeStep };
     StaticResponse judge_static(const Attempt& attempt, double increment, double dt, double largest) const;
     /// The load stepping within one static step.
     struct LoadSteps {
@@ -485,6 +494,7 @@ private:
     std::vector<StageRecord> stages_;
     std::vector<std::string> pending_events_;
     std::function<void(const IterationInfo&)> iteration_observer_;
+    std::function<bool()> stop_check_;
     IterationInfo iterating_;  ///< the step in progress, for the observer
 };
 

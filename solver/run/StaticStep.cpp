@@ -58,8 +58,15 @@ Simulation::StaticResponse Simulation::judge_static(const Attempt& attempt, doub
                                                     double largest) const {
     const double floor = model_.analysis.min_load_fraction;
     const bool above_floor = increment > floor * (1.0 + 1e-9);
-    const bool too_large = attempt.outcome == Outcome::Converged && largest > displacement_limit_;
     const bool equilibrium_only = is_equilibrium_only();
+    // The displacement limit keeps a step within reach of contact detection and of the geometry's
+    // linearisation (Shi's g2). A small-strain static analysis needs neither: its contacts are
+    // found on the undeformed shape whatever the step, and its equations are linear in the
+    // geometry. There a converged increment stands however far it moved (near a collapse load the
+    // plastic flow of a small load increment is large: refusing it until the increment was small
+    // enough cost the Prandtl footing a third of its tries).
+    const bool too_large =
+        !equilibrium_only && attempt.outcome == Outcome::Converged && largest > displacement_limit_;
     // Static DDA (deformed geometry) has its mass term: a block set loose by a wrong guess of its
     // contacts' states (it flies off, or its iterations fail while some rock elsewhere yields)
     // is held by inertia at a smaller Δt and settles in the relaxation (relax), as in Shi's
@@ -71,15 +78,10 @@ Simulation::StaticResponse Simulation::judge_static(const Attempt& attempt, doub
                                             dt >= plastic_collapse_time_step * model_.analysis.time_step));
     // A matrix that is singular while the material yields is a mechanism forming: a load
     // question too (a block without supports and yielding nothing gets a smaller Δt below).
-    const bool plastic_failure = !contact_question && (attempt.outcome == Outcome::NotConverged ||
-                                                       (attempt.outcome == Outcome::Singular && attempt.yielding > 0) ||
-                                                       (too_large && attempt.yielding > 0));
-    if (plastic_failure && !(too_large && increment <= floor))
-        return above_floor ? StaticResponse::SmallerLoad : StaticResponse::Collapse;
-    // Small-strain static: there is no mass term, so a smaller Δt changes nothing; an increment
-    // beyond the displacement limit (which guards contact detection) takes a smaller share of
-    // the load instead, and is accepted at the floor.
-    if (too_large && attempt.yielding == 0 && equilibrium_only && above_floor) return StaticResponse::SmallerShare;
+    const bool plastic_failure =
+        !contact_question && (attempt.outcome == Outcome::NotConverged ||
+                              (attempt.outcome == Outcome::Singular && attempt.yielding > 0));
+    if (plastic_failure) return above_floor ? StaticResponse::SmallerLoad : StaticResponse::Collapse;
     // Contacts that do not settle, a block held by nothing but inertia, or a step too large for
     // the contact linearisation: a smaller Δt (Shi's static DDA). Plasticity is not involved.
     if (contact_question || (attempt.outcome == Outcome::Singular && attempt.yielding == 0) ||
@@ -128,10 +130,6 @@ StepReport Simulation::advance_static() {
                                           attempt.why + " for a load increment of " + std::to_string(steps.increment) +
                                           " of a step)",
                                       from, from + steps.increment);
-            case StaticResponse::SmallerShare:
-                steps.increment = std::max(floor, std::min(0.5, 0.9 * displacement_limit_ / largest) * steps.increment);
-                ++timings_.load_cuts;
-                continue;
             case StaticResponse::SmallerTimeStep:
                 cut_static_time_step(attempt, largest, report, steps);
                 continue;

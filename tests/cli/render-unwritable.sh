@@ -15,7 +15,7 @@ out=$($as_user "$mcdda" render "$examples/kirsch.json" --out "$dir/kirsch.png" 2
 code=$?
 echo "$out"
 chmod 755 "$dir"
-[ $code -eq 3 ] || { echo "FAILED: exit status $code"; exit 1; }
+[ $code -eq 6 ] || { echo "FAILED: exit status $code"; exit 1; }
 echo "$out" | grep -q "cannot write $dir/kirsch.png: Permission denied" || { echo "FAILED: message"; exit 1; }
 echo "$out" | grep -q "disk space" && { echo "FAILED: VTK's wording"; exit 1; }
 [ -z "$(ls -A "$dir")" ] || { echo "FAILED: files left behind"; exit 1; }

@@ -49,7 +49,7 @@ out=$($as_user "$mcdda" run "$examples/kirsch.json" --out "$dir" --quiet 2>&1)
 code=$?
 chmod 755 "$dir"
 echo "$out"
-[ $code -eq 3 ] || fail "unwritable folder: exit status $code"
+[ $code -eq 6 ] || fail "unwritable folder: exit status $code"
 echo "$out" | grep -q "cannot write into the output directory $dir: Permission denied" || fail "unwritable: message"
 [ "$(wc -l < "$dir/history.csv")" -eq 4 ] && [ -f "$dir/kirsch_000002.vtu" ] || fail "unwritable: results touched"
 echo "ok"

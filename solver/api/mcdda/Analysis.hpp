@@ -191,7 +191,8 @@ public:
     /// solver failures and collapse are results, not exceptions. A strength reduction analysis
     /// runs its search: RunResult's factor_of_safety and trials.
     RunResult run(const RunOptions& options = {});
-    /// Asks a run in progress (on another thread) to stop after its current step.
+    /// Asks a run in progress (on another thread) to stop at its next equilibrium iteration (the
+    /// step in progress is abandoned: the state is that of the last load increment accepted).
     void cancel();
 
 private:
