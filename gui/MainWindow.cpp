@@ -40,6 +40,8 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QToolBar>
 #include <QUrl>
@@ -124,7 +126,9 @@ void MainWindow::createDocks()
     query_dock_ = addDock(tr("Query"), QStringLiteral("query"), query_, Qt::BottomDockWidgetArea, steps_dock_);
     connect(editing_, &EditingTools::queryLineDrawn, this, [this](const Point2& from, const Point2& to) {
         query_->setLine(from, to);
+        query_->setFileStem(modelStem());
         query_->refresh(view_->resultProbe());
+        view_->setQueryLine(from, to);  // seen on the picture, not only in the plot
         query_dock_->raise();
     });
 
@@ -193,6 +197,13 @@ void MainWindow::createActions()
     file->addSeparator();
     export_menu_ = new ExportMenu([this] { return view_->grabFrame(); }, [this] { return resultsPvdPath(); },
                                   [this] { return resultsHistoryPath(); }, this);
+    // The dialogs suggest a name saying what was exported (they suggested none).
+    export_menu_->setSuggestion([this] { return modelStem(); }, [this] { return shownResultName(); },
+                                [this] {
+                                    if (!resultsFolder().isEmpty()) return resultsFolder();
+                                    return document_->path().isEmpty() ? last_folder_
+                                                                       : QFileInfo(document_->path()).absolutePath();
+                                });
     connect(export_menu_, &ExportMenu::failed, this, &MainWindow::reportExportError);
     connect(export_menu_, &ExportMenu::exported, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     file->addMenu(export_menu_);
@@ -217,7 +228,51 @@ void MainWindow::createActions()
 
 bool MainWindow::importDxf(const QString& path)
 {
-    return import_dxf_into(this, document_, [this] { return maybeSave(); }, [this](const QString& line) { log(line); }, path);
+    const bool imported =
+        import_dxf_into(this, document_, [this] { return maybeSave(); }, [this](const QString& line) { log(line); }, path);
+    if (imported) {
+        forgetQueryLine();
+        forgetUntitledResults();
+    }
+    return imported;
+}
+
+QString MainWindow::modelStem() const
+{
+    return document_->path().isEmpty() ? session_->stem() : QFileInfo(document_->path()).completeBaseName();
+}
+
+QString MainWindow::shownResultName() const
+{
+    if (!view_->result() && view_->resultFile().isEmpty()) return QString();  // the model picture
+    QString name = resultField();
+    if (!view_->resultFile().isEmpty()) {
+        // <stem>_000010.vtu: step 10.
+        const QString number = QFileInfo(view_->resultFile()).completeBaseName().section(QLatin1Char('_'), -1);
+        bool ok = false;
+        const int step = number.toInt(&ok);
+        if (ok) name += QStringLiteral("-step") + QString::number(step);
+    } else if (view_->result()) {
+        name += QStringLiteral("-step") + QString::number(view_->result()->step);
+    }
+    return name;
+}
+
+ExportMenu* MainWindow::exportMenu() const { return export_menu_; }
+
+void MainWindow::forgetUntitledResults()
+{
+    // The temporary results folder was for the untitled model only.
+    if (untitled_results_.isEmpty()) return;
+    if (session_->outputFolder() == untitled_results_) session_->setOutputFolder(QString());
+    untitled_results_.clear();
+}
+
+void MainWindow::forgetQueryLine()
+{
+    // A line drawn across another model means nothing here: neither plotted nor drawn.
+    query_->clear();
+    view_->clearQueryLine();
 }
 
 DrawTool* MainWindow::activeTool() const { return editing_->activeTool(); }
@@ -267,6 +322,7 @@ void MainWindow::newModel()
 {
     if (!maybeSave()) return;
     setModelFile({});
+    forgetQueryLine();
     document_->setModel(new_model(tr("rock").toStdString(), tr("joint").toStdString()));  // → an empty picture
     view_->showBox(-5.0, -5.0, 25.0, 20.0);
     log(tr("New model: draw regions with Edit ▸ Draw Region."));
@@ -274,6 +330,7 @@ void MainWindow::newModel()
 
 void MainWindow::setModelFile(const QString& path)
 {
+    forgetUntitledResults();
     path_ = path;
     if (!path.isEmpty()) last_folder_ = QFileInfo(path).absolutePath();
     reload_action_->setEnabled(!path.isEmpty());
@@ -390,6 +447,8 @@ bool MainWindow::load(const QString& path, bool keep_camera)
     status_bar_->hideBusy();
     loading_ = false;
 
+    if (QFileInfo(path).absoluteFilePath() != QFileInfo(path_).absoluteFilePath() || path_.isEmpty())
+        forgetQueryLine();  // another model (Reload keeps the line)
     setModelFile(path);
     syncing_ = true;
     if (has_errors(document_->open(path))) document_->setModel(result->model);  // what could be read, without a file
@@ -403,6 +462,8 @@ bool MainWindow::load(const QString& path, bool keep_camera)
 void MainWindow::showPreprocessed(std::shared_ptr<const Preprocessed> p, const QString& source, bool keep_camera)
 {
     if (!p) return;
+    forgetQueryLine();
+    forgetUntitledResults();
     syncing_ = true;
     document_->setModel(p->model);  // edits start from it; saving asks for a file
     syncing_ = false;
@@ -494,7 +555,46 @@ bool MainWindow::startRun()
 {
     const auto scene = view_->scene();
     if (isRunning() || !scene || !scene->ok || isPreprocessing()) return false;
+    if (!chooseUntitledResults()) return false;
+    // Results are looked at with Select: a drawing tool's grid and snap marker would cover them.
+    editing_->useSelect();
     return session_->start(*scene);
+}
+
+bool MainWindow::chooseUntitledResults()
+{
+    // A saved model's results go beside it, and a folder chosen with Run ▸ Results Folder is
+    // the user's; an untitled model has neither, and its results once went silently into
+    // whatever the current folder was.
+    if (!document_->path().isEmpty()) return true;
+    if (!session_->outputFolder().isEmpty() && session_->outputFolder() != untitled_results_) return true;
+    if (!untitled_results_.isEmpty() && QFileInfo(untitled_results_).isDir()) return true;  // asked once per model
+    if (ask_to_save_) {
+        QMessageBox box(QMessageBox::Question, tr("Run an unsaved model"),
+                        tr("The model has not been saved yet. Where should its results go?"), QMessageBox::Cancel, this);
+        box.setInformativeText(tr("Save the model first to keep its results in a folder beside it "
+                                  "(<model>-results), or run it now with the results in a new temporary folder."));
+        QPushButton* save_first = box.addButton(tr("Save and Run..."), QMessageBox::AcceptRole);
+        QPushButton* temporary = box.addButton(tr("Run in a Temporary Folder"), QMessageBox::DestructiveRole);
+        box.setDefaultButton(save_first);
+        box.exec();
+        if (box.clickedButton() == save_first) return saveAsDialog();  // the results go beside the file
+        if (box.clickedButton() != temporary) return false;
+    }
+    QTemporaryDir folder(QDir(QDir::tempPath()).filePath(QStringLiteral("mcdda-untitled-XXXXXX")));
+    if (!folder.isValid()) {
+        reportExportError(tr("No folder for the results: %1").arg(folder.errorString()));
+        return false;
+    }
+    folder.setAutoRemove(false);  // the results stay after the program ends
+    untitled_results_ = folder.path();
+    session_->setOutputFolder(untitled_results_);
+    const QString text = tr("The model is not saved: its results go to the new folder %1 "
+                            "(File ▸ Save As keeps the model; its next run writes beside it).")
+                             .arg(QDir::toNativeSeparators(untitled_results_));
+    log(text);
+    statusBar()->showMessage(text, 10000);
+    return true;
 }
 
 void MainWindow::togglePause() { session_->togglePause(); }
@@ -581,6 +681,7 @@ void MainWindow::showResult()
 void MainWindow::onRunFinished(RunStatus status, const QString& message)
 {
     looking_back_ = false;  // the picture goes to the last saved step below
+    editing_->useSelect();  // a tool chosen during the run would draw its grid over the result
     status_bar_->hideProgress();
     const auto last = session_->lastSnapshot();
     const QString text = status == RunStatus::Completed && factor_found_

@@ -85,8 +85,9 @@ public:
     /// Grid snapping of the drawing tools (View ▸ Snap to Grid) and its spacing (m).
     void setGridSpacing(double metres);
     double gridSpacing() const { return grid_spacing_; }
-    /// Whether closing, New or Open ask before unsaved changes are lost (default true);
-    /// false discards them silently (for tests).
+    /// Whether closing, New or Open ask before unsaved changes are lost, and whether running a
+    /// model never saved asks where its results go (default true); false discards changes
+    /// silently and runs an untitled model into a new temporary folder (for tests).
     void setAskToSave(bool ask) { ask_to_save_ = ask; }
     /// File ▸ Save As without its dialog: writes the document to `path`.
     bool saveModelAs(const QString& path);
@@ -135,6 +136,13 @@ public:
     RunSession* runSession() const { return session_; }
     PreprocessScheduler* preprocessScheduler() const { return scheduler_; }
 
+    /// File ▸ Export: its dialogs suggest file names from the model and what the picture shows.
+    ExportMenu* exportMenu() const;
+    /// The model's name for file names: its file's base name, else the results' stem ("model").
+    QString modelStem() const;
+    /// What the result picture shows as part of a file name ("stress_1-step10"); empty for the
+    /// model picture.
+    QString shownResultName() const;
     /// The File ▸ Export actions without their dialogs; errors go to a message box and give false.
     bool exportPng(const QString& path);
     bool exportSteps(const QString& folder);
@@ -203,6 +211,13 @@ private:
     bool maybeSave();
     void onSelectionChanged(const ItemRef& ref);
     void applySnap();
+    /// Clears the query line and its plot (another model is shown).
+    void forgetQueryLine();
+    /// Before running a model never saved and without a results folder chosen: asks whether to
+    /// save it first or run into a new temporary folder (said in the log). False: cancelled.
+    bool chooseUntitledResults();
+    /// The untitled model's temporary results folder is no longer the next run's.
+    void forgetUntitledResults();
     void showStep(const QString& vtu_path);
     void reportExportError(const QString& message);
     void showCursor(const QPointF& model_pos);
@@ -248,6 +263,7 @@ private:
     bool factor_found_ = false;  ///< the current or last run found a factor of safety
     QString path_;
     QString last_folder_;
+    QString untitled_results_;  ///< the temporary results folder of the untitled model shown
     bool syncing_ = false;  ///< the document is being set from an already pre-processed model
     bool ask_to_save_ = true;
     bool loading_ = false;

@@ -887,318 +887,359 @@
 <context>
     <name>mcdda::gui::EditingTools</name>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="127"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="128"/>
         <source>bolt %1</source>
         <translation>Anker %1</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="134"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="135"/>
         <source>Add bolt &quot;%1&quot;</source>
         <translation>Anker „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="166"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
         <source>The water table must run from left to right: a point cannot be moved past its neighbour.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Ein Punkt kann nicht über seinen Nachbarn hinaus verschoben werden.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="187"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="191"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="193"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="198"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="202"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="212"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="213"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="221"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="216"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="224"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="217"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="225"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="219"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="227"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="223"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="231"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="224"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="232"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="225"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="233"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="236"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="229"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="237"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="231"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="239"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="232"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="240"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="242"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="235"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="243"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="237"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="245"/>
         <source>&amp;Bolt</source>
         <translation>A&amp;nker</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="238"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
         <source>Click the two anchors of a rock bolt (EA 98 MN/m, breaking at 160 kN/m per metre of thickness; other values and the stage that installs it are set in the model file)</source>
         <translation>Die beiden Verankerungspunkte eines Felsankers anklicken (EA 98 MN/m, Bruch bei 160 kN/m je Meter Dicke; andere Werte und die Bauphase, die ihn einbaut, stehen in der Modelldatei)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="241"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="249"/>
         <source>Draw &amp;Water Table</source>
         <translation>&amp;Grundwasserspiegel zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="242"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="250"/>
         <source>Click the points of the water table (piezometric line) from left to right; double-click or Enter finishes it. It is the water of the stage chosen in the Stages dock, or of the model as drawn</source>
         <translation>Die Punkte des Grundwasserspiegels (Piezometerlinie) von links nach rechts anklicken; Doppelklick oder Eingabetaste beendet ihn. Er gilt für die im Fenster Bauphasen gewählte Bauphase oder für das Modell wie gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
         <source>&amp;Absorbing Boundary</source>
         <translation>Absorbi&amp;erender Rand</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="247"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="255"/>
         <source>Click the two ends of a boundary whose dashpots let the earthquake&apos;s waves out instead of reflecting them (no support may hold it in a dynamic stage)</source>
         <translation>Die beiden Enden eines Randes anklicken, dessen Dämpfer die Wellen des Erdbebens hinauslassen, statt sie zu reflektieren (in einer dynamischen Bauphase darf ihn kein Lager halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="252"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="260"/>
         <source>&amp;Query Line</source>
         <translation>Abfragel&amp;inie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="253"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="261"/>
         <source>Click the two ends of a line across the result picture: the Query dock plots the field shown along it</source>
         <translation>Die beiden Enden einer Linie über das Ergebnisbild anklicken: das Abfrage-Fenster zeigt das Feld entlang der Linie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="257"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="265"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="262"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="270"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="265"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="273"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="267"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="275"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="277"/>
+        <source>Region</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
         <location filename="../gui/tools/EditingTools.cpp" line="278"/>
+        <source>Joint</source>
+        <translation>Kluft</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="280"/>
+        <source>Measurement</source>
+        <translation>Messpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="281"/>
+        <source>Water Table</source>
+        <translation>Grundwasserspiegel</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="282"/>
+        <source>Absorbing</source>
+        <translation>Absorbierend</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="293"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="285"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="312"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="288"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="315"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="289"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="316"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="290"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="317"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="291"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="318"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="305"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="332"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="306"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="308"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="335"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="306"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="307"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="334"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="308"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="335"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="310"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="279"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="337"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="311"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="338"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="312"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="339"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="314"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="341"/>
         <source>γw</source>
         <translation>γw</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="315"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="342"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="316"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="343"/>
         <source>Unit weight of water of a new water table (fresh water 9.81 kN/m³)</source>
         <translation>Wichte des Wassers eines neuen Grundwasserspiegels (Süßwasser 9,81 kN/m³)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="319"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="346"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="321"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="348"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="324"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="351"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="327"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="354"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="328"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="355"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="370"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="371"/>
+        <source>Select</source>
+        <translation>Auswählen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="374"/>
+        <source>Compliant Base</source>
+        <translation>Nachgiebige Basis</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="375"/>
+        <source>Select: no options</source>
+        <translation>Auswählen: keine Optionen</translation>
+    </message>
+    <message>
+        <location filename="../gui/tools/EditingTools.cpp" line="418"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="383"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="431"/>
         <source>The water table must run from left to right: point %1 is straight above or below point %2. Draw it again.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt genau über oder unter Punkt %2. Bitte neu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="385"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="433"/>
         <source>The water table must run from left to right: point %1 is left of point %2. Draw it again.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt links von Punkt %2. Bitte neu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="407"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="455"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="457"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="506"/>
         <source>Import a ground motion first (Earthquake dock): the compliant base is where it enters the model.</source>
         <translation>Zuerst eine Bodenbewegung importieren (Fenster Erdbeben): die nachgiebige Basis ist die Stelle, an der sie in das Modell eintritt.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="461"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="510"/>
         <source>Click the two ends of the compliant base</source>
         <translation>Die beiden Enden der nachgiebigen Basis anklicken</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="474"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="523"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -1206,78 +1247,78 @@
 <context>
     <name>mcdda::gui::ExportMenu</name>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="13"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="14"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="15"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="16"/>
         <source>&amp;Picture (PNG)...</source>
         <translation>&amp;Bild (PNG)...</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="17"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="18"/>
         <source>Export picture</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="17"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="18"/>
         <source>PNG pictures (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="22"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="23"/>
         <source>Save the picture of the view as a PNG file</source>
         <translation>Das Bild der Ansicht als PNG-Datei speichern</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="23"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="24"/>
         <source>Saved &amp;Steps (PVD/VTU)...</source>
         <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="24"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="25"/>
         <source>Export saved steps to</source>
         <translation>Gespeicherte Zeitschritte exportieren nach</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="28"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="29"/>
         <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
         <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="29"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="30"/>
         <source>&amp;History (CSV)...</source>
         <translation>&amp;Verlauf (CSV)...</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="31"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="32"/>
         <source>Export history</source>
         <translation>Verlauf exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="31"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="32"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="35"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="36"/>
         <source>Copy the run&apos;s history of loads and measured displacements</source>
         <translation>Den Verlauf der Lasten und gemessenen Verschiebungen der Berechnung kopieren</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="45"/>
         <location filename="../gui/results/ExportMenu.cpp" line="78"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="111"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="53"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="86"/>
         <source>There are no saved steps yet: run the model first.</source>
         <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/ExportMenu.cpp" line="62"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="95"/>
         <source>Copied %n file(s) to %1</source>
         <translation>
             <numerusform>%n Datei nach %1 kopiert</numerusform>
@@ -1285,7 +1326,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/results/ExportMenu.cpp" line="70"/>
+        <location filename="../gui/results/ExportMenu.cpp" line="103"/>
         <source>There is no history yet: run the model first.</source>
         <translation>Es gibt noch keinen Verlauf: zuerst das Modell berechnen.</translation>
     </message>
@@ -1361,82 +1402,82 @@
 <context>
     <name>mcdda::gui::HistoryPlot</name>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="29"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="31"/>
         <source>Measured quantity plotted: a point&apos;s displacement, velocity or acceleration (x or y), or the base&apos;s input motion</source>
         <translation>Dargestellte Messgröße: Verschiebung, Geschwindigkeit oder Beschleunigung eines Punktes (x oder y) oder die Eingangsbewegung der Basis</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="33"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="35"/>
         <source>Plotted against time or a load (load-settlement curve)</source>
         <translation>Aufgetragen über der Zeit oder einer Last (Last-Setzungs-Kurve)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="64"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="67"/>
         <source>Plot</source>
         <translation>Darstellen</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="66"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="69"/>
         <source>against</source>
         <translation>über</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="89"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="92"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="90"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="93"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="91"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="94"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="93"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="96"/>
         <source>base input %1 (%2)</source>
         <translation>Eingang der Basis %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="94"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="97"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="128"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="131"/>
         <source>strength reduction factor</source>
         <translation>Festigkeitsreduktionsfaktor</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="129"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="132"/>
         <source>largest displacement (m)</source>
         <translation>größte Verschiebung (m)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="131"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="134"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="135"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="138"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="177"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="180"/>
         <source>No history: run the model.</source>
         <translation>Kein Verlauf: Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="179"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="182"/>
         <source>The model has no measurement points.</source>
         <translation>Das Modell hat keine Messpunkte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="181"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="184"/>
         <source>%n trial(s) stood, %1 did not</source>
         <translation>
             <numerusform>%n Versuch stand, %1 nicht</numerusform>
@@ -1444,12 +1485,17 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="183"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="186"/>
         <source>%n step(s)</source>
         <translation>
             <numerusform>%n Zeitschritt</numerusform>
             <numerusform>%n Zeitschritte</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="210"/>
+        <source>No history yet: run the model (Run ▸ Run, F5). The displacements of its measurement points are plotted here as it runs.</source>
+        <translation>Noch kein Verlauf: das Modell berechnen (Berechnung ▸ Berechnung, F5). Die Verschiebungen seiner Messpunkte werden hier während der Berechnung dargestellt.</translation>
     </message>
 </context>
 <context>
@@ -1927,202 +1973,237 @@
 <context>
     <name>mcdda::gui::MainWindow</name>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="96"/>
+        <location filename="../gui/MainWindow.cpp" line="98"/>
         <source>mcdda</source>
         <translation>mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="124"/>
+        <location filename="../gui/MainWindow.cpp" line="126"/>
         <source>Query</source>
         <translation>Abfrage</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="135"/>
+        <location filename="../gui/MainWindow.cpp" line="139"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="139"/>
+        <location filename="../gui/MainWindow.cpp" line="143"/>
         <source>Earthquake</source>
         <translation>Erdbeben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="164"/>
+        <location filename="../gui/MainWindow.cpp" line="168"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="165"/>
+        <location filename="../gui/MainWindow.cpp" line="169"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="168"/>
+        <location filename="../gui/MainWindow.cpp" line="172"/>
         <source>Start an empty model</source>
         <translation>Ein leeres Modell beginnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="169"/>
+        <location filename="../gui/MainWindow.cpp" line="173"/>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="172"/>
+        <location filename="../gui/MainWindow.cpp" line="176"/>
         <source>Open a model file (*.json)</source>
         <translation>Eine Modelldatei öffnen (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="173"/>
+        <location filename="../gui/MainWindow.cpp" line="177"/>
         <source>&amp;Reload</source>
         <translation>Neu &amp;laden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="176"/>
+        <location filename="../gui/MainWindow.cpp" line="180"/>
         <source>Read the model file again, e.g. after editing it</source>
         <translation>Die Modelldatei erneut lesen, z. B. nachdem sie bearbeitet wurde</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="184"/>
+        <location filename="../gui/MainWindow.cpp" line="188"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="188"/>
+        <location filename="../gui/MainWindow.cpp" line="192"/>
         <source>Write the model to its file</source>
         <translation>Das Modell in seine Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="189"/>
+        <location filename="../gui/MainWindow.cpp" line="193"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="192"/>
+        <location filename="../gui/MainWindow.cpp" line="196"/>
         <source>Write the model to a new file</source>
         <translation>Das Modell in eine neue Datei schreiben</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="200"/>
+        <location filename="../gui/MainWindow.cpp" line="211"/>
         <source>&amp;Import DXF...</source>
         <translation>DXF &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="202"/>
+        <location filename="../gui/MainWindow.cpp" line="213"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="204"/>
+        <location filename="../gui/MainWindow.cpp" line="215"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="117"/>
+        <location filename="../gui/MainWindow.cpp" line="119"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="270"/>
+        <location filename="../gui/MainWindow.cpp" line="326"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="78"/>
+        <location filename="../gui/MainWindow.cpp" line="80"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="251"/>
+        <location filename="../gui/MainWindow.cpp" line="306"/>
         <source>%1[*] - mcdda</source>
         <translation>%1[*] - mcdda</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="258"/>
+        <location filename="../gui/MainWindow.cpp" line="313"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="259"/>
+        <location filename="../gui/MainWindow.cpp" line="314"/>
         <source>The model has been modified. Save the changes?</source>
         <translation>Das Modell wurde geändert. Sollen die Änderungen gespeichert werden?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="270"/>
+        <location filename="../gui/MainWindow.cpp" line="326"/>
         <source>rock</source>
         <translation>Fels</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="272"/>
+        <location filename="../gui/MainWindow.cpp" line="328"/>
         <source>New model: draw regions with Edit ▸ Draw Region.</source>
         <translation>Neues Modell: Bereiche über Bearbeiten ▸ Bereich zeichnen anlegen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="292"/>
+        <location filename="../gui/MainWindow.cpp" line="349"/>
         <source>Save model</source>
         <translation>Modell speichern</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="292"/>
+        <location filename="../gui/MainWindow.cpp" line="349"/>
         <source>Model files (*.json)</source>
         <translation>Modelldateien (*.json)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="308"/>
+        <location filename="../gui/MainWindow.cpp" line="365"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="82"/>
+        <location filename="../gui/MainWindow.cpp" line="84"/>
         <source>Pre-processing...</source>
         <translation>Vorverarbeitung...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="112"/>
+        <location filename="../gui/MainWindow.cpp" line="114"/>
         <source>Messages</source>
         <translation>Meldungen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="120"/>
+        <location filename="../gui/MainWindow.cpp" line="122"/>
         <source>Steps</source>
         <translation>Zeitschritte</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="132"/>
+        <location filename="../gui/MainWindow.cpp" line="136"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="341"/>
+        <location filename="../gui/MainWindow.cpp" line="398"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="369"/>
+        <location filename="../gui/MainWindow.cpp" line="426"/>
         <source>Open model</source>
         <translation>Modell öffnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="370"/>
+        <location filename="../gui/MainWindow.cpp" line="427"/>
         <source>Model files (*.json);;All files (*)</source>
         <translation>Modelldateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="419"/>
+        <location filename="../gui/MainWindow.cpp" line="480"/>
         <source>The run was stopped: another model was opened.</source>
         <translation>Die Berechnung wurde angehalten: ein anderes Modell wurde geöffnet.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="420"/>
+        <location filename="../gui/MainWindow.cpp" line="481"/>
         <source>The run was stopped: the model was edited.</source>
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="463"/>
+        <location filename="../gui/MainWindow.cpp" line="524"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="573"/>
+        <source>Run an unsaved model</source>
+        <translation>Nicht gespeichertes Modell berechnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="574"/>
+        <source>The model has not been saved yet. Where should its results go?</source>
+        <translation>Das Modell wurde noch nicht gespeichert. Wohin sollen seine Ergebnisse?</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="575"/>
+        <source>Save the model first to keep its results in a folder beside it (&lt;model&gt;-results), or run it now with the results in a new temporary folder.</source>
+        <translation>Das Modell zuerst speichern, um seine Ergebnisse in einem Ordner daneben zu behalten (&lt;Modell&gt;-results), oder es jetzt berechnen, mit den Ergebnissen in einem neuen temporären Ordner.</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="577"/>
+        <source>Save and Run...</source>
+        <translation>Speichern und berechnen...</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="578"/>
+        <source>Run in a Temporary Folder</source>
+        <translation>In temporärem Ordner berechnen</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="586"/>
+        <source>No folder for the results: %1</source>
+        <translation>Kein Ordner für die Ergebnisse: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/MainWindow.cpp" line="592"/>
+        <source>The model is not saved: its results go to the new folder %1 (File ▸ Save As keeps the model; its next run writes beside it).</source>
+        <translation>Das Modell ist nicht gespeichert: seine Ergebnisse kommen in den neuen Ordner %1 (Datei ▸ Speichern unter behält das Modell; seine nächste Berechnung schreibt daneben).</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="524"/>
+        <location filename="../gui/MainWindow.cpp" line="624"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
             <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
@@ -2130,67 +2211,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="560"/>
+        <location filename="../gui/MainWindow.cpp" line="660"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="560"/>
+        <location filename="../gui/MainWindow.cpp" line="660"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="507"/>
+        <location filename="../gui/MainWindow.cpp" line="607"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="587"/>
+        <location filename="../gui/MainWindow.cpp" line="688"/>
         <source>Strength reduction completed: %1.</source>
         <translation>Festigkeitsreduktion abgeschlossen: %1.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="595"/>
+        <location filename="../gui/MainWindow.cpp" line="696"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="614"/>
+        <location filename="../gui/MainWindow.cpp" line="715"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="614"/>
+        <location filename="../gui/MainWindow.cpp" line="715"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="615"/>
+        <location filename="../gui/MainWindow.cpp" line="716"/>
         <source>The results up to the last accepted step are kept in %1.</source>
         <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="144"/>
+        <location filename="../gui/MainWindow.cpp" line="148"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="234"/>
+        <location filename="../gui/MainWindow.cpp" line="289"/>
         <source>Selected %1: drag to move, Delete removes</source>
         <translation>%1 gewählt: ziehen verschiebt, Entf löscht</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="386"/>
+        <location filename="../gui/MainWindow.cpp" line="443"/>
         <source>Reading and meshing %1...</source>
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="447"/>
+        <location filename="../gui/MainWindow.cpp" line="508"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="448"/>
+        <location filename="../gui/MainWindow.cpp" line="509"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -2334,212 +2415,212 @@
 <context>
     <name>mcdda::gui::ModelDocument</name>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="52"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="53"/>
         <source>The model has no file yet; choose one with Save As.</source>
         <translation>Das Modell hat noch keine Datei; wählen Sie eine mit „Speichern unter“.</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="62"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="76"/>
         <source>Cannot save %1: %2</source>
         <translation>%1 kann nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="109"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="129"/>
         <source>Add fixed point &quot;%1&quot;</source>
         <translation>Festpunkt „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="116"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="136"/>
         <source>Add point load &quot;%1&quot;</source>
         <translation>Punktlast „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="123"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="143"/>
         <source>Add edge pressure &quot;%1&quot;</source>
         <translation>Kantendruck „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="130"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="150"/>
         <source>Add measurement point &quot;%1&quot;</source>
         <translation>Messpunkt „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="151"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="171"/>
         <source>Add joint set &quot;%1&quot;</source>
         <translation>Kluftschar „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="158"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="178"/>
         <source>Add material &quot;%1&quot;</source>
         <translation>Material „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="166"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="186"/>
         <source>Add joint material &quot;%1&quot;</source>
         <translation>Kluftmaterial „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="175"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="195"/>
         <source>Assign a material to %1</source>
         <translation>%1 ein Material zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="183"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="203"/>
         <source>Assign a joint material to %1</source>
         <translation>%1 ein Kluftmaterial zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="190"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="210"/>
         <source>Set the water table</source>
         <translation>Grundwasserspiegel festlegen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="190"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="210"/>
         <source>Make the ground dry</source>
         <translation>Boden trockenlegen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="196"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="216"/>
         <source>Stage &quot;%1&quot;: water as in the stage before</source>
         <translation>Bauphase „%1“: Grundwasser wie in der Bauphase davor</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="197"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="217"/>
         <source>Stage &quot;%1&quot;: set the water table</source>
         <translation>Bauphase „%1“: Grundwasserspiegel festlegen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="198"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="218"/>
         <source>Stage &quot;%1&quot;: make the ground dry</source>
         <translation>Bauphase „%1“: Boden trockenlegen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="207"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="227"/>
         <source>Add ground motion &quot;%1&quot;</source>
         <translation>Bodenbewegung „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="217"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="237"/>
         <source>Change ground motion &quot;%1&quot;</source>
         <translation>Bodenbewegung „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="231"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="251"/>
         <source>Remove ground motion &quot;%1&quot;</source>
         <translation>Bodenbewegung „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="235"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="255"/>
         <source>Remove the base motion</source>
         <translation>Bewegung der Basis entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="236"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="256"/>
         <source>Shake a rigid base</source>
         <translation>Starre Basis anregen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="237"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="257"/>
         <source>Shake a compliant base</source>
         <translation>Nachgiebige Basis anregen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="244"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="264"/>
         <source>Add absorbing boundary &quot;%1&quot;</source>
         <translation>Absorbierenden Rand „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="252"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="272"/>
         <source>Set the seismic coefficient</source>
         <translation>Erdbebenbeiwert setzen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="259"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="279"/>
         <source>Stage &quot;%1&quot;: set the seismic coefficient</source>
         <translation>Bauphase „%1“: Erdbebenbeiwert setzen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="271"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="291"/>
         <source>Move %1</source>
         <translation>%1 verschieben</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="279"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="299"/>
         <source>Delete %1</source>
         <translation>%1 löschen</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="292"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="312"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="293"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="313"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="294"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="314"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="295"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="315"/>
         <source>roller %1</source>
         <translation>Rollenlager %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="296"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="316"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="297"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="317"/>
         <source>pressure %1</source>
         <translation>Kantendruck %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="298"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="318"/>
         <source>point %1</source>
         <translation>Punkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="300"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="320"/>
         <source>absorbing boundary %1</source>
         <translation>absorbierender Rand %1</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="302"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="322"/>
         <source>the compliant base</source>
         <translation>die nachgiebige Basis</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="304"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="324"/>
         <source>the water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="305"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="325"/>
         <source>the water table of stage &quot;%1&quot;</source>
         <translation>Grundwasserspiegel der Bauphase „%1“</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="310"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="330"/>
         <source>hole %1 of %2</source>
         <translation>Loch %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="311"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="331"/>
         <source>vertex %1 of %2</source>
         <translation>Eckpunkt %1 von %2</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="324"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="344"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../gui/document/ModelDocument.cpp" line="326"/>
+        <location filename="../gui/document/ModelDocument.cpp" line="346"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -3172,52 +3253,62 @@
 <context>
     <name>mcdda::gui::QueryPlot</name>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="22"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="96"/>
         <source>Draw a line with Edit ▸ Query Line to plot the field shown along it.</source>
         <translation>Mit Bearbeiten ▸ Abfragelinie eine Linie zeichnen, um das gezeigte Feld entlang der Linie darzustellen.</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="24"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="31"/>
         <source>Export CSV...</source>
         <translation>CSV exportieren...</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="26"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="33"/>
         <source>Save distance, x, y and value of the points on the mesh as CSV</source>
         <translation>Abstand, x, y und Wert der Punkte auf dem Netz als CSV speichern</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="29"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="36"/>
         <source>Export query line</source>
         <translation>Abfragelinie exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="29"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="37"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="31"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="39"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="37"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="45"/>
         <source>distance along the line (m)</source>
         <translation>Abstand entlang der Linie (m)</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="97"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="150"/>
+        <source>Query line from (%1, %2) to (%3, %4) m</source>
+        <translation>Abfragelinie von (%1, %2) bis (%3, %4) m</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="155"/>
         <source>The picture shows no result: run the model or choose a saved step.</source>
         <translation>Das Bild zeigt kein Ergebnis: das Modell berechnen oder einen gespeicherten Schritt wählen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/QueryPlot.cpp" line="98"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="157"/>
         <source>%1 from (%2, %3) to (%4, %5) m: %n point(s) on the mesh</source>
         <translation>
             <numerusform>%1 von (%2, %3) bis (%4, %5) m: %n Punkt auf dem Netz</numerusform>
             <numerusform>%1 von (%2, %3) bis (%4, %5) m: %n Punkte auf dem Netz</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="166"/>
+        <source>The line does not cross the mesh.</source>
+        <translation>Die Linie kreuzt das Netz nicht.</translation>
     </message>
 </context>
 <context>
@@ -4047,32 +4138,32 @@
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="304"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="311"/>
         <source>as the stage before (%1)</source>
         <translation>wie in der Bauphase davor (%1)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="355"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="362"/>
         <source>Edit stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="362"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="369"/>
         <source>stage %1</source>
         <translation>Bauphase %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="366"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="373"/>
         <source>Add stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="377"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="384"/>
         <source>Remove stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="386"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="393"/>
         <source>Move stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ verschieben</translation>
     </message>
@@ -4108,29 +4199,34 @@
 <context>
     <name>mcdda::gui::UnbalancedPlot</name>
     <message>
-        <location filename="../gui/results/UnbalancedPlot.cpp" line="29"/>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="31"/>
         <source>unbalanced-force ratio</source>
         <translation>Ungleichgewichtsverhältnis</translation>
     </message>
     <message>
-        <location filename="../gui/results/UnbalancedPlot.cpp" line="32"/>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="34"/>
         <source>equilibrium limit</source>
         <translation>Gleichgewichtsgrenze</translation>
     </message>
     <message>
-        <location filename="../gui/results/UnbalancedPlot.cpp" line="40"/>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="42"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/results/UnbalancedPlot.cpp" line="43"/>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="45"/>
         <source>ratio</source>
         <translation>Verhältnis</translation>
     </message>
     <message>
-        <location filename="../gui/results/UnbalancedPlot.cpp" line="55"/>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="57"/>
         <source>Largest out-of-balance nodal force over the largest applied force, per step; a run ending above the dashed limit is not in equilibrium</source>
         <translation>Größte Ungleichgewichtskraft an einem Knoten durch die größte aufgebrachte Kraft, je Schritt; eine Berechnung, die über der gestrichelten Grenze endet, ist nicht im Gleichgewicht</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/UnbalancedPlot.cpp" line="89"/>
+        <source>The unbalanced-force ratio of each step is plotted here during a run.</source>
+        <translation>Das Ungleichgewichtsverhältnis jedes Schritts wird hier während einer Berechnung dargestellt.</translation>
     </message>
 </context>
 <context>
@@ -4295,175 +4391,178 @@
 <context>
     <name>mcdda::view</name>
     <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="53"/>
         <location filename="../gui/view/ResultProbe.cpp" line="37"/>
-        <location filename="../gui/view/ResultScene.cpp" line="54"/>
+        <location filename="../gui/view/ResultScene.cpp" line="62"/>
         <source>elastic</source>
         <translation>elastisch</translation>
     </message>
     <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="54"/>
         <location filename="../gui/view/ResultProbe.cpp" line="38"/>
-        <location filename="../gui/view/ResultScene.cpp" line="54"/>
+        <location filename="../gui/view/ResultScene.cpp" line="62"/>
         <source>yielded before</source>
         <translation>früher plastifiziert</translation>
     </message>
     <message>
+        <location filename="../gui/results/QueryPlot.cpp" line="55"/>
         <location filename="../gui/view/ResultProbe.cpp" line="39"/>
-        <location filename="../gui/view/ResultScene.cpp" line="54"/>
+        <location filename="../gui/view/ResultScene.cpp" line="62"/>
         <source>yielding now</source>
         <translation>plastifiziert jetzt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="79"/>
+        <location filename="../gui/view/ResultScene.cpp" line="87"/>
         <source>plastic state</source>
         <translation>plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="80"/>
+        <location filename="../gui/view/ResultScene.cpp" line="88"/>
         <source>plastic strain</source>
         <translation>plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="101"/>
+        <location filename="../gui/view/ResultScene.cpp" line="109"/>
         <source>displacement increment</source>
         <translation>Verschiebungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="103"/>
+        <location filename="../gui/view/ResultScene.cpp" line="111"/>
         <source>plastic strain increment</source>
         <translation>plastisches Dehnungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="81"/>
+        <location filename="../gui/view/ResultScene.cpp" line="89"/>
         <source>displacement</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="82"/>
+        <location filename="../gui/view/ResultScene.cpp" line="90"/>
         <source>x displacement</source>
         <translation>Verschiebung x</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="83"/>
+        <location filename="../gui/view/ResultScene.cpp" line="91"/>
         <source>y displacement</source>
         <translation>Verschiebung y</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="84"/>
+        <location filename="../gui/view/ResultScene.cpp" line="92"/>
         <source>stress xx</source>
         <translation>Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="85"/>
+        <location filename="../gui/view/ResultScene.cpp" line="93"/>
         <source>stress yy</source>
         <translation>Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="86"/>
+        <location filename="../gui/view/ResultScene.cpp" line="94"/>
         <source>shear stress xy</source>
         <translation>Schubspannung xy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="87"/>
+        <location filename="../gui/view/ResultScene.cpp" line="95"/>
         <source>principal stress 1</source>
         <translation>Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="88"/>
+        <location filename="../gui/view/ResultScene.cpp" line="96"/>
         <source>principal stress 3</source>
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="952"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1111"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="953"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1112"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="820"/>
+        <location filename="../gui/view/ResultScene.cpp" line="975"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="91"/>
+        <location filename="../gui/view/ResultScene.cpp" line="99"/>
         <source>pore pressure</source>
         <translation>Porenwasserdruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="92"/>
+        <location filename="../gui/view/ResultScene.cpp" line="100"/>
         <source>effective stress xx</source>
         <translation>effektive Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="93"/>
+        <location filename="../gui/view/ResultScene.cpp" line="101"/>
         <source>effective stress yy</source>
         <translation>effektive Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="95"/>
+        <location filename="../gui/view/ResultScene.cpp" line="103"/>
         <source>effective principal stress 1</source>
         <translation>effektive Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="97"/>
+        <location filename="../gui/view/ResultScene.cpp" line="105"/>
         <source>effective principal stress 3</source>
         <translation>effektive Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="822"/>
+        <location filename="../gui/view/ResultScene.cpp" line="977"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="825"/>
+        <location filename="../gui/view/ResultScene.cpp" line="980"/>
         <source>water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="830"/>
+        <location filename="../gui/view/ResultScene.cpp" line="987"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="832"/>
+        <location filename="../gui/view/ResultScene.cpp" line="990"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="836"/>
+        <location filename="../gui/view/ResultScene.cpp" line="994"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="841"/>
+        <location filename="../gui/view/ResultScene.cpp" line="999"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="864"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1023"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="908"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1067"/>
         <source>strengths divided by</source>
         <translation>Festigkeiten geteilt durch</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="912"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1071"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="916"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1075"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="923"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1082"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include "results/ResultExport.hpp"
 
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
@@ -14,7 +15,7 @@ ExportMenu::ExportMenu(std::function<QImage()> grab, std::function<QString()> pv
 {
     QAction* png = addAction(tr("&Picture (PNG)..."), this, [this] {
         const QString path =
-            QFileDialog::getSaveFileName(parentWidget(), tr("Export picture"), start_folder_, tr("PNG pictures (*.png)"));
+            QFileDialog::getSaveFileName(parentWidget(), tr("Export picture"), suggestedPicturePath(), tr("PNG pictures (*.png)"));
         if (!path.isEmpty())
             exportPng(path.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive) ? path : path + QStringLiteral(".png"));
     });
@@ -28,11 +29,43 @@ ExportMenu::ExportMenu(std::function<QImage()> grab, std::function<QString()> pv
     steps->setStatusTip(tr("Copy the run's .pvd collection and its .vtu steps to a folder"));
     QAction* history_action = addAction(tr("&History (CSV)..."), this, [this] {
         const QString path =
-            QFileDialog::getSaveFileName(parentWidget(), tr("Export history"), start_folder_, tr("CSV files (*.csv)"));
+            QFileDialog::getSaveFileName(parentWidget(), tr("Export history"), suggestedHistoryPath(), tr("CSV files (*.csv)"));
         if (!path.isEmpty()) exportHistory(path);
     });
     history_action->setObjectName(QStringLiteral("exportHistoryAction"));
     history_action->setStatusTip(tr("Copy the run's history of loads and measured displacements"));
+}
+
+void ExportMenu::setSuggestion(std::function<QString()> stem, std::function<QString()> shown,
+                               std::function<QString()> folder)
+{
+    stem_ = std::move(stem);
+    shown_ = std::move(shown);
+    folder_ = std::move(folder);
+}
+
+namespace {
+
+QString in_folder(const QString& folder, const QString& name)
+{
+    return QDir(folder.isEmpty() ? QDir::homePath() : folder).absoluteFilePath(name);
+}
+
+}  // namespace
+
+QString ExportMenu::suggestedPicturePath() const
+{
+    QString name = stem_ ? stem_() : QString();
+    if (name.isEmpty()) name = QStringLiteral("model");
+    if (const QString shown = shown_ ? shown_() : QString(); !shown.isEmpty()) name += QLatin1Char('-') + shown;
+    return in_folder(folder_ ? folder_() : start_folder_, name + QStringLiteral(".png"));
+}
+
+QString ExportMenu::suggestedHistoryPath() const
+{
+    QString name = stem_ ? stem_() : QString();
+    if (name.isEmpty()) name = QStringLiteral("model");
+    return in_folder(folder_ ? folder_() : start_folder_, name + QStringLiteral("-history.csv"));
 }
 
 bool ExportMenu::exportPng(const QString& path)

@@ -24,6 +24,12 @@ public:
 
     /// The folder the file dialogs start in.
     void setStartFolder(const QString& folder) { start_folder_ = folder; }
+    /// The model's name ("tunnel"), what the picture shows ("stress_1-step10"; empty for the
+    /// model) and the folder to suggest; asked each time a dialog opens.
+    void setSuggestion(std::function<QString()> stem, std::function<QString()> shown, std::function<QString()> folder);
+    /// The paths the dialogs start with: a name from the model and the field, never blank.
+    QString suggestedPicturePath() const;
+    QString suggestedHistoryPath() const;
 
     bool exportPng(const QString& path);
     bool exportSteps(const QString& folder);
@@ -40,6 +46,9 @@ private:
     std::function<QString()> pvd_;
     std::function<QString()> history_;
     QString start_folder_;
+    std::function<QString()> stem_;
+    std::function<QString()> shown_;
+    std::function<QString()> folder_;
 };
 
 }  // namespace mcdda::gui

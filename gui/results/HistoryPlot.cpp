@@ -1,5 +1,7 @@
 #include "results/HistoryPlot.hpp"
 
+#include "results/ChartWithMessage.hpp"
+#include "results/PlotAxes.hpp"
 #include "results/UnbalancedPlot.hpp"
 
 #include <QChart>
@@ -56,8 +58,9 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
         s->attachAxis(x_axis_);
         s->attachAxis(y_axis_);
     }
-    view_ = new QChartView(chart, this);
-    view_->setRenderHint(QPainter::Antialiasing);
+    area_ = new ChartWithMessage(chart, this);
+    area_->setObjectName(QStringLiteral("historyChartArea"));
+    view_ = area_->chartView();
     view_->setMinimumSize(240, 160);
 
     auto* controls = new QHBoxLayout;
@@ -69,7 +72,7 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addLayout(controls);
     layout->addWidget(note_);
-    layout->addWidget(view_, 1);
+    layout->addWidget(area_, 1);
     unbalanced_ = new UnbalancedPlot(this);
     layout->addWidget(unbalanced_, 1);
 
@@ -199,6 +202,20 @@ void HistoryPlot::redraw()
     }
     x_axis_->setTitleText(x_box_->currentText());
     y_axis_->setTitleText(y_box_->currentText());
+    x_axis_->setLabelFormat(axis_label_format());
+    y_axis_->setLabelFormat(axis_label_format());
+    // Bare axes with ticks "0 0 0 0 1" said nothing before a run: words instead.
+    if (points.isEmpty() && failed.isEmpty())
+        area_->showMessage(table_.columns.isEmpty()
+                               ? tr("No history yet: run the model (Run ▸ Run, F5). The displacements of its "
+                                    "measurement points are plotted here as it runs.")
+                               : note_->text());
+    else
+        area_->showChart();
 }
+
+bool HistoryPlot::chartShown() const { return area_->chartShown(); }
+
+QString HistoryPlot::emptyMessage() const { return area_->message(); }
 
 }  // namespace mcdda::gui

@@ -14,7 +14,7 @@
 #include <QWidget>
 
 class QComboBox;
-namespace mcdda::gui { class UnbalancedPlot; }
+namespace mcdda::gui { class UnbalancedPlot; class ChartWithMessage; }
 class QLabel;
 
 QT_BEGIN_NAMESPACE
@@ -53,6 +53,9 @@ public:
     /// How a history column is offered ("crest:vx (m/s)", "base input ax (m/s²)"); empty for a
     /// column that is not a point's or the base's displacement, velocity or acceleration.
     static QString quantityLabel(const QString& column);
+    /// Whether the curve is drawn; before a run (nothing to plot) a message stands instead.
+    bool chartShown() const;
+    QString emptyMessage() const;
     /// The unbalanced-force ratio of the same history, under the plot.
     UnbalancedPlot* unbalancedPlot() const { return unbalanced_; }
 
@@ -63,6 +66,7 @@ private:
     QComboBox* x_box_ = nullptr;
     QLabel* note_ = nullptr;
     UnbalancedPlot* unbalanced_ = nullptr;
+    ChartWithMessage* area_ = nullptr;
     QChartView* view_ = nullptr;
     QLineSeries* series_ = nullptr;
     QScatterSeries* failed_ = nullptr;

@@ -1,5 +1,7 @@
 #include "results/UnbalancedPlot.hpp"
 
+#include "results/ChartWithMessage.hpp"
+
 #include <QChart>
 #include <QChartView>
 #include <QLineSeries>
@@ -48,15 +50,15 @@ UnbalancedPlot::UnbalancedPlot(QWidget* parent) : QWidget(parent)
         s->attachAxis(x_axis_);
         s->attachAxis(y_axis_);
     }
-    view_ = new QChartView(chart, this);
+    area_ = new ChartWithMessage(chart, this);
+    view_ = area_->chartView();
     view_->setObjectName(QStringLiteral("unbalancedChart"));
-    view_->setRenderHint(QPainter::Antialiasing);
     view_->setMinimumSize(240, 140);
     view_->setToolTip(tr("Largest out-of-balance nodal force over the largest applied force, per step; a run "
                          "ending above the dashed limit is not in equilibrium"));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(view_);
+    layout->addWidget(area_);
     show(HistoryTable{});
 }
 
@@ -83,10 +85,20 @@ void UnbalancedPlot::show(const HistoryTable& table)
     if (si >= 0 && ri >= 0)
         for (const auto& row : table.rows) points.append(QPointF(row[si], std::max(row[ri], bottom)));
     series_->replace(points);
+    if (points.isEmpty())
+        area_->showMessage(tr("The unbalanced-force ratio of each step is plotted here during a run."));
+    else
+        area_->showChart();
     x_axis_->setRange(0.0, last_step_);
+    // Whole steps: "%d" on ticks a quarter step apart read "0 0 0 0 1".
+    x_axis_->setTickType(QValueAxis::TicksDynamic);
+    x_axis_->setTickAnchor(0.0);
+    x_axis_->setTickInterval(std::max(1.0, std::ceil(last_step_ / 5.0)));
     y_axis_->setRange(bottom, std::pow(10.0, std::ceil(std::log10(hi))));
     redrawLimit();
 }
+
+bool UnbalancedPlot::chartShown() const { return area_->chartShown(); }
 
 double UnbalancedPlot::axisFloor() const { return y_axis_->min(); }
 

@@ -17,6 +17,8 @@ QT_END_NAMESPACE
 
 namespace mcdda::gui {
 
+class ChartWithMessage;
+
 class UnbalancedPlot : public QWidget {
     Q_OBJECT
 
@@ -33,6 +35,8 @@ public:
     /// The bottom of the log axis, where ratios of 0 are drawn.
     double axisFloor() const;
     QChartView* chartView() const { return view_; }
+    /// Whether the ratio is drawn; before a run a message stands instead.
+    bool chartShown() const;
     /// The colours of the ratio and of the limit line.
     static QColor seriesColor();
     static QColor limitColor();
@@ -40,6 +44,7 @@ public:
 private:
     void redrawLimit();
 
+    ChartWithMessage* area_ = nullptr;
     QChartView* view_ = nullptr;
     QLineSeries* series_ = nullptr;
     QLineSeries* limit_ = nullptr;

@@ -35,6 +35,8 @@ public:
     /// The folder chosen for the results of the next runs; empty = <model>-results beside the
     /// model file.
     void setOutputFolder(const QString& folder) { output_folder_ = folder; }
+    /// The folder chosen (empty: none, the default applies).
+    QString outputFolder() const { return output_folder_; }
     /// The folder the current run writes to or, between runs, the next run will.
     QString runFolder() const;
     /// The name of the .pvd and .vtu files (the model file's base name, or "model").

@@ -117,7 +117,7 @@ void DrawTool::updatePreview()
 {
     std::vector<Point2> line = points_;
     if (has_cursor_ && (line.empty() || !same(line.back(), cursor_))) line.push_back(cursor_);
-    view_->setPreview(line, shape_ == Shape::Polygon);
+    view_->setPreview(line, shape_ == Shape::Polygon, emphasised_);
 }
 
 }  // namespace mcdda::gui

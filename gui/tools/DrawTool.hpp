@@ -31,6 +31,8 @@ public:
     Shape shape() const { return shape_; }
     void setSnapOptions(const SnapOptions& options) { snap_ = options; }
     SnapOptions snapOptions() const { return snap_; }
+    /// Draws the rubber band as a query line (dark, white halo, end markers) rather than blue.
+    void setEmphasisedPreview(bool on) { emphasised_ = on; }
     /// Pixels within which an existing vertex attracts the cursor.
     void setVertexTolerancePixels(double pixels) { tolerance_px_ = pixels; }
     /// The vertices placed so far.
@@ -70,6 +72,7 @@ private:
     std::vector<Point2> points_;
     Point2 cursor_;
     bool has_cursor_ = false;
+    bool emphasised_ = false;
 };
 
 }  // namespace mcdda::gui

@@ -25,7 +25,9 @@
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QWidgetAction>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mcdda::gui {
@@ -137,6 +139,7 @@ EditingTools::EditingTools(QMainWindow* window, ModelView* view, ModelDocument* 
     query_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
         emit queryLineDrawn(points.front(), points.back());
     });
+    query_tool_->setEmphasisedPreview(true);  // a blue band vanished on the rainbow's blue end
     water_tool_ = makeTool(int(DrawTool::Shape::Polyline),
                            [this](const std::vector<Point2>& points) { applyWaterTable(points); });
     absorbing_tool_ = makeTool(int(DrawTool::Shape::Segment), [this](const std::vector<Point2>& points) {
@@ -195,8 +198,13 @@ void EditingTools::createActions(QMenu* edit)
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
+    // Each tool named under its icon, on a row of its own: icons alone were mistaken for one
+    // another (Fixed Point for Roller). Along the top rather than down the side, where it took
+    // the picture's width.
     QToolBar* bar = window_->addToolBar(tr("Tools"));
     bar->setObjectName(QStringLiteral("tools"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
+    bar->setIconSize(QSize(20, 20));
     auto* group = new QActionGroup(this);
     auto tool = [&](const QString& text, const QString& name, const QString& icon, const QString& tip,
                     void (EditingTools::*slot)()) {
@@ -205,6 +213,7 @@ void EditingTools::createActions(QMenu* edit)
         action->setObjectName(name);
         action->setCheckable(true);
         action->setStatusTip(tip);
+        action->setToolTip(QStringLiteral("<b>%1</b><br>%2").arg(QString(text).remove(QLatin1Char('&')), tip));
         group->addAction(action);
         bar->addAction(action);
         return action;
@@ -265,6 +274,13 @@ void EditingTools::createActions(QMenu* edit)
     QAction* joint_set = edit->addAction(tr("Add Joint Se&t..."), this, &EditingTools::addJointSetDialog);
     joint_set->setObjectName(QStringLiteral("addJointSetAction"));
     joint_set->setStatusTip(tr("Add a family of parallel joints"));
+    // Short names beside the icons, so the palette stays narrow (the menu keeps the long ones).
+    region->setIconText(tr("Region"));
+    joint->setIconText(tr("Joint"));
+    pressure->setIconText(tr("Pressure"));
+    point->setIconText(tr("Measurement"));
+    water->setIconText(tr("Water Table"));
+    absorbing->setIconText(tr("Absorbing"));
     tool_actions_ = {{region_tool_, region}, {joint_tool_, joint}, {fixed_tool_, fixed}, {roller_tool_, roller},
                      {load_tool_, load},     {pressure_tool_, pressure}, {point_tool_, point},
                      {query_tool_, query},   {bolt_tool_, bolt},         {water_tool_, water},
@@ -275,13 +291,26 @@ void EditingTools::createActions(QMenu* edit)
 
 void EditingTools::createToolOptions()
 {
+    window_->addToolBarBreak();  // under the tools, whatever the width of the active tool's options
     QToolBar* bar = window_->addToolBar(tr("Tool Options"));
     bar->setObjectName(QStringLiteral("toolOptions"));
+    // Each widget belongs to one tool and shows only while that tool is active (null: every
+    // drawing tool); the bar always starts with the active tool's name.
+    DrawTool* owner = nullptr;
+    auto add = [&](QWidget* widget) { option_actions_.push_back({owner, bar->addWidget(widget)}); };
     auto label = [&](const QString& text) {
         auto* l = new QLabel(text, bar);
         l->setContentsMargins(6, 0, 2, 0);
-        bar->addWidget(l);
+        add(l);
     };
+    tool_name_ = new QLabel(bar);
+    tool_name_->setObjectName(QStringLiteral("activeToolName"));
+    tool_name_->setContentsMargins(6, 0, 6, 0);
+    QFont bold = tool_name_->font();
+    bold.setBold(true);
+    tool_name_->setFont(bold);
+    bar->addWidget(tool_name_);
+    owner = roller_tool_;
     label(tr("Roller fixes"));
     roller_fix_box_ = new QComboBox(bar);
     roller_fix_box_->setObjectName(QStringLiteral("rollerFixBox"));
@@ -289,8 +318,7 @@ void EditingTools::createToolOptions()
     roller_fix_box_->addItem(tr("y"), QStringLiteral("y"));
     roller_fix_box_->addItem(tr("x"), QStringLiteral("x"));
     roller_fix_box_->addItem(tr("x and y"), QStringLiteral("xy"));
-    bar->addWidget(roller_fix_box_);
-    bar->addSeparator();
+    add(roller_fix_box_);
     auto spin = [&](const QString& name, const QString& unit, double value, const QString& tip) {
         auto* box = new QDoubleSpinBox(bar);
         box->setObjectName(name);
@@ -299,28 +327,29 @@ void EditingTools::createToolOptions()
         box->setValue(value);
         box->setSuffix(QLatin1Char(' ') + unit);
         box->setToolTip(tip);
-        bar->addWidget(box);
+        add(box);
         return box;
     };
+    owner = load_tool_;
     label(tr("Load Fx"));
     load_fx_ = spin(QStringLiteral("loadFxBox"), tr("kN/m"), 0.0, tr("Horizontal force of a new point load"));
     label(tr("Fy"));
     load_fy_ = spin(QStringLiteral("loadFyBox"), tr("kN/m"), -1.0, tr("Vertical force of a new point load"));
-    bar->addSeparator();
+    owner = pressure_tool_;
     label(tr("Pressure"));
     pressure_box_ = spin(QStringLiteral("pressureBox"), tr("kPa"), 100.0,
                          tr("Pressure of a new edge load (positive pushes into the material)"));
-    bar->addSeparator();
+    owner = water_tool_;
     label(tr("γw"));
     water_weight_box_ = spin(QStringLiteral("waterUnitWeightBox"), tr("kN/m³"), 9.81,
                              tr("Unit weight of water of a new water table (fresh water 9.81 kN/m³)"));
     water_weight_box_->setRange(0.01, 100.0);
-    bar->addSeparator();
+    owner = region_tool_;
     hole_box_ = new QCheckBox(tr("Hole"), bar);
     hole_box_->setObjectName(QStringLiteral("holeBox"));
     hole_box_->setToolTip(tr("Draw Region cuts an opening into the region around it (or hold Shift at the first click)"));
-    bar->addWidget(hole_box_);
-    bar->addSeparator();
+    add(hole_box_);
+    owner = nullptr;
     label(tr("Point"));
     coordinate_edit_ = new QLineEdit(bar);
     coordinate_edit_->setObjectName(QStringLiteral("coordinateEdit"));
@@ -333,8 +362,36 @@ void EditingTools::createToolOptions()
         // Ctrl+Z there undoes the point (eventFilter).
         if (enterCoordinates(coordinate_edit_->text())) coordinate_edit_->setText(QString());
     });
-    bar->addWidget(coordinate_edit_);
+    add(coordinate_edit_);
     coordinate_edit_->installEventFilter(this);
+    // As tall as the tallest option, so the bar (and the picture under it) keeps its height
+    // whichever tool's options show.
+    int tallest = 0;
+    for (const auto& [owner, action] : option_actions_)
+        if (auto* widget_action = qobject_cast<QWidgetAction*>(action))
+            tallest = std::max(tallest, widget_action->defaultWidget()->sizeHint().height());
+    tool_name_->setMinimumHeight(tallest);
+    showToolOptions(nullptr);
+}
+
+void EditingTools::showToolOptions(DrawTool* tool)
+{
+    for (const auto& [owner, action] : option_actions_) action->setVisible(tool && (owner == nullptr || owner == tool));
+    QString name = tr("Select");
+    for (const auto& [t, a] : tool_actions_)
+        if (t == tool) name = a->iconText();
+    if (tool == base_tool_) name = tr("Compliant Base");
+    tool_name_->setText(tool ? name : tr("Select: no options"));
+}
+
+QStringList EditingTools::visibleToolOptions() const
+{
+    QStringList names;
+    for (const auto& [owner, action] : option_actions_)
+        if (action->isVisible())
+            if (auto* widget_action = qobject_cast<QWidgetAction*>(action))
+                if (QWidget* w = widget_action->defaultWidget(); w && !w->objectName().isEmpty()) names << w->objectName();
+    return names;
 }
 
 bool EditingTools::eventFilter(QObject* watched, QEvent* event)
@@ -430,6 +487,7 @@ void EditingTools::setTool(DrawTool* tool)
         if (t == tool) action = a;
     if (action) action->setChecked(true);
     if (coordinate_edit_) coordinate_edit_->setEnabled(tool != nullptr);
+    if (tool_name_) showToolOptions(tool);
     hole_shift_ = false;
     setSnapping(snap_grid_, grid_spacing_);  // the grid shows with the drawing tools
     if (tool) {
@@ -484,7 +542,8 @@ void EditingTools::setSnapping(bool grid, double spacing)
     SnapOptions options;
     options.grid = snap_grid_;
     options.spacing = grid_spacing_;
-    view_->setGridSpacing(options.grid && activeTool() ? grid_spacing_ : 0.0);
+    // Not over a result: the query line reads the picture, a grid across it only hides it.
+    view_->setGridSpacing(options.grid && activeTool() && activeTool() != query_tool_ ? grid_spacing_ : 0.0);
     for (DrawTool* tool : {region_tool_, joint_tool_, fixed_tool_, roller_tool_, load_tool_, pressure_tool_, point_tool_,
                            query_tool_, bolt_tool_, water_tool_, absorbing_tool_, base_tool_})
         tool->setSnapOptions(options);

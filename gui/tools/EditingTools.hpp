@@ -12,6 +12,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <utility>
@@ -21,6 +22,7 @@ class QAction;
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
 class QLineEdit;
 class QMainWindow;
 class QMenu;
@@ -50,6 +52,10 @@ public:
     ItemRef selection() const;
     /// Edit ▸ Delete (enabled while something is selected).
     QAction* deleteAction() const { return delete_action_; }
+
+    /// The object names of the Tool Options widgets shown now: only the active tool's (none for
+    /// Select), e.g. "rollerFixBox" and "coordinateEdit" with the Roller tool.
+    QStringList visibleToolOptions() const;
 
     /// Grid snapping on or off, and the grid's spacing (m); drawing tools show the grid.
     void setSnapping(bool grid, double spacing);
@@ -105,6 +111,8 @@ private:
     DrawTool* makeTool(int shape, std::function<void(const std::vector<Point2>&)> apply);
     void setTool(DrawTool* tool);
     void createToolOptions();
+    /// Shows the Tool Options of `tool` (null: Select) and hides the others.
+    void showToolOptions(DrawTool* tool);
     /// A drawn polygon: a new region, or a hole of the region holding it (Hole / Shift).
     void applyRegion(const std::vector<Point2>& points);
     /// A drawn polyline as the water table of the stage shown; refused (the tool stays for a
@@ -138,6 +146,9 @@ private:
     QDoubleSpinBox* water_weight_box_ = nullptr;  ///< γw of a new water table (kN/m³)
     QLineEdit* coordinate_edit_ = nullptr;
     QCheckBox* hole_box_ = nullptr;
+    QLabel* tool_name_ = nullptr;  ///< the active tool, first in Tool Options
+    /// Tool Options widgets and the tool each belongs to (null: every drawing tool).
+    std::vector<std::pair<DrawTool*, QAction*>> option_actions_;
     bool hole_shift_ = false;  ///< Shift was held at the first click of the region being drawn
     bool snap_grid_ = true;
     double grid_spacing_ = 0.5;

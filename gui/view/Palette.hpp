@@ -35,6 +35,9 @@ inline constexpr Rgb text{0.08, 0.08, 0.10};            ///< legend and label te
 inline constexpr Rgb legend_frame{0.55, 0.56, 0.58};
 inline constexpr Rgb unassigned{0.75, 0.75, 0.75};      ///< material index −1 or out of range
 inline constexpr Rgb snap_marker{1.00, 0.55, 0.00};     ///< where a drawing click would land
+/// A query line over a result picture: near-black in a white halo, readable on every colour map.
+inline constexpr Rgb query_line{0.05, 0.05, 0.05};
+inline constexpr Rgb query_halo{1.00, 1.00, 1.00};
 inline constexpr Rgb grid{0.30, 0.32, 0.36};            ///< the snapping grid (drawn translucent)
 }  // namespace palette
 

@@ -1,5 +1,7 @@
 #include "view/ResultScene.hpp"
 
+#include "view/DeformScale.hpp"
+
 #include "view/FlatActor.hpp"
 #include "view/ModelScene.hpp"
 #include "view/OffscreenRender.hpp"
@@ -535,6 +537,35 @@ struct DrawnCells {
     vtkIdType point_count = 0;
 };
 
+/// The smallest deformation scale at which a cell of `grid` is drawn with zero area: its
+/// corner triangle, and for six-node cells the four triangles of corners and midside nodes
+/// (VTK's order: corners 0–2, then the midsides of 0–1, 1–2, 2–0).
+double untangled_scale(vtkUnstructuredGrid* grid, vtkDataArray* displacement)
+{
+    const vtkIdType n = grid->GetNumberOfPoints();
+    std::vector<Point2> points(static_cast<std::size_t>(n)), moved(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i) {
+        double q[3];
+        grid->GetPoint(i, q);
+        points[static_cast<std::size_t>(i)] = {q[0], q[1]};
+        moved[static_cast<std::size_t>(i)] = {displacement->GetComponent(i, 0), displacement->GetComponent(i, 1)};
+    }
+    std::vector<std::array<int, 3>> triangles;
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        grid->GetCellPoints(c, ids);
+        auto id = [&](int k) { return static_cast<int>(ids->GetId(k)); };
+        if (ids->GetNumberOfIds() == 6) {
+            static const std::array<int, 3> sub[4] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+            for (const auto& t : sub)
+                triangles.push_back({id(t[0]), id(t[1]), id(t[2])});
+        } else if (ids->GetNumberOfIds() >= 3) {
+            triangles.push_back({id(0), id(1), id(2)});
+        }
+    }
+    return largest_untangled_scale(points, moved, triangles);
+}
+
 DrawnCells displaced_cells(vtkUnstructuredGrid* grid, const ResultOptions& options, const Box& box, bool record,
                            ResultProbe& shown, ResultInfo& drew)
 {
@@ -544,10 +575,11 @@ DrawnCells displaced_cells(vtkUnstructuredGrid* grid, const ResultOptions& optio
         for (vtkIdType i = 0; i < point_count; ++i)
             drew.max_displacement = std::max(drew.max_displacement,
                                              std::hypot(displacement->GetComponent(i, 0), displacement->GetComponent(i, 1)));
-    // Auto: the largest displacement drawn as 5 % of the model's larger side.
+    // Auto: the largest displacement drawn as 5 % of the model's larger side, but never so
+    // large that an element is drawn inside out (DeformScale).
     const double deform = displacement == nullptr ? 0.0
                           : options.deform_auto
-                              ? (drew.max_displacement > 0.0 ? 0.05 * box.size() / drew.max_displacement : 0.0)
+                              ? automatic_deform_scale(box.size(), drew.max_displacement, untangled_scale(grid, displacement))
                               : options.deform;
     drew.deform_factor = deform;
     vtkNew<vtkPoints> points;
@@ -933,7 +965,8 @@ ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, const Box&
 
 /// The legend of the plastic state: a swatch per state and the lines drawn. Returns the width it
 /// takes (pixels).
-double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool joints, bool water, const ContactMarks& marks)
+double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool joints, bool water, const ContactMarks& marks,
+                        std::vector<std::string>& rows)
 {
     const double dpi = dpi_of(renderer);
     std::vector<LegendEntry> entries;
@@ -947,9 +980,12 @@ double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool join
                            picture_text(QT_TRANSLATE_NOOP("mcdda::view", "water table"))});
     if (marks.drawn) {
         char largest[64];
-        std::snprintf(largest, sizeof largest, " (%.3g kN/m)", marks.largest_force / 1e3);
-        entries.push_back({LegendEntry::Icon::Line, contact_force_color,
-                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "contact force, largest")) + largest});
+        // No row for forces that are not there ("largest (0 kN/m)" on a model without joints).
+        if (marks.largest_force > 0.0) {
+            std::snprintf(largest, sizeof largest, " (%.3g kN/m)", marks.largest_force / 1e3);
+            entries.push_back({LegendEntry::Icon::Line, contact_force_color,
+                               picture_text(QT_TRANSLATE_NOOP("mcdda::view", "contact force, largest")) + largest});
+        }
         if (marks.any_bolt)
             entries.push_back({LegendEntry::Icon::Line, bolt_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt"))});
         if (marks.largest_slip > 0.0) {
@@ -964,6 +1000,7 @@ double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool join
         }
     }
     const std::string title = picture_text(field.title);
+    for (const LegendEntry& e : entries) rows.push_back(e.label);
     add_legend(renderer, title, entries, dpi);
     return legend_width(title, entries, dpi) + 2.0 * legend_margin(dpi);
 }
@@ -1087,7 +1124,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     const bool joints = add_joints(renderer, model, grid, options, cells.deform, z_step, pixel);
     const bool water = add_water_table(renderer, model, r, options, box, z_step, pixel);
     const ContactMarks marks = add_contact_marks(renderer, r.contacts, box, z_step, pixel);
-    const double reserved = colouring.categorical ? add_state_legend(renderer, field, joints, water, marks)
+    const double reserved = colouring.categorical ? add_state_legend(renderer, field, joints, water, marks, drew.legend)
                                                   : add_scale_bar(renderer, field, colouring, sign_note, options);
     const std::string title = result_title(model, r, options, shown.title, cells.deform);
     drew.title = title;

@@ -76,6 +76,8 @@ struct ResultInfo {
     int inverted_elements = 0;
     double range_min = 0.0, range_max = 0.0;  ///< the colour scale's ends, in the legend's units
     std::string title;                        ///< the line drawn over the picture
+    /// The rows of a legend of categories (plastic state), as drawn; empty beside a scalar bar.
+    std::vector<std::string> legend;
 };
 
 /// Parses a colour map name (rainbow, viridis, grey, diverging); false when unknown.

@@ -38,8 +38,14 @@ struct ModelView::Impl {
     vtkNew<vtkRenderer> renderer;
     vtkNew<vtkRenderer> overlay;  ///< layer 1, same camera: the rubber band stays on top
     vtkNew<vtkPolyData> preview_data;
+    vtkNew<vtkActor> preview_halo_actor;  ///< white under an emphasised (query) rubber band
     vtkNew<vtkActor> preview_actor;
     std::vector<Point2> preview;
+    vtkNew<vtkPolyData> query_data;  ///< the query line and its end markers
+    vtkNew<vtkActor> query_halo_actor;
+    vtkNew<vtkActor> query_actor;
+    bool query_set = false;
+    Point2 query_from, query_to;
     vtkNew<vtkPolyData> marker_data;  ///< where a click would land (snapped)
     vtkNew<vtkActor> marker_actor;
     bool marker_shown = false;
@@ -85,6 +91,20 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<
     impl_->overlay->SetLayer(1);
     impl_->overlay->InteractiveOff();
     impl_->window->AddRenderer(impl_->overlay);
+    // A halo is drawn before (under) its line: same depth, and VTK draws in the order added.
+    auto halo = [](vtkActor* actor, vtkPolyData* data, float line, float point) {
+        vtkNew<vtkPolyDataMapper> m;
+        m->SetInputData(data);
+        actor->SetMapper(m);
+        const view::Rgb& c = view::palette::query_halo;
+        actor->GetProperty()->SetColor(c[0], c[1], c[2]);
+        actor->GetProperty()->SetLineWidth(line);
+        actor->GetProperty()->SetPointSize(point);
+        actor->GetProperty()->LightingOff();
+        actor->VisibilityOff();
+    };
+    halo(impl_->preview_halo_actor, impl_->preview_data, 7.0f, 15.0f);
+    impl_->overlay->AddActor(impl_->preview_halo_actor);
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(impl_->preview_data);
     impl_->preview_actor->SetMapper(mapper);
@@ -94,6 +114,21 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<
     impl_->preview_actor->GetProperty()->LightingOff();
     impl_->preview_actor->VisibilityOff();
     impl_->overlay->AddActor(impl_->preview_actor);
+
+    halo(impl_->query_halo_actor, impl_->query_data, 7.0f, 15.0f);
+    impl_->overlay->AddActor(impl_->query_halo_actor);
+    vtkNew<vtkPolyDataMapper> query_mapper;
+    query_mapper->SetInputData(impl_->query_data);
+    impl_->query_actor->SetMapper(query_mapper);
+    {
+        const view::Rgb& c = view::palette::query_line;
+        impl_->query_actor->GetProperty()->SetColor(c[0], c[1], c[2]);
+    }
+    impl_->query_actor->GetProperty()->SetLineWidth(3.0f);
+    impl_->query_actor->GetProperty()->SetPointSize(9.0f);
+    impl_->query_actor->GetProperty()->LightingOff();
+    impl_->query_actor->VisibilityOff();
+    impl_->overlay->AddActor(impl_->query_actor);
 
     vtkNew<vtkPolyDataMapper> marker_mapper;
     marker_mapper->SetInputData(impl_->marker_data);
@@ -160,7 +195,10 @@ void ModelView::syncOverlay()
     // The overlay's own camera follows the model's but fits its clipping range to the rubber band.
     impl_->overlay->GetActiveCamera()->DeepCopy(impl_->renderer->GetActiveCamera());
     rebuildGrid();  // it follows pan and zoom
-    if (!impl_->preview.empty() || impl_->marker_shown || impl_->grid_spacing > 0.0)
+    const bool query = queryLineShown();
+    impl_->query_actor->SetVisibility(query);
+    impl_->query_halo_actor->SetVisibility(query);
+    if (!impl_->preview.empty() || impl_->marker_shown || impl_->grid_spacing > 0.0 || query)
         impl_->overlay->ResetCameraClippingRange();
 }
 
@@ -396,7 +434,51 @@ void ModelView::setTool(ViewTool* tool)
 
 ViewTool* ModelView::tool() const { return impl_->tool; }
 
-void ModelView::setPreview(const std::vector<Point2>& points, bool closed)
+void ModelView::setQueryLine(const Point2& from, const Point2& to)
+{
+    impl_->query_set = true;
+    impl_->query_from = from;
+    impl_->query_to = to;
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(from.x, from.y, 0.0);
+    points->InsertNextPoint(to.x, to.y, 0.0);
+    const vtkIdType ends[2] = {0, 1};
+    vtkNew<vtkCellArray> line;
+    line->InsertNextCell(2, ends);
+    vtkNew<vtkCellArray> markers;  // the ends, where the plot's distance starts and stops
+    markers->InsertNextCell(1, &ends[0]);
+    markers->InsertNextCell(1, &ends[1]);
+    impl_->query_data->SetPoints(points);
+    impl_->query_data->SetLines(line);
+    impl_->query_data->SetVerts(markers);
+    impl_->query_data->Modified();
+    update();
+}
+
+void ModelView::clearQueryLine()
+{
+    if (!impl_->query_set) return;
+    impl_->query_set = false;
+    impl_->query_data->Initialize();
+    impl_->query_data->Modified();
+    update();
+}
+
+bool ModelView::queryLine(Point2* from, Point2* to) const
+{
+    if (impl_->query_set) {
+        if (from) *from = impl_->query_from;
+        if (to) *to = impl_->query_to;
+    }
+    return impl_->query_set;
+}
+
+bool ModelView::queryLineShown() const
+{
+    return impl_->query_set && impl_->scene && (impl_->result || !impl_->result_file.isEmpty());
+}
+
+void ModelView::setPreview(const std::vector<Point2>& points, bool closed, bool emphasised)
 {
     impl_->preview = points;
     vtkNew<vtkPoints> pts;
@@ -416,6 +498,12 @@ void ModelView::setPreview(const std::vector<Point2>& points, bool closed)
     impl_->preview_data->SetLines(lines);
     impl_->preview_data->Modified();
     impl_->preview_actor->SetVisibility(n > 0);
+    impl_->preview_halo_actor->SetVisibility(n > 0 && emphasised);
+    const view::Rgb plain{0.0, 0.45, 0.85};
+    const view::Rgb& c = emphasised ? view::palette::query_line : plain;
+    impl_->preview_actor->GetProperty()->SetColor(c[0], c[1], c[2]);
+    impl_->preview_actor->GetProperty()->SetLineWidth(emphasised ? 3.0f : 2.0f);
+    impl_->preview_actor->GetProperty()->SetPointSize(emphasised ? 9.0f : 6.0f);
     update();
 }
 

@@ -81,8 +81,9 @@ public:
     void setTool(ViewTool* tool);
     ViewTool* tool() const;
     /// A rubber band drawn over the picture (model coordinates), e.g. a shape being drawn;
-    /// `closed` joins the last point to the first.
-    void setPreview(const std::vector<Point2>& points, bool closed);
+    /// `closed` joins the last point to the first. `emphasised` draws it as a query line (dark
+    /// with a white halo and end markers), which stays readable over any colour map.
+    void setPreview(const std::vector<Point2>& points, bool closed, bool emphasised = false);
     void clearPreview();
     /// The rubber band's points (empty when none).
     std::vector<Point2> preview() const;
@@ -96,6 +97,14 @@ public:
     void hideSnapMarker();
     /// Whether the marker is shown, and where (into `p` when not null).
     bool snapMarker(Point2* p = nullptr) const;
+    /// The query line of the Query dock, drawn over result pictures (dark with a white halo and
+    /// end markers) until cleared; not over the model picture, whose edits it does not concern.
+    void setQueryLine(const Point2& from, const Point2& to);
+    void clearQueryLine();
+    /// Whether a query line is set (drawn whenever a result is shown), and its ends.
+    bool queryLine(Point2* from = nullptr, Point2* to = nullptr) const;
+    /// Whether the query line is drawn in the picture now (set, and a result shown).
+    bool queryLineShown() const;
     /// Shows the model box [xmin, xmax] × [ymin, ymax] (with a margin); counts as navigating.
     void showBox(double xmin, double ymin, double xmax, double ymax);
 
