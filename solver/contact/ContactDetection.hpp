@@ -17,7 +17,9 @@ namespace mcdda {
 /// (and, for a node on a crack face, its own block's crack faces) with an edge within
 /// `search_distance`, the nearest such edge (ties: the one the node is least
 /// inside of) that the vertex faces (the edge's outward normal and the vertex's point against each
-/// other: a simplified form of Shi's entrance rule for vertex–vertex cases) and projects onto.
+/// other: a simplified form of Shi's entrance rule for vertex–vertex cases) and projects onto,
+/// unless a third block lies between them (the segment from the node to the edge crosses one of
+/// its edges).
 /// A contact of the same node and block in `previous` keeps its state. A new one starts open
 /// when apart; when touching it starts sliding if the expected slip over the step
 /// (`expected_increment`, velocity × Δt; empty in static analysis) exceeds `tolerance`, locked

@@ -120,17 +120,54 @@ std::optional<SmallFeature> find_small_feature(const Block& block, double tolera
     return std::nullopt;
 }
 
+std::optional<SharpCorner> find_sharp_corner(const Block& block, double limit_deg) {
+    std::optional<SharpCorner> sharpest;
+    auto visit = [&](const Ring& ring) {
+        const std::size_t n = ring.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const Point2& prev = ring[(i + n - 1) % n];
+            const Point2& v = ring[i];
+            const Point2& next = ring[(i + 1) % n];
+            // The block lies left of its ring edges (outer CCW, holes CW): the interior angle is
+            // π minus the left turn from the incoming to the outgoing edge.
+            const double ix = v.x - prev.x, iy = v.y - prev.y, ox = next.x - v.x, oy = next.y - v.y;
+            const double angle = 180.0 - std::atan2(ix * oy - iy * ox, ix * ox + iy * oy) * 180.0 / M_PI;
+            if (angle < limit_deg && (!sharpest || angle < sharpest->angle_deg)) sharpest = SharpCorner{angle, v};
+        }
+    };
+    visit(block.outer);
+    for (const Ring& h : block.holes) visit(h);
+    return sharpest;
+}
+
 void check_block_features(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics) {
     const auto box = model.bounds();
     const double size = std::hypot(box[2] - box[0], box[3] - box[1]);
-    const double tolerance = smallest_feature_ratio * size;
+    const double tolerance = smallest_block_feature_ratio * size;
     constexpr int reported = 5;
     int found = 0;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
-        const auto feature = find_small_feature(blocks[i], tolerance);
-        if (!feature) continue;
-        if (++found > reported) continue;
         const Block& b = blocks[i];
+        const auto feature = find_small_feature(b, tolerance);
+        if (!feature) {
+            const auto corner = find_sharp_corner(b, sharpest_corner_deg);
+            if (!corner) continue;
+            if (++found > reported) continue;
+            std::ostringstream text;
+            text.precision(3);
+            text << "block " << i + 1 << " of region \"" << model.regions[b.region].name << "\" has a corner of "
+                 << corner->angle_deg << "° at (";
+            text.precision(9);
+            text << corner->where.x << ", " << corner->where.y << ")";
+            text.precision(3);
+            text << ", sharper than " << sharpest_corner_deg
+                 << "°: joints, or a joint and the region's boundary, meeting at so small an angle cut a sliver "
+                    "that can be neither meshed nor held by contacts in bounded work; make them meet at a "
+                    "larger angle, end one joint on the other, or leave one out";
+            diagnostics.push_back({Diagnostic::Severity::Error, "/regions/" + std::to_string(b.region), text.str()});
+            continue;
+        }
+        if (++found > reported) continue;
         std::ostringstream where;
         where.precision(9);
         where << "(" << feature->where.x << ", " << feature->where.y << ")";
@@ -138,14 +175,16 @@ void check_block_features(const Model& model, const std::vector<Block>& blocks, 
             {Diagnostic::Severity::Error, "/regions/" + std::to_string(b.region),
              "block " + std::to_string(i + 1) + " of region \"" + model.regions[b.region].name + "\" has " +
                  feature->what + " near " + where.str() + ", below " + metres(tolerance) +
-                 " (a millionth of the model's size), which cannot be meshed: a sliver of a region, "
+                 " (a hundred-thousandth of the model's size), which cannot be meshed: a sliver of a region, "
                  "nearly coincident vertices or joints, or a joint passing a hair's breadth from a "
                  "vertex; move the vertex or the joint"});
     }
-    if (found > reported)
-        diagnostics.push_back({Diagnostic::Severity::Error, "/regions",
-                               std::to_string(found - reported) + " more blocks have features below " +
-                                   metres(tolerance)});
+    if (found > reported) {
+        std::ostringstream text;
+        text << found - reported << " more blocks have features below " << metres(tolerance)
+             << " or corners sharper than " << sharpest_corner_deg << "°";
+        diagnostics.push_back({Diagnostic::Severity::Error, "/regions", text.str()});
+    }
 }
 
 }  // namespace mcdda

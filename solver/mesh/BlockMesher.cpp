@@ -403,6 +403,22 @@ double estimate_triangle_count(const Model& model, const std::vector<Block>& blo
             box[0] = std::min(box[0], p.x); box[1] = std::min(box[1], p.y);
             box[2] = std::max(box[2], p.x); box[3] = std::max(box[3], p.y);
         }
+        // A block narrower than the size asked for is meshed at its width (the minimum angle
+        // forbids long thin triangles): a sliver of width w and length L takes about L / w
+        // triangles, whatever the size field says. 4 A / P is the width of a strip (twice it)
+        // and the side of a square.
+        double perimeter = 0.0;
+        const auto add_ring = [&perimeter](const Ring& ring) {
+            for (std::size_t k = 0; k < ring.size(); ++k) {
+                const Point2& p = ring[k];
+                const Point2& q = ring[(k + 1) % ring.size()];
+                perimeter += std::hypot(q.x - p.x, q.y - p.y);
+            }
+        };
+        add_ring(b.outer);
+        for (const Ring& h : b.holes) add_ring(h);
+        const double width = perimeter > 0.0 ? 4.0 * b.area / perimeter : 0.0;
+        const auto size_at = [&](const Point2& c) { return width > 0.0 ? std::min(field(c), width) : field(c); };
         constexpr int n = 24;
         const double dx = (box[2] - box[0]) / n, dy = (box[3] - box[1]) / n;
         double sampled = 0.0, inside_cells = 0.0;
@@ -410,12 +426,12 @@ double estimate_triangle_count(const Model& model, const std::vector<Block>& blo
             for (int k = 0; k < n; ++k) {
                 const Point2 c{box[0] + (i + 0.5) * dx, box[1] + (k + 0.5) * dy};
                 if (!block_contains(b, c)) continue;
-                const double h = field(c);
+                const double h = size_at(c);
                 sampled += 1.0 / (area_per_h2 * h * h);
                 inside_cells += 1.0;
             }
         if (inside_cells > 0) count += b.area * sampled / inside_cells;
-        else count += b.area / (area_per_h2 * std::pow(field(b.outer.front()), 2));
+        else count += b.area / (area_per_h2 * std::pow(size_at(b.outer.front()), 2));
     }
     return count;
 }
@@ -427,7 +443,9 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         std::ostringstream msg;
         msg.precision(3);
         msg << "the mesh would have about " << estimate << " triangles, above the limit of "
-            << model.mesh.max_elements << " (raise /mesh/max_elements or coarsen /mesh/size)";
+            << model.mesh.max_elements
+            << " (blocks narrower than the mesh size, between joints closer together than it, are meshed at "
+               "their width; raise /mesh/max_elements, coarsen /mesh/size or space the joints wider)";
         diagnostics.push_back({Diagnostic::Severity::Error, "/mesh", msg.str()});
         return mesh;
     }

@@ -248,7 +248,7 @@ struct MeshControls {
     double min_angle = 25.0 * 3.14159265358979323846 / 180.0;  ///< (rad)
     double grading = 0.3;           ///< growth of the size with distance beyond a local radius
     std::vector<LocalSize> local;
-    long max_elements = 2000000;    ///< refuse to mesh beyond this estimate
+    long max_elements = 500000;     ///< refuse to mesh beyond this estimate
 };
 
 struct AnalysisSettings {

@@ -1,7 +1,8 @@
 #!/bin/sh
-# SIGTERM during one long step (ten joints fanned 0.4° apart through the Kirsch plate: one step
-# takes minutes) ends the run within seconds, cancelled, with the results of the last increment
-# accepted; it no longer waits for the step to end.
+# SIGTERM during one long step (the flexible footing loaded past collapse in one step on a fine
+# mesh: the step halves its load increment and iterates for many seconds) ends the run within
+# seconds, cancelled, with the results of the last increment accepted; it does not wait for the
+# step to end.
 # Usage: stop-during-step.sh MCDDA MODEL WORKDIR
 mcdda=$1; model=$2; dir=$3/stop-during-step
 fail() { echo "FAIL: $*"; exit 1; }
