@@ -466,6 +466,30 @@ void check_bolts(Checker& c, const Model& m) {
 }
 
 /// Stages: what each names exists, and is present or absent as its action needs.
+/// Names that head columns of history.csv ("<point>:ux", "load:<name>", "<bolt>:force"): a
+/// comma, quote or line break would split or break the column, and a leading =, +, - or @ makes
+/// a spreadsheet take the header for a formula and run it (CSV injection).
+void check_column_names(Checker& c, const Model& m) {
+    const auto check = [&c](const std::string& name, const std::string& path, const char* what, bool leads = true) {
+        if (name.find_first_of(",\"\n\r") != std::string::npos)
+            c.error(path + "/name", std::string("the ") + what + " name \"" + name +
+                                        "\" heads a column of history.csv: it may not hold a comma, a quote or a line break");
+        else if (leads && !name.empty() && std::string("=+-@\t").find(name.front()) != std::string::npos)
+            c.error(path + "/name", std::string("the ") + what + " name \"" + name +
+                                        "\" heads a column of history.csv, where a spreadsheet would take it for a formula: "
+                                        "it may not begin with =, +, - or @");
+    };
+    for (std::size_t i = 0; i < m.measurement_points.size(); ++i)
+        check(m.measurement_points[i].name, "/measurement_points/" + std::to_string(i), "measurement point");
+    for (std::size_t i = 0; i < m.rollers.size(); ++i)
+        if (m.rollers[i].moves()) check(m.rollers[i].name, "/rollers/" + std::to_string(i), "moving support");
+    for (std::size_t i = 0; i < m.point_loads.size(); ++i)
+        check(m.point_loads[i].name, "/point_loads/" + std::to_string(i), "point load", false);  // after "load:"
+    for (std::size_t i = 0; i < m.edge_pressures.size(); ++i)
+        check(m.edge_pressures[i].name, "/edge_pressures/" + std::to_string(i), "edge pressure", false);
+    for (std::size_t i = 0; i < m.bolts.size(); ++i) check(m.bolts[i].name, "/bolts/" + std::to_string(i), "bolt");
+}
+
 void check_stages(Checker& c, const Model& m) {
     std::vector<std::pair<std::string, std::string>> items;  // (name, kind)
     for (const FixedPoint& f : m.fixed_points) items.emplace_back(f.name, "fixed point");
@@ -557,6 +581,7 @@ void validate_model(const Model& model, std::vector<Diagnostic>& diagnostics) {
     check_load_tables(c, model);
     check_controls(c, model);
     check_bolts(c, model);
+    check_column_names(c, model);
     check_stages(c, model);
     check_water(c, model);
     check_earthquake(c, model);
