@@ -486,6 +486,10 @@ void MainWindow::showScene(std::shared_ptr<const Preprocessed> p, const QString&
     looking_back_ = false;
     steps_->clear();
     plot_->clear();
+    // A static model's steps are load steps: plots and labels count them, not seconds.
+    const bool load_steps = !has_dynamic_stage(p->model);
+    plot_->setLoadSteps(load_steps);
+    steps_->setLoadSteps(load_steps);
     if (interactive) {
         setWindowFilePath(source);
         session_->setSourcePath(source);

@@ -292,7 +292,7 @@
     <message>
         <location filename="../solver/model/ModelFields.cpp" line="89"/>
         <source>Largest displacement in one step divided by the model size (Shi&apos;s g2)</source>
-        <translation>Größte Verschiebung in einem Zeitschritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
+        <translation>Größte Verschiebung in einem Schritt geteilt durch die Modellgröße (g2 nach Shi)</translation>
     </message>
     <message>
         <location filename="../solver/model/ModelFields.cpp" line="91"/>
@@ -486,12 +486,213 @@
     <message>
         <location filename="../gui/results/ResultExport.cpp" line="79"/>
         <source>%1 lists no saved steps.</source>
-        <translation>%1 führt keine gespeicherten Zeitschritte auf.</translation>
+        <translation>%1 führt keine gespeicherten Schritte auf.</translation>
     </message>
     <message>
         <location filename="../gui/results/ResultExport.cpp" line="84"/>
         <source>Cannot create the folder %1.</source>
         <translation>Der Ordner %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="81"/>
+        <source>material &quot;%1&quot;</source>
+        <translation>Material „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="91"/>
+        <source>joint material &quot;%1&quot;</source>
+        <translation>Trennflächenmaterial „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="94"/>
+        <source>bolt &quot;%1&quot;</source>
+        <translation>Anker „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="97"/>
+        <source>analysis settings</source>
+        <translation>Berechnungseinstellungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="100"/>
+        <source>stage &quot;%1&quot;</source>
+        <translation>Bauphase „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="102"/>
+        <source>%1, analysis settings</source>
+        <translation>%1, Berechnungseinstellungen</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="106"/>
+        <source>region &quot;%1&quot;</source>
+        <translation>Bereich „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="107"/>
+        <source>%1, hole %2</source>
+        <translation>%1, Öffnung %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="109"/>
+        <source>load table &quot;%1&quot;</source>
+        <translation>Lasttabelle „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="110"/>
+        <location filename="../gui/session/DiagnosticText.cpp" line="113"/>
+        <source>%1, point %2</source>
+        <translation>%1, Punkt %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="112"/>
+        <source>joint &quot;%1&quot;</source>
+        <translation>Trennfläche „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="115"/>
+        <source>joint set &quot;%1&quot;</source>
+        <translation>Trennflächenschar „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="117"/>
+        <source>fixed point &quot;%1&quot;</source>
+        <translation>Festpunkt „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="119"/>
+        <source>roller &quot;%1&quot;</source>
+        <translation>Rollenlager „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="121"/>
+        <source>point load &quot;%1&quot;</source>
+        <translation>Punktlast „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="123"/>
+        <source>edge pressure &quot;%1&quot;</source>
+        <translation>Flächenlast „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="125"/>
+        <source>measurement point &quot;%1&quot;</source>
+        <translation>Messpunkt „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="127"/>
+        <source>absorbing boundary &quot;%1&quot;</source>
+        <translation>absorbierender Rand „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="129"/>
+        <source>ground motion &quot;%1&quot;</source>
+        <translation>Bodenbewegung „%1“</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="131"/>
+        <source>mesh</source>
+        <translation>Netz</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="133"/>
+        <source>in-situ stress</source>
+        <translation>Primärspannung</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="135"/>
+        <source>gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="137"/>
+        <source>ground water</source>
+        <translation>Grundwasser</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="139"/>
+        <source>base motion</source>
+        <translation>Fußpunktanregung</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="141"/>
+        <source>seismic coefficient</source>
+        <translation>Erdbebenbeiwert</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="162"/>
+        <source>must lie in %1%2, %3%4</source>
+        <translation>muss in %1%2; %3%4 liegen</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="166"/>
+        <source>must not be negative</source>
+        <translation>darf nicht negativ sein</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="166"/>
+        <source>must be positive</source>
+        <translation>muss positiv sein</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="168"/>
+        <source>must be at least %1</source>
+        <translation>muss mindestens %1 sein</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="168"/>
+        <source>must be more than %1</source>
+        <translation>muss größer als %1 sein</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="170"/>
+        <source>must be at most %1</source>
+        <translation>darf höchstens %1 sein</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="170"/>
+        <source>must be less than %1</source>
+        <translation>muss kleiner als %1 sein</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="172"/>
+        <source>got %1</source>
+        <translation>eingegeben %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="173"/>
+        <source>%1; 0 = %2</source>
+        <translation>%1; 0 = %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="174"/>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="179"/>
+        <source>%1 of %2 is beyond any physical value (at most %3): check the units</source>
+        <translation>%1 von %2 liegt jenseits jedes physikalischen Werts (höchstens %3): bitte die Einheiten prüfen</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="212"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="218"/>
+        <source>error: %1</source>
+        <translation>Fehler: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="218"/>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DiagnosticText.cpp" line="228"/>
+        <source>Draw a region to start: choose the Region tool (Edit ▸ Draw Region) and click its corners, or type them as x, y in the coordinate field.</source>
+        <translation>Zeichnen Sie zuerst einen Bereich: das Werkzeug Bereich wählen (Bearbeiten ▸ Bereich zeichnen) und seine Ecken anklicken oder sie als x; y in das Koordinatenfeld eingeben.</translation>
     </message>
 </context>
 <context>
@@ -554,27 +755,27 @@
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/BoltForm.cpp" line="62"/>
+        <location filename="../gui/panels/BoltForm.cpp" line="61"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/BoltForm.cpp" line="76"/>
+        <location filename="../gui/panels/BoltForm.cpp" line="75"/>
         <source>No bolts: Edit ▸ Bolt draws one between two anchors.</source>
         <translation>Keine Anker: Bearbeiten ▸ Anker zeichnet einen zwischen zwei Verankerungspunkten.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/BoltForm.cpp" line="104"/>
+        <location filename="../gui/panels/BoltForm.cpp" line="103"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/BoltForm.cpp" line="107"/>
+        <location filename="../gui/panels/BoltForm.cpp" line="106"/>
         <source>Edit bolt &quot;%1&quot;</source>
         <translation>Anker „%1“ bearbeiten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/BoltForm.cpp" line="108"/>
+        <location filename="../gui/panels/BoltForm.cpp" line="107"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -582,16 +783,46 @@
 <context>
     <name>mcdda::gui::DisplayUnits</name>
     <message>
-        <location filename="../gui/session/DisplayUnits.cpp" line="48"/>
-        <location filename="../gui/session/DisplayUnits.cpp" line="55"/>
+        <location filename="../gui/session/DisplayUnits.cpp" line="50"/>
+        <location filename="../gui/session/DisplayUnits.cpp" line="57"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/session/DisplayUnits.cpp" line="48"/>
-        <location filename="../gui/session/DisplayUnits.cpp" line="55"/>
+        <location filename="../gui/session/DisplayUnits.cpp" line="50"/>
+        <location filename="../gui/session/DisplayUnits.cpp" line="57"/>
         <source>kPa</source>
         <translation>kPa</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="68"/>
+        <source>kN/m³</source>
+        <translation>kN/m³</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="69"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="70"/>
+        <source>MN/m</source>
+        <translation>MN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="71"/>
+        <source>kN/m</source>
+        <translation>kN/m</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="72"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/DisplayUnits.cpp" line="73"/>
+        <source>Hz</source>
+        <translation>Hz</translation>
     </message>
 </context>
 <context>
@@ -887,359 +1118,359 @@
 <context>
     <name>mcdda::gui::EditingTools</name>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="128"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="129"/>
         <source>bolt %1</source>
         <translation>Anker %1</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="135"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="136"/>
         <source>Add bolt &quot;%1&quot;</source>
         <translation>Anker „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="168"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="169"/>
         <source>The water table must run from left to right: a point cannot be moved past its neighbour.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Ein Punkt kann nicht über seinen Nachbarn hinaus verschoben werden.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="189"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="190"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="193"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="194"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="202"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="204"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="220"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="221"/>
         <source>&amp;Select</source>
         <translation>&amp;Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="221"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="222"/>
         <source>Click an item or a vertex to select it, drag it to move it, Delete removes it; drag empty space to pan</source>
         <translation>Objekt oder Eckpunkt anklicken, um es zu wählen, ziehen, um es zu verschieben, Entf löscht es; leere Fläche ziehen verschiebt die Ansicht</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="224"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="225"/>
         <source>Draw &amp;Region</source>
         <translation>&amp;Bereich zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="225"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="226"/>
         <source>Click the corners of a new region; double-click or Enter closes it, Escape cancels</source>
         <translation>Die Ecken eines neuen Bereichs anklicken; Doppelklick oder Eingabetaste schließt ihn, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="227"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
         <source>Draw &amp;Joint</source>
         <translation>&amp;Kluft zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="228"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="229"/>
         <source>Click the points of a new joint; double-click or Enter finishes it, Escape cancels</source>
         <translation>Die Punkte einer neuen Kluft anklicken; Doppelklick oder Eingabetaste beendet sie, Escape bricht ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="231"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="232"/>
         <source>&amp;Fixed Point</source>
         <translation>&amp;Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="232"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="233"/>
         <source>Click where the mesh is held in both directions</source>
         <translation>Dort klicken, wo das Netz in beiden Richtungen gehalten wird</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="233"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
         <source>R&amp;oller</source>
         <translation>R&amp;ollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="234"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="235"/>
         <source>Click the two ends of a roller; the fixed directions are chosen in Tool Options</source>
         <translation>Die beiden Enden eines Rollenlagers anklicken; die gehaltenen Richtungen werden in den Werkzeugoptionen gewählt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="236"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="237"/>
         <source>Point &amp;Load</source>
         <translation>&amp;Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="237"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="238"/>
         <source>Click where a point load acts; its force is set in Tool Options</source>
         <translation>Dort klicken, wo eine Punktlast angreift; ihre Kraft wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="239"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="240"/>
         <source>Edge &amp;Pressure</source>
         <translation>Kanten&amp;druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="240"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="241"/>
         <source>Click the two ends of a loaded edge; the pressure is set in Tool Options</source>
         <translation>Die beiden Enden einer belasteten Kante anklicken; der Druck wird in den Werkzeugoptionen eingestellt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="242"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="243"/>
         <source>&amp;Measurement Point</source>
         <translation>&amp;Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="243"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="244"/>
         <source>Click where displacements are recorded</source>
         <translation>Dort klicken, wo Verschiebungen aufgezeichnet werden</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="245"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
         <source>&amp;Bolt</source>
         <translation>A&amp;nker</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="246"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="247"/>
         <source>Click the two anchors of a rock bolt (EA 98 MN/m, breaking at 160 kN/m per metre of thickness; other values and the stage that installs it are set in the model file)</source>
         <translation>Die beiden Verankerungspunkte eines Felsankers anklicken (EA 98 MN/m, Bruch bei 160 kN/m je Meter Dicke; andere Werte und die Bauphase, die ihn einbaut, stehen in der Modelldatei)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="249"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="250"/>
         <source>Draw &amp;Water Table</source>
         <translation>&amp;Grundwasserspiegel zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="250"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="251"/>
         <source>Click the points of the water table (piezometric line) from left to right; double-click or Enter finishes it. It is the water of the stage chosen in the Stages dock, or of the model as drawn</source>
         <translation>Die Punkte des Grundwasserspiegels (Piezometerlinie) von links nach rechts anklicken; Doppelklick oder Eingabetaste beendet ihn. Er gilt für die im Fenster Bauphasen gewählte Bauphase oder für das Modell wie gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="254"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="255"/>
         <source>&amp;Absorbing Boundary</source>
         <translation>Absorbi&amp;erender Rand</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="255"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="256"/>
         <source>Click the two ends of a boundary whose dashpots let the earthquake&apos;s waves out instead of reflecting them (no support may hold it in a dynamic stage)</source>
         <translation>Die beiden Enden eines Randes anklicken, dessen Dämpfer die Wellen des Erdbebens hinauslassen, statt sie zu reflektieren (in einer dynamischen Bauphase darf ihn kein Lager halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="260"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="261"/>
         <source>&amp;Query Line</source>
         <translation>Abfragel&amp;inie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="261"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="262"/>
         <source>Click the two ends of a line across the result picture: the Query dock plots the field shown along it</source>
         <translation>Die beiden Enden einer Linie über das Ergebnisbild anklicken: das Abfrage-Fenster zeigt das Feld entlang der Linie</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="265"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="266"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="270"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="271"/>
         <source>Delete the selected item or vertex</source>
         <translation>Das gewählte Objekt oder den gewählten Eckpunkt löschen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="273"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="274"/>
         <source>Add Joint Se&amp;t...</source>
         <translation>Kluft&amp;schar hinzufügen...</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="275"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="276"/>
         <source>Add a family of parallel joints</source>
         <translation>Eine Schar paralleler Klüfte hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="277"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="278"/>
         <source>Region</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="278"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="279"/>
         <source>Joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="280"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="281"/>
         <source>Measurement</source>
         <translation>Messpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="281"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="282"/>
         <source>Water Table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="282"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="283"/>
         <source>Absorbing</source>
         <translation>Absorbierend</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="293"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="295"/>
         <source>Tool Options</source>
         <translation>Werkzeugoptionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="312"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="314"/>
         <source>Roller fixes</source>
         <translation>Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="315"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="317"/>
         <source>Directions a new roller holds</source>
         <translation>Richtungen, die ein neues Rollenlager hält</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="316"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="318"/>
         <source>y</source>
         <translation>y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="317"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="319"/>
         <source>x</source>
         <translation>x</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="318"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="320"/>
         <source>x and y</source>
         <translation>x und y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="332"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="334"/>
         <source>Load Fx</source>
         <translation>Last Fx</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
         <location filename="../gui/tools/EditingTools.cpp" line="335"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="337"/>
         <source>kN/m</source>
         <translation>kN/m</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="333"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="335"/>
         <source>Horizontal force of a new point load</source>
         <translation>Horizontalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="334"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="336"/>
         <source>Fy</source>
         <translation>Fy</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="335"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="337"/>
         <source>Vertical force of a new point load</source>
         <translation>Vertikalkraft einer neuen Punktlast</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="279"/>
-        <location filename="../gui/tools/EditingTools.cpp" line="337"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="280"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="339"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="338"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="340"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="339"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="341"/>
         <source>Pressure of a new edge load (positive pushes into the material)</source>
         <translation>Druck einer neuen Flächenlast (positiv drückt in das Material)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="341"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="343"/>
         <source>γw</source>
         <translation>γw</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="342"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="344"/>
         <source>kN/m³</source>
         <translation>kN/m³</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="343"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="345"/>
         <source>Unit weight of water of a new water table (fresh water 9.81 kN/m³)</source>
         <translation>Wichte des Wassers eines neuen Grundwasserspiegels (Süßwasser 9,81 kN/m³)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="346"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="348"/>
         <source>Hole</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="348"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="350"/>
         <source>Draw Region cuts an opening into the region around it (or hold Shift at the first click)</source>
         <translation>Bereich zeichnen schneidet eine Öffnung in den umgebenden Bereich (oder beim ersten Klick Umschalt halten)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="351"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="353"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="354"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="356"/>
         <source>x, y</source>
         <translation>x, y</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="355"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="357"/>
         <source>Type a point as &quot;x, y&quot; (m) and press Enter to place it; Enter on an empty field finishes the shape</source>
         <translation>Punkt als „x, y“ (m) eingeben und mit Enter setzen; Enter im leeren Feld schließt die Form ab</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="371"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="380"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="374"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="383"/>
         <source>Compliant Base</source>
         <translation>Nachgiebige Basis</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="375"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="384"/>
         <source>Select: no options</source>
         <translation>Auswählen: keine Optionen</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="418"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="427"/>
         <source>The hole was not added: no region contains it.</source>
         <translation>Die Öffnung wurde nicht hinzugefügt: Kein Bereich enthält sie.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="431"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="440"/>
         <source>The water table must run from left to right: point %1 is straight above or below point %2. Draw it again.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt genau über oder unter Punkt %2. Bitte neu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="433"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="442"/>
         <source>The water table must run from left to right: point %1 is left of point %2. Draw it again.</source>
         <translation>Der Grundwasserspiegel muss von links nach rechts verlaufen: Punkt %1 liegt links von Punkt %2. Bitte neu zeichnen.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="455"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="464"/>
         <source>Type a point as &quot;x, y&quot; in metres, e.g. &quot;2.5, -1&quot; (or &quot;2,5; -1&quot;)</source>
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="506"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="515"/>
         <source>Import a ground motion first (Earthquake dock): the compliant base is where it enters the model.</source>
         <translation>Zuerst eine Bodenbewegung importieren (Fenster Erdbeben): die nachgiebige Basis ist die Stelle, an der sie in das Modell eintritt.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="510"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="519"/>
         <source>Click the two ends of the compliant base</source>
         <translation>Die beiden Enden der nachgiebigen Basis anklicken</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="523"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="532"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -1274,17 +1505,17 @@
     <message>
         <location filename="../gui/results/ExportMenu.cpp" line="24"/>
         <source>Saved &amp;Steps (PVD/VTU)...</source>
-        <translation>Gespeicherte &amp;Zeitschritte (PVD/VTU)...</translation>
+        <translation>Gespeicherte &amp;Schritte (PVD/VTU)...</translation>
     </message>
     <message>
         <location filename="../gui/results/ExportMenu.cpp" line="25"/>
         <source>Export saved steps to</source>
-        <translation>Gespeicherte Zeitschritte exportieren nach</translation>
+        <translation>Gespeicherte Schritte exportieren nach</translation>
     </message>
     <message>
         <location filename="../gui/results/ExportMenu.cpp" line="29"/>
         <source>Copy the run&apos;s .pvd collection and its .vtu steps to a folder</source>
-        <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Zeitschritte in einen Ordner kopieren</translation>
+        <translation>Die .pvd-Sammlung der Berechnung und ihre .vtu-Schritte in einen Ordner kopieren</translation>
     </message>
     <message>
         <location filename="../gui/results/ExportMenu.cpp" line="30"/>
@@ -1315,7 +1546,7 @@
     <message>
         <location filename="../gui/results/ExportMenu.cpp" line="86"/>
         <source>There are no saved steps yet: run the model first.</source>
-        <translation>Es gibt noch keine gespeicherten Zeitschritte: zuerst das Modell berechnen.</translation>
+        <translation>Es gibt noch keine gespeicherten Schritte: zuerst das Modell berechnen.</translation>
     </message>
     <message numerus="yes">
         <location filename="../gui/results/ExportMenu.cpp" line="95"/>
@@ -1408,76 +1639,81 @@
     </message>
     <message>
         <location filename="../gui/results/HistoryPlot.cpp" line="35"/>
-        <source>Plotted against time or a load (load-settlement curve)</source>
-        <translation>Aufgetragen über der Zeit oder einer Last (Last-Setzungs-Kurve)</translation>
+        <source>Plotted against the load step (a static analysis), time (a dynamic one) or a load (load-settlement curve)</source>
+        <translation>Aufgetragen über dem Lastschritt (statische Berechnung), der Zeit (dynamische) oder einer Last (Last-Setzungs-Kurve)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="67"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="68"/>
         <source>Plot</source>
         <translation>Darstellen</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="69"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="70"/>
         <source>against</source>
         <translation>über</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="92"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="93"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="93"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="94"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="94"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="95"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="96"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="97"/>
         <source>base input %1 (%2)</source>
         <translation>Eingang der Basis %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="97"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="98"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="131"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="132"/>
         <source>strength reduction factor</source>
         <translation>Festigkeitsreduktionsfaktor</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="132"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="133"/>
         <source>largest displacement (m)</source>
         <translation>größte Verschiebung (m)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="134"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="135"/>
+        <source>load step</source>
+        <translation>Lastschritt</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/HistoryPlot.cpp" line="137"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="138"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="141"/>
         <source>load %1</source>
         <translation>Last %1</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="180"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="183"/>
         <source>No history: run the model.</source>
         <translation>Kein Verlauf: Modell berechnen.</translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="182"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="185"/>
         <source>The model has no measurement points.</source>
         <translation>Das Modell hat keine Messpunkte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="184"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="187"/>
         <source>%n trial(s) stood, %1 did not</source>
         <translation>
             <numerusform>%n Versuch stand, %1 nicht</numerusform>
@@ -1485,15 +1721,15 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/HistoryPlot.cpp" line="186"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="189"/>
         <source>%n step(s)</source>
         <translation>
-            <numerusform>%n Zeitschritt</numerusform>
-            <numerusform>%n Zeitschritte</numerusform>
+            <numerusform>%n Schritt</numerusform>
+            <numerusform>%n Schritte</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../gui/results/HistoryPlot.cpp" line="210"/>
+        <location filename="../gui/results/HistoryPlot.cpp" line="213"/>
         <source>No history yet: run the model (Run ▸ Run, F5). The displacements of its measurement points are plotted here as it runs.</source>
         <translation>Noch kein Verlauf: das Modell berechnen (Berechnung ▸ Berechnung, F5). Die Verschiebungen seiner Messpunkte werden hier während der Berechnung dargestellt.</translation>
     </message>
@@ -2130,7 +2366,7 @@
     <message>
         <location filename="../gui/MainWindow.cpp" line="122"/>
         <source>Steps</source>
-        <translation>Zeitschritte</translation>
+        <translation>Schritte</translation>
     </message>
     <message>
         <location filename="../gui/MainWindow.cpp" line="136"/>
@@ -2163,92 +2399,92 @@
         <translation>Die Berechnung wurde angehalten: das Modell wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="524"/>
+        <location filename="../gui/MainWindow.cpp" line="528"/>
         <source>Folder for the results</source>
         <translation>Ordner für die Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="573"/>
+        <location filename="../gui/MainWindow.cpp" line="577"/>
         <source>Run an unsaved model</source>
         <translation>Nicht gespeichertes Modell berechnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="574"/>
+        <location filename="../gui/MainWindow.cpp" line="578"/>
         <source>The model has not been saved yet. Where should its results go?</source>
         <translation>Das Modell wurde noch nicht gespeichert. Wohin sollen seine Ergebnisse?</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="575"/>
+        <location filename="../gui/MainWindow.cpp" line="579"/>
         <source>Save the model first to keep its results in a folder beside it (&lt;model&gt;-results), or run it now with the results in a new temporary folder.</source>
         <translation>Das Modell zuerst speichern, um seine Ergebnisse in einem Ordner daneben zu behalten (&lt;Modell&gt;-results), oder es jetzt berechnen, mit den Ergebnissen in einem neuen temporären Ordner.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="577"/>
+        <location filename="../gui/MainWindow.cpp" line="581"/>
         <source>Save and Run...</source>
         <translation>Speichern und berechnen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="578"/>
+        <location filename="../gui/MainWindow.cpp" line="582"/>
         <source>Run in a Temporary Folder</source>
         <translation>In temporärem Ordner berechnen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="586"/>
+        <location filename="../gui/MainWindow.cpp" line="590"/>
         <source>No folder for the results: %1</source>
         <translation>Kein Ordner für die Ergebnisse: %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="592"/>
+        <location filename="../gui/MainWindow.cpp" line="596"/>
         <source>The model is not saved: its results go to the new folder %1 (File ▸ Save As keeps the model; its next run writes beside it).</source>
         <translation>Das Modell ist nicht gespeichert: seine Ergebnisse kommen in den neuen Ordner %1 (Datei ▸ Speichern unter behält das Modell; seine nächste Berechnung schreibt daneben).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/MainWindow.cpp" line="624"/>
+        <location filename="../gui/MainWindow.cpp" line="628"/>
         <source>Run started: %n step(s); results in %1</source>
         <translation>
-            <numerusform>Berechnung gestartet: %n Zeitschritt; Ergebnisse in %1</numerusform>
-            <numerusform>Berechnung gestartet: %n Zeitschritte; Ergebnisse in %1</numerusform>
+            <numerusform>Berechnung gestartet: %n Schritt; Ergebnisse in %1</numerusform>
+            <numerusform>Berechnung gestartet: %n Schritte; Ergebnisse in %1</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="660"/>
+        <location filename="../gui/MainWindow.cpp" line="664"/>
         <source>Run resumed.</source>
         <translation>Berechnung fortgesetzt.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="660"/>
+        <location filename="../gui/MainWindow.cpp" line="664"/>
         <source>Run paused.</source>
         <translation>Berechnung unterbrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="607"/>
+        <location filename="../gui/MainWindow.cpp" line="611"/>
         <source>Stopping the run...</source>
         <translation>Berechnung wird abgebrochen...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="688"/>
+        <location filename="../gui/MainWindow.cpp" line="692"/>
         <source>Strength reduction completed: %1.</source>
         <translation>Festigkeitsreduktion abgeschlossen: %1.</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="696"/>
+        <location filename="../gui/MainWindow.cpp" line="700"/>
         <source>Results in %1</source>
         <translation>Ergebnisse in %1</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="715"/>
+        <location filename="../gui/MainWindow.cpp" line="719"/>
         <source>Collapse</source>
         <translation>Kollaps</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="715"/>
+        <location filename="../gui/MainWindow.cpp" line="719"/>
         <source>Run failed</source>
         <translation>Berechnung fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="716"/>
+        <location filename="../gui/MainWindow.cpp" line="720"/>
         <source>The results up to the last accepted step are kept in %1.</source>
-        <translation>Die Ergebnisse bis zum letzten angenommenen Zeitschritt bleiben in %1 erhalten.</translation>
+        <translation>Die Ergebnisse bis zum letzten angenommenen Schritt bleiben in %1 erhalten.</translation>
     </message>
     <message>
         <location filename="../gui/MainWindow.cpp" line="148"/>
@@ -2266,12 +2502,12 @@
         <translation>%1 wird gelesen und vernetzt...</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="508"/>
+        <location filename="../gui/MainWindow.cpp" line="512"/>
         <source>Model not usable</source>
         <translation>Modell nicht verwendbar</translation>
     </message>
     <message>
-        <location filename="../gui/MainWindow.cpp" line="509"/>
+        <location filename="../gui/MainWindow.cpp" line="513"/>
         <source>%1 could not be pre-processed.</source>
         <translation>%1 konnte nicht vorverarbeitet werden.</translation>
     </message>
@@ -2628,43 +2864,43 @@
 <context>
     <name>mcdda::gui::ModelTree</name>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="36"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="42"/>
         <source>pressure %1 MPa</source>
         <translation>Druck %1 MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="37"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="43"/>
         <source>pressure %1 kPa</source>
         <translation>Druck %1 kPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="66"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="72"/>
         <source>Item</source>
         <translation>Eintrag</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="66"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="72"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="97"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="103"/>
         <source>Regions</source>
         <translation>Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="102"/>
-        <location filename="../gui/widgets/ModelTree.cpp" line="119"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="108"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="125"/>
         <source>no material</source>
         <translation>kein Material</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="103"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="109"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="104"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="110"/>
         <source>%1, %n vertices</source>
         <translation>
             <numerusform>%1, %n Eckpunkt</numerusform>
@@ -2672,12 +2908,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="113"/>
         <source>hole %1</source>
         <translation>Loch %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="107"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="113"/>
         <source>%n vertices</source>
         <translation>
             <numerusform>%n Eckpunkt</numerusform>
@@ -2685,17 +2921,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="114"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="120"/>
         <source>Blocks</source>
         <translation>Blöcke</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="122"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
         <source>block %1</source>
         <translation>Block %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="123"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="129"/>
         <source>%1, %2 m², %n elements</source>
         <translation>
             <numerusform>%1, %2 m², %n Element</numerusform>
@@ -2703,77 +2939,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="127"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="133"/>
         <source>Joints</source>
         <translation>Klüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="128"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="134"/>
         <source>Explicit</source>
         <translation>Einzelklüfte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="132"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="138"/>
         <source>spacing %1 m</source>
         <translation>Abstand %1 m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="134"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="140"/>
         <source>, persistence %1 %, joints %2 m long</source>
         <translation>, Durchtrennungsgrad %1 %, Klüfte %2 m lang</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="135"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="141"/>
         <source>Set %1</source>
         <translation>Kluftschar %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="144"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="150"/>
         <source>%1 to %2</source>
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="145"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="151"/>
         <source>joint %1</source>
         <translation>Kluft %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="150"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="156"/>
         <source>Materials</source>
         <translation>Materialien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="151"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="157"/>
         <source>rock/soil</source>
         <translation>Fels/Boden</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="152"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="158"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="153"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="159"/>
         <source>Supports</source>
         <translation>Auflager</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="155"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="161"/>
         <source>fixed point %1</source>
         <translation>Festpunkt %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="159"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="165"/>
         <source>roller %1 to %2</source>
         <translation>Rollenlager %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="164"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
         <source>Earthquake</source>
         <translation>Erdbeben</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="166"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="172"/>
         <source>record of %n point(s)</source>
         <translation>
             <numerusform>Aufzeichnung mit %n Punkt</numerusform>
@@ -2781,91 +3017,91 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="167"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="173"/>
         <source>record %1</source>
         <translation>Aufzeichnung %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="168"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
         <source>rigid base</source>
         <translation>starre Basis</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="168"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
         <source>every support moves</source>
         <translation>alle Lager bewegen sich</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
-        <location filename="../gui/widgets/ModelTree.cpp" line="174"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="180"/>
         <source>dashpots %1 to %2</source>
         <translation>Dämpfer %1 bis %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="170"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="176"/>
         <source>compliant base</source>
         <translation>nachgiebige Basis</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="177"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="183"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="179"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="185"/>
         <source>point load at %1</source>
         <translation>Punktlast bei %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="185"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="191"/>
         <source>Measurement points</source>
         <translation>Messpunkte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="190"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="196"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="192"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="198"/>
         <source>%1 to %2, EA %3 MN/m</source>
         <translation>%1 bis %2, EA %3 MN/m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="196"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="202"/>
         <source>Stages</source>
         <translation>Bauphasen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="210"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="216"/>
         <source>%n step(s)</source>
         <translation>
-            <numerusform>%n Zeitschritt</numerusform>
-            <numerusform>%n Zeitschritte</numerusform>
+            <numerusform>%n Schritt</numerusform>
+            <numerusform>%n Schritte</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="211"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="217"/>
         <source>excavates %1</source>
-        <translation>bricht %1 aus</translation>
+        <translation>Aushub: %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="212"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="218"/>
         <source>builds %1</source>
-        <translation>baut %1 ein</translation>
+        <translation>Einbau von Bereichen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="213"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="219"/>
         <source>installs %1</source>
-        <translation>setzt %1</translation>
+        <translation>Stützmittel einbauen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="214"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="220"/>
         <source>removes %1</source>
-        <translation>entfernt %1</translation>
+        <translation>Stützmittel ausbauen: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ModelTree.cpp" line="215"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="221"/>
         <source>%n material change(s)</source>
         <translation>
             <numerusform>%n Materialänderung</numerusform>
@@ -2873,32 +3109,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="217"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="223"/>
         <source>water table of %1 points</source>
         <translation>Grundwasserspiegel mit %1 Punkten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="218"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="224"/>
         <source>dry</source>
         <translation>trocken</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="219"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="225"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="224"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="230"/>
         <source>Ground water</source>
         <translation>Grundwasser</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="225"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="231"/>
         <source>water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ModelTree.cpp" line="226"/>
+        <location filename="../gui/widgets/ModelTree.cpp" line="232"/>
         <source>%1 points, γw %2 kN/m³</source>
         <translation>%1 Punkte, γw %2 kN/m³</translation>
     </message>
@@ -2906,337 +3142,327 @@
 <context>
     <name>mcdda::gui::PropertyEditor</name>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="86"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="130"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="132"/>
         <source>Material</source>
         <translation>Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="87"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="179"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="89"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
         <source>Joint material</source>
         <translation>Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="88"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="90"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="89"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="91"/>
         <source>In-situ stress</source>
         <translation>Primärspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="92"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="94"/>
         <source>Loads</source>
         <translation>Lasten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="94"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="96"/>
         <source>Bolts</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="97"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="99"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="114"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="131"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="133"/>
         <source>The material shown below; Assign to Selection gives it to the selected region</source>
         <translation>Das unten gezeigte Material; „Auswahl zuweisen“ gibt es dem gewählten Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="132"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="181"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="134"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="183"/>
         <source>New</source>
         <translation>Neu</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="134"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
         <source>Add a material (a copy of the one shown)</source>
         <translation>Ein Material hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="136"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="477"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="479"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="138"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="492"/>
         <source>Assign to Selection</source>
         <translation>Der Auswahl zuweisen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="138"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="140"/>
         <source>The region selected in the view or the Model tree is made of this material</source>
         <translation>Der in der Ansicht oder im Modellbaum gewählte Bereich erhält dieses Material</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="143"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="192"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="145"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="194"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="144"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="146"/>
         <source>Name of the material, as the tree and the legend show it</source>
         <translation>Name des Materials, wie ihn Baum und Legende zeigen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="154"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="156"/>
         <source>Whether a strength reduction divides this material&apos;s strength; off for a footing or a lining that must not fail in the search</source>
         <translation>Ob eine Festigkeitsreduktion die Festigkeit dieses Materials teilt; aus für ein Fundament oder eine Auskleidung, die bei der Suche nicht versagen darf</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="285"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="227"/>
+        <source>Number of load steps (a static analysis) or time steps (a dynamic one); the loads follow their tables over the steps</source>
+        <translation>Anzahl der Lastschritte (statische Berechnung) oder Zeitschritte (dynamische); die Lasten folgen über die Schritte ihren Tabellen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="290"/>
         <location filename="../gui/panels/PropertyEditor.cpp" line="293"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="301"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="151"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="196"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="153"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="198"/>
         <source>Reduced in a strength reduction</source>
         <translation>In der Festigkeitsreduktion abgemindert</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="155"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="200"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="251"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="303"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="157"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="202"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="260"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="311"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="180"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="182"/>
         <source>The joint material shown below; Assign to Selection gives it to the selected joint</source>
         <translation>Das unten gezeigte Kluftmaterial; „Auswahl zuweisen“ gibt es der gewählten Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="183"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="185"/>
         <source>Add a joint material (a copy of the one shown)</source>
         <translation>Ein Kluftmaterial hinzufügen (eine Kopie des angezeigten)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="187"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="189"/>
         <source>The joint selected in the view or the Model tree gets this joint material</source>
         <translation>Die in der Ansicht oder im Modellbaum gewählte Kluft erhält dieses Kluftmaterial</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="193"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="195"/>
         <source>Name of the joint material</source>
         <translation>Name des Kluftmaterials</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="199"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="201"/>
         <source>Whether a strength reduction divides this joint material&apos;s cohesion, tan φj and tensile strength</source>
         <translation>Ob eine Festigkeitsreduktion Kohäsion, tan φj und Zugfestigkeit dieses Kluftmaterials teilt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="218"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="274"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="220"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="282"/>
         <source>Type</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="224"/>
-        <source>Steps [–]</source>
-        <translation>Zeitschritte [–]</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="225"/>
-        <source>Number of time steps; the loads follow their tables over the time they cover</source>
-        <translation>Anzahl der Zeitschritte; die Lasten folgen ihren Tabellen über die abgedeckte Zeit</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="232"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
         <source> steps</source>
-        <translation> Zeitschritte</translation>
+        <translation> Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="233"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="236"/>
         <source>Save every</source>
         <translation>Speichern alle</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="234"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="237"/>
         <source>Every how many steps the results are written (the last step always is)</source>
         <translation>Alle wie viele Schritte die Ergebnisse geschrieben werden (der letzte Schritt immer)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="235"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
         <source>Plasticity</source>
         <translation>Plastizität</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="238"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
         <source>Off: every material stays elastic (a quick elastic check of a plastic model)</source>
         <translation>Aus: jedes Material bleibt elastisch (eine schnelle elastische Kontrolle eines plastischen Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="241"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
         <source>Davis (associated, strength lowered)</source>
         <translation>Davis (assoziiert, Festigkeit abgemindert)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="243"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="246"/>
         <source>Direct (ψ as given)</source>
         <translation>Direkt (ψ wie angegeben)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="244"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="247"/>
         <source>Non-associated flow</source>
         <translation>Nicht-assoziiertes Fließen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="245"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="248"/>
         <source>Strength reduction of materials whose dilation angle is below their friction angle. Davis: each trial&apos;s reduced c and tan φ are lowered by β = cos ψ cos φ / (1 − sin ψ sin φ) and solved with associated flow: a factor that converges with the mesh. Direct: ψ as given; the non-associated law has no unique limit load and its factor may depend on the mesh and the iteration where much of the ground yields</source>
         <translation>Festigkeitsreduktion von Materialien, deren Dilatanzwinkel unter dem Reibungswinkel liegt. Davis: die abgeminderten c und tan φ jedes Versuchs werden nochmals mit β = cos ψ cos φ / (1 − sin ψ sin φ) abgemindert und mit assoziiertem Fließen gerechnet: ein Faktor, der mit dem Netz konvergiert. Direkt: ψ wie angegeben; das nicht-assoziierte Gesetz hat keine eindeutige Traglast, und sein Faktor kann vom Netz und von der Iteration abhängen, wo ein großer Teil des Bodens plastifiziert</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="270"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="278"/>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="271"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="279"/>
         <source>Uniform</source>
         <translation>Gleichförmig</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="272"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
         <source>From gravity</source>
         <translation>Aus Eigengewicht</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="275"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
         <source>In-situ stress before the first step: none, uniform (the values below) or from gravity (overburden and K0)</source>
         <translation>Primärspannung vor dem ersten Schritt: keine, gleichförmig (die Werte unten) oder aus der Schwerkraft (Überlagerung und K0)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="276"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
         <source>Stresses: compression positive.</source>
         <translation>Spannungen: Druck positiv.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="280"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
         <source>σxx</source>
         <translation>σxx</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="281"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="289"/>
         <source>Horizontal in-situ stress, compression positive</source>
         <translation>Horizontale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="283"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="291"/>
         <source>σyy</source>
         <translation>σyy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="284"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="292"/>
         <source>Vertical in-situ stress, compression positive</source>
         <translation>Vertikale Primärspannung, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="286"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="294"/>
         <source>τxy</source>
         <translation>τxy</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="287"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="295"/>
         <source>In-situ shear stress</source>
         <translation>Primäre Schubspannung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="288"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="296"/>
         <source>σzz given (else ν(σxx + σyy))</source>
         <translation>σzz vorgegeben (sonst ν(σxx + σyy))</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="292"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="300"/>
         <source>Give the out-of-plane stress σzz yourself; else it follows from plane strain, ν(σxx + σyy)</source>
         <translation>Die Spannung σzz senkrecht zur Ebene selbst angeben; sonst folgt sie aus dem ebenen Verzerrungszustand, ν(σxx + σyy)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="294"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="302"/>
         <source>σzz</source>
         <translation>σzz</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="295"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="303"/>
         <source>Out-of-plane in-situ stress, compression positive</source>
         <translation>Primärspannung senkrecht zur Ebene, Druck positiv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="296"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="304"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="297"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="305"/>
         <source>Ground surface y</source>
         <translation>Geländeoberfläche y</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="298"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="306"/>
         <source>Height of the ground surface: the overburden of a point is the rock above it up to here</source>
         <translation>Höhe der Geländeoberfläche: die Überlagerung eines Punktes ist das Gestein darüber bis hierher</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="301"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="309"/>
         <source>K0 = σh/σv [–]</source>
         <translation>K0 = σh/σv [–]</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="302"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="310"/>
         <source>Ratio of horizontal to vertical in-situ stress, ≥ 0</source>
         <translation>Verhältnis von horizontaler zu vertikaler Primärspannung, ≥ 0</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="334"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="339"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="344"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="349"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="477"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="479"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="490"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="492"/>
         <source>Assign to %1</source>
         <translation>Zuweisen an %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="498"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="515"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="511"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="528"/>
         <source>Added &quot;%1&quot;.</source>
         <translation>„%1“ hinzugefügt.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="526"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="536"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="539"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="549"/>
         <source>Assigned to %1.</source>
         <translation>Zugewiesen an %1.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="556"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="579"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="603"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="630"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="569"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="592"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="617"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="644"/>
         <source>Not applied: %1</source>
         <translation>Nicht übernommen: %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="560"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="583"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="607"/>
-        <location filename="../gui/panels/PropertyEditor.cpp" line="634"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="573"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="596"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="621"/>
+        <location filename="../gui/panels/PropertyEditor.cpp" line="648"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
@@ -3253,52 +3479,52 @@
 <context>
     <name>mcdda::gui::QueryPlot</name>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="96"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="97"/>
         <source>Draw a line with Edit ▸ Query Line to plot the field shown along it.</source>
         <translation>Mit Bearbeiten ▸ Abfragelinie eine Linie zeichnen, um das gezeigte Feld entlang der Linie darzustellen.</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="31"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="32"/>
         <source>Export CSV...</source>
         <translation>CSV exportieren...</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="33"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="34"/>
         <source>Save distance, x, y and value of the points on the mesh as CSV</source>
         <translation>Abstand, x, y und Wert der Punkte auf dem Netz als CSV speichern</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="36"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="37"/>
         <source>Export query line</source>
         <translation>Abfragelinie exportieren</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="37"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="38"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="39"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="40"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="45"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="46"/>
         <source>distance along the line (m)</source>
         <translation>Abstand entlang der Linie (m)</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="150"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="151"/>
         <source>Query line from (%1, %2) to (%3, %4) m</source>
         <translation>Abfragelinie von (%1, %2) bis (%3, %4) m</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="155"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="156"/>
         <source>The picture shows no result: run the model or choose a saved step.</source>
         <translation>Das Bild zeigt kein Ergebnis: das Modell berechnen oder einen gespeicherten Schritt wählen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/results/QueryPlot.cpp" line="157"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="158"/>
         <source>%1 from (%2, %3) to (%4, %5) m: %n point(s) on the mesh</source>
         <translation>
             <numerusform>%1 von (%2, %3) bis (%4, %5) m: %n Punkt auf dem Netz</numerusform>
@@ -3306,7 +3532,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="166"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="167"/>
         <source>The line does not cross the mesh.</source>
         <translation>Die Linie kreuzt das Netz nicht.</translation>
     </message>
@@ -3651,7 +3877,7 @@
     <message>
         <location filename="../gui/widgets/RunMenu.cpp" line="29"/>
         <source>Stop the run after the current step; the results so far are kept</source>
-        <translation>Die Berechnung nach dem aktuellen Zeitschritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
+        <translation>Die Berechnung nach dem aktuellen Schritt abbrechen; die bisherigen Ergebnisse bleiben erhalten</translation>
     </message>
     <message>
         <location filename="../gui/widgets/RunMenu.cpp" line="32"/>
@@ -3677,52 +3903,57 @@
 <context>
     <name>mcdda::gui::RunMessages</name>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="26"/>
+        <location filename="../gui/session/RunMessages.cpp" line="27"/>
         <source>Model: %1</source>
         <translation>Modell: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="30"/>
+        <location filename="../gui/session/RunMessages.cpp" line="31"/>
         <source>Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms</source>
         <translation>Zeiten: gelesen %1 ms, geprüft %2 ms, zerlegt %3 ms, vernetzt %4 ms</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="47"/>
+        <location filename="../gui/session/RunMessages.cpp" line="48"/>
         <source>%1 blocks, %2 nodes, %3 triangles</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Dreiecke</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="52"/>
+        <location filename="../gui/session/RunMessages.cpp" line="53"/>
         <source>angles: smallest %1°, largest %2°</source>
         <translation>Winkel: kleinster %1°, größter %2°</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="55"/>
+        <location filename="../gui/session/RunMessages.cpp" line="56"/>
         <source>areas: smallest %1 m², largest %2 m², total %3 m²</source>
         <translation>Flächen: kleinste %1 m², größte %2 m², gesamt %3 m²</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="58"/>
+        <location filename="../gui/session/RunMessages.cpp" line="59"/>
         <source>sharpest block corner: %1°</source>
         <translation>spitzeste Blockecke: %1°</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="60"/>
+        <location filename="../gui/session/RunMessages.cpp" line="61"/>
         <source>triangles by smallest angle: %1</source>
         <translation>Dreiecke nach kleinstem Winkel: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="72"/>
+        <location filename="../gui/session/RunMessages.cpp" line="73"/>
         <source>Permanent displacement (relative to the base): largest %1 mm at (%2, %3)</source>
         <translation>Bleibende Verschiebung (relativ zur Basis): größte %1 mm bei (%2, %3)</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="78"/>
+        <location filename="../gui/session/RunMessages.cpp" line="79"/>
         <source>; %1: ux %2 mm, uy %3 mm</source>
         <translation>; %1: ux %2 mm, uy %3 mm</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location filename="../gui/session/RunMessages.cpp" line="88"/>
+        <source>Draw a region to start</source>
+        <translation>Zuerst einen Bereich zeichnen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../gui/session/RunMessages.cpp" line="90"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -3730,17 +3961,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="91"/>
+        <location filename="../gui/session/RunMessages.cpp" line="93"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="104"/>
+        <location filename="../gui/session/RunMessages.cpp" line="106"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="113"/>
+        <location filename="../gui/session/RunMessages.cpp" line="115"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -3748,25 +3979,30 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="119"/>
+        <location filename="../gui/session/RunMessages.cpp" line="122"/>
+        <source>load step %1/%2  contacts open/sliding/locked %3/%4/%5  plastic iterations %6  yielding %7</source>
+        <translation>Lastschritt %1/%2  Kontakte offen/gleitend/haftend %3/%4/%5  plastische Iterationen %6  plastifizierend %7</translation>
+    </message>
+    <message>
+        <location filename="../gui/session/RunMessages.cpp" line="131"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="134"/>
+        <location filename="../gui/session/RunMessages.cpp" line="146"/>
         <source>Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding</source>
         <translation>
-            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkt plastifiziert</numerusform>
-            <numerusform>Zeitschritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkte plastifiziert</numerusform>
+            <numerusform>Schritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkt plastifiziert</numerusform>
+            <numerusform>Schritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkte plastifiziert</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="145"/>
+        <location filename="../gui/session/RunMessages.cpp" line="157"/>
         <source>Strength reduction: trial %1, strengths divided by %2...</source>
         <translation>Festigkeitsreduktion: Versuch %1, Festigkeiten geteilt durch %2 …</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="152"/>
+        <location filename="../gui/session/RunMessages.cpp" line="164"/>
         <source>largest displacement %1 m, %n iteration(s), %2 s</source>
         <translation>
             <numerusform>größte Verschiebung %1 m, %n Iteration, %2 s</numerusform>
@@ -3774,37 +4010,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="158"/>
+        <location filename="../gui/session/RunMessages.cpp" line="170"/>
         <source>Trial %1: F = %2 stands (%3)</source>
         <translation>Versuch %1: F = %2 steht (%3)</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="162"/>
+        <location filename="../gui/session/RunMessages.cpp" line="174"/>
         <source>Trial %1: F = %2 does not stand (%3): %4</source>
         <translation>Versuch %1: F = %2 steht nicht (%3): %4</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="172"/>
+        <location filename="../gui/session/RunMessages.cpp" line="184"/>
         <source>above %1</source>
         <translation>über %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="174"/>
+        <location filename="../gui/session/RunMessages.cpp" line="186"/>
         <source>below %1</source>
         <translation>unter %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="176"/>
+        <location filename="../gui/session/RunMessages.cpp" line="188"/>
         <source>between %1 and %2</source>
         <translation>zwischen %1 und %2</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="179"/>
+        <location filename="../gui/session/RunMessages.cpp" line="191"/>
         <source>not found</source>
         <translation>nicht gefunden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="185"/>
+        <location filename="../gui/session/RunMessages.cpp" line="197"/>
         <source>Factor of safety %1 (%n trial(s)).</source>
         <translation>
             <numerusform>Sicherheitsfaktor %1 (%n Versuch).</numerusform>
@@ -3812,7 +4048,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="187"/>
+        <location filename="../gui/session/RunMessages.cpp" line="199"/>
         <source>Factor of safety %1: the model stands with its strengths divided by %2, not by %3 (%n trial(s)).</source>
         <translation>
             <numerusform>Sicherheitsfaktor %1: das Modell steht mit durch %2 geteilten Festigkeiten, nicht mit durch %3 geteilten (%n Versuch).</numerusform>
@@ -3820,30 +4056,30 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="198"/>
+        <location filename="../gui/session/RunMessages.cpp" line="210"/>
         <source>Run completed: %n step(s).</source>
         <translation>
-            <numerusform>Berechnung abgeschlossen: %n Zeitschritt.</numerusform>
-            <numerusform>Berechnung abgeschlossen: %n Zeitschritte.</numerusform>
+            <numerusform>Berechnung abgeschlossen: %n Schritt.</numerusform>
+            <numerusform>Berechnung abgeschlossen: %n Schritte.</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="203"/>
+        <location filename="../gui/session/RunMessages.cpp" line="215"/>
         <source>Run ended but the model is not in equilibrium: %1</source>
         <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="205"/>
+        <location filename="../gui/session/RunMessages.cpp" line="217"/>
         <source>Run stopped after step %1.</source>
-        <translation>Berechnung nach Zeitschritt %1 abgebrochen.</translation>
+        <translation>Berechnung nach Schritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="206"/>
+        <location filename="../gui/session/RunMessages.cpp" line="218"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="207"/>
+        <location filename="../gui/session/RunMessages.cpp" line="219"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
@@ -3883,287 +4119,292 @@
 <context>
     <name>mcdda::gui::StagesPanel</name>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="59"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="81"/>
         <source>fixed point</source>
         <translation>Festpunkt</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="60"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="82"/>
         <source>roller</source>
         <translation>Rollenlager</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="61"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="83"/>
         <source>point load</source>
         <translation>Einzellast</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="62"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="84"/>
         <source>edge pressure</source>
         <translation>Randdruck</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="63"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="85"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="71"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="93"/>
         <source>line with %1 points</source>
         <translation>Linie mit %1 Punkten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="72"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="94"/>
         <source>dry</source>
         <translation>trocken</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="95"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="117"/>
         <source>Choose a stage to see the model as it stands in it; the first row shows every region</source>
         <translation>Eine Bauphase wählen, um das Modell so zu sehen, wie es in ihr steht; die erste Zeile zeigt alle Bereiche</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="96"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="119"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="98"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="121"/>
         <source>Add a stage at the end (10 steps, the model&apos;s analysis settings)</source>
         <translation>Eine Bauphase am Ende hinzufügen (10 Schritte, die Berechnungseinstellungen des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="99"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="122"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="101"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="124"/>
         <source>Up</source>
         <translation>Nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="103"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="126"/>
         <source>Down</source>
         <translation>Nach unten</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="107"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="130"/>
         <source>Name of the stage (results, tree, messages)</source>
         <translation>Name der Bauphase (Ergebnisse, Baum, Meldungen)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="109"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="132"/>
         <source>Regions removed at the start of the stage (an excavation)</source>
         <translation>Bereiche, die zu Beginn der Bauphase entfernt werden (ein Ausbruch)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="111"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="134"/>
         <source>Regions added at the start of the stage (backfill, a liner); absent before</source>
         <translation>Bereiche, die zu Beginn der Bauphase hinzukommen (Verfüllung, Ausbau); vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="113"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="136"/>
         <source>Supports, loads and bolts added at the start of the stage; absent before</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase hinzukommen; vorher nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="115"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="138"/>
         <source>Supports, loads and bolts taken away at the start of the stage</source>
         <translation>Lager, Lasten und Anker, die zu Beginn der Bauphase entfernt werden</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="117"/>
-        <source>Number of load steps of the stage</source>
-        <translation>Anzahl der Laststufen der Bauphase</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="118"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="141"/>
         <source>over all steps</source>
         <translation>über alle Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="119"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="142"/>
         <source> steps</source>
         <translation> Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="120"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="143"/>
         <source>Over how many steps the forces the stage leaves out of balance (an excavation&apos;s) are released, linearly; fewer steps release them faster</source>
         <translation>Über wie viele Schritte die Ungleichgewichtskräfte der Bauphase (etwa eines Ausbruchs) linear freigesetzt werden; weniger Schritte setzen sie schneller frei</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="125"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="148"/>
         <source>The ground water in the stage: the piezometric line drawn blue in the picture</source>
         <translation>Das Grundwasser in der Bauphase: die im Bild blau gezeichnete Piezometerlinie</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="126"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="149"/>
         <source>Draw...</source>
         <translation>Zeichnen...</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="128"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="151"/>
         <source>Draw the water table of this stage with the Water Table tool: click its points from left to right, double-click or Enter finishes</source>
         <translation>Den Grundwasserspiegel dieser Bauphase mit dem Werkzeug Grundwasserspiegel zeichnen: seine Punkte von links nach rechts anklicken, Doppelklick oder Eingabetaste beendet</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="130"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="153"/>
         <source>Dry</source>
         <translation>Trocken</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="132"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="155"/>
         <source>No ground water from this stage on (dewatered)</source>
         <translation>Kein Grundwasser ab dieser Bauphase (entwässert)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="133"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="156"/>
         <source>As Before</source>
         <translation>Wie davor</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="135"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="158"/>
         <source>The stage keeps the water of the stage before (the model&apos;s for the first stage)</source>
         <translation>Die Bauphase behält das Grundwasser der Bauphase davor (bei der ersten das des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="136"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
         <source>Apply</source>
         <translation>Übernehmen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="147"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="179"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="148"/>
-        <source>Excavates</source>
-        <translation>Bricht aus</translation>
+        <location filename="../gui/panels/StagesPanel.cpp" line="140"/>
+        <source>Number of load steps of the stage (time steps in a dynamic stage)</source>
+        <translation>Anzahl der Lastschritte der Bauphase (Zeitschritte in einer dynamischen)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="149"/>
-        <source>Builds</source>
-        <translation>Baut ein</translation>
+        <location filename="../gui/panels/StagesPanel.cpp" line="159"/>
+        <source>Reset displacements at its start</source>
+        <translation>Verschiebungen zu Beginn zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="150"/>
-        <source>Installs</source>
-        <translation>Baut ein</translation>
+        <location filename="../gui/panels/StagesPanel.cpp" line="161"/>
+        <source>Displacements are reported from the start of this stage, as RS2 and PLAXIS reset them: the settlement under gravity in the stage before no longer shows. Stresses and the shape stay. Ticked by itself for the stage after the first when the model has gravity</source>
+        <translation>Verschiebungen werden ab Beginn dieser Bauphase angegeben, wie RS2 und PLAXIS sie zurücksetzen: die Setzung unter Eigengewicht in der Phase davor ist nicht mehr zu sehen. Spannungen und Form bleiben. Für die Phase nach der ersten von selbst angekreuzt, wenn das Modell Schwerkraft hat</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="151"/>
-        <source>Removes</source>
-        <translation>Baut aus</translation>
+        <location filename="../gui/panels/StagesPanel.cpp" line="180"/>
+        <source>Excavate regions</source>
+        <translation>Aushub von Bereichen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="152"/>
-        <source>Steps</source>
-        <translation>Schritte</translation>
+        <location filename="../gui/panels/StagesPanel.cpp" line="181"/>
+        <source>Build regions (fill, liner)</source>
+        <translation>Einbau von Bereichen (Verfüllung, Schale)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="153"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="182"/>
+        <source>Install supports, loads, bolts</source>
+        <translation>Stützmittel, Lasten, Anker einbauen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="183"/>
+        <source>Remove supports, loads, bolts</source>
+        <translation>Stützmittel, Lasten, Anker ausbauen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/StagesPanel.cpp" line="185"/>
         <source>Release</source>
         <translation>Freisetzung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="156"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="189"/>
         <source>Ground water</source>
         <translation>Grundwasser</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="162"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="195"/>
         <source>Own (else as the stage before)</source>
         <translation>Eigener (sonst wie die Bauphase davor)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="164"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="197"/>
         <source>The stage sets its own seismic coefficient (e.g. a pseudo-static earthquake stage); cleared, it keeps the stage before&apos;s (the model&apos;s for the first stage)</source>
         <translation>Die Bauphase setzt ihren eigenen Erdbebenbeiwert (z. B. eine pseudostatische Erdbebenphase); ohne Haken gilt der Beiwert der Bauphase davor (für die erste Bauphase der des Modells)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="168"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="201"/>
         <source>Horizontal seismic coefficient: every block carries kh·g per unit mass, towards +x for kh &gt; 0</source>
         <translation>Horizontaler Erdbebenbeiwert: jeder Block erhält kh·g je Masseneinheit, für kh &gt; 0 in +x-Richtung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="171"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="204"/>
         <source>Vertical seismic coefficient: kv·g per unit mass, upwards for kv &gt; 0</source>
         <translation>Vertikaler Erdbebenbeiwert: kv·g je Masseneinheit, für kv &gt; 0 nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="172"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="205"/>
         <source>Seismic coefficient</source>
         <translation>Erdbebenbeiwert</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="174"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="207"/>
         <source>kh</source>
         <translation>kh</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="176"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="209"/>
         <source>kv</source>
         <translation>kv</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="180"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="213"/>
         <source>Analysis</source>
         <translation>Berechnung</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="222"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="281"/>
         <source>Model as drawn (every region)</source>
         <translation>Modell wie gezeichnet (alle Bereiche)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="224"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="283"/>
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="227"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="286"/>
         <source>No stages: the model is analysed in one go. Add one to excavate or build regions step by step.</source>
         <translation>Keine Bauphasen: das Modell wird in einem Zug berechnet. Eine hinzufügen, um Bereiche schrittweise auszubrechen oder einzubauen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="249"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="309"/>
         <source>region %1</source>
         <translation>Bereich %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="263"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="323"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="311"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="375"/>
         <source>as the stage before (%1)</source>
         <translation>wie in der Bauphase davor (%1)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="362"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="435"/>
         <source>Edit stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ ändern</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="369"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="442"/>
         <source>stage %1</source>
         <translation>Bauphase %1</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="373"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="450"/>
         <source>Add stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ hinzufügen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="384"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="461"/>
         <source>Remove stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ entfernen</translation>
     </message>
     <message>
-        <location filename="../gui/panels/StagesPanel.cpp" line="393"/>
+        <location filename="../gui/panels/StagesPanel.cpp" line="470"/>
         <source>Move stage &quot;%1&quot;</source>
         <translation>Bauphase „%1“ verschieben</translation>
     </message>
@@ -4171,29 +4412,39 @@
 <context>
     <name>mcdda::gui::StepSlider</name>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="15"/>
+        <location filename="../gui/results/StepSlider.cpp" line="16"/>
         <source>Saved step shown</source>
-        <translation>Angezeigter gespeicherter Zeitschritt</translation>
+        <translation>Angezeigter gespeicherter Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="23"/>
+        <location filename="../gui/results/StepSlider.cpp" line="24"/>
         <source>Step:</source>
-        <translation>Zeitschritt:</translation>
+        <translation>Schritt:</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="69"/>
+        <location filename="../gui/results/StepSlider.cpp" line="70"/>
         <source>no saved steps</source>
-        <translation>keine gespeicherten Zeitschritte</translation>
+        <translation>keine gespeicherten Schritte</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="77"/>
+        <location filename="../gui/results/StepSlider.cpp" line="79"/>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/StepSlider.cpp" line="80"/>
+        <source>load step %1 (%2)</source>
+        <translation>Lastschritt %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../gui/results/StepSlider.cpp" line="83"/>
         <source>%1 of %2, t = %3 s</source>
         <translation>%1 von %2, t = %3 s</translation>
     </message>
     <message>
-        <location filename="../gui/results/StepSlider.cpp" line="78"/>
+        <location filename="../gui/results/StepSlider.cpp" line="84"/>
         <source>step %1 (%2)</source>
-        <translation>Zeitschritt %1 (%2)</translation>
+        <translation>Schritt %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -4320,12 +4571,12 @@
 <context>
     <name>mcdda::gui::WindowStatusBar</name>
     <message>
-        <location filename="../gui/widgets/WindowStatusBar.cpp" line="41"/>
+        <location filename="../gui/widgets/WindowStatusBar.cpp" line="42"/>
         <source>x = %1 m   y = %2 m</source>
         <translation>x = %1 m   y = %2 m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/WindowStatusBar.cpp" line="67"/>
+        <location filename="../gui/widgets/WindowStatusBar.cpp" line="68"/>
         <source>Factor of safety %1</source>
         <translation>Sicherheitsfaktor %1</translation>
     </message>
@@ -4333,236 +4584,236 @@
 <context>
     <name>mcdda::gui::form</name>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="55"/>
+        <location filename="../gui/panels/FormFields.cpp" line="57"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="122"/>
-        <source>kN/m³</source>
-        <translation>kN/m³</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="123"/>
-        <source>°</source>
-        <translation>°</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="124"/>
-        <source>MN/m</source>
-        <translation>MN/m</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="125"/>
-        <source>kN/m</source>
-        <translation>kN/m</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="126"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="127"/>
-        <source>Hz</source>
-        <translation>Hz</translation>
-    </message>
-    <message>
-        <location filename="../gui/panels/FormFields.cpp" line="203"/>
+        <location filename="../gui/panels/FormFields.cpp" line="243"/>
         <source>Static</source>
         <translation>Statisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="204"/>
+        <location filename="../gui/panels/FormFields.cpp" line="244"/>
         <source>Dynamic</source>
         <translation>Dynamisch</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="205"/>
+        <location filename="../gui/panels/FormFields.cpp" line="245"/>
         <source>Strength reduction</source>
         <translation>Festigkeitsreduktion</translation>
     </message>
     <message>
-        <location filename="../gui/panels/FormFields.cpp" line="206"/>
+        <location filename="../gui/panels/FormFields.cpp" line="246"/>
         <source>Static: each step ends at rest (velocities reset), for equilibrium and collapse loads. Dynamic: velocities carry over, for falls and sliding. Strength reduction: the factor of safety, the largest factor c and tan φ can be divided by while the model still stands (of the whole model, or as the last stage: a safety stage starting from the stresses of the stages before)</source>
         <translation>Statisch: jeder Schritt endet in Ruhe (Geschwindigkeiten zurückgesetzt), für Gleichgewicht und Traglasten. Dynamisch: Geschwindigkeiten bleiben erhalten, für Fallen und Gleiten. Festigkeitsreduktion: der Sicherheitsfaktor, der größte Faktor, durch den c und tan φ geteilt werden können, während das Modell noch steht (des ganzen Modells oder als letzte Bauphase: eine Sicherheitsphase, die von den Spannungen der Bauphasen davor ausgeht)</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/AdvancedSettings.cpp" line="54"/>
+        <source>Advanced</source>
+        <translation>Erweitert</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/AdvancedSettings.cpp" line="60"/>
+        <source>The numerical settings of the DDA solver (time step, contact penalty, dynamic ratio, largest displacement per step, tolerances); their defaults suit most models</source>
+        <translation>Die numerischen Einstellungen des DDA-Lösers (Zeitschritt, Kontaktsteifigkeit, dynamischer Faktor, größte Verschiebung je Schritt, Toleranzen); ihre Vorgaben passen für die meisten Modelle</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/AdvancedSettings.cpp" line="92"/>
+        <source>Default %1. %2.</source>
+        <translation>Vorgabe %1. %2.</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/AdvancedSettings.cpp" line="104"/>
+        <source>Time steps</source>
+        <translation>Zeitschritte</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/AdvancedSettings.cpp" line="104"/>
+        <source>Load steps</source>
+        <translation>Lastschritte</translation>
     </message>
 </context>
 <context>
     <name>mcdda::view</name>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="53"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="54"/>
         <location filename="../gui/view/ResultProbe.cpp" line="37"/>
-        <location filename="../gui/view/ResultScene.cpp" line="62"/>
+        <location filename="../gui/view/ResultScene.cpp" line="56"/>
         <source>elastic</source>
         <translation>elastisch</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="54"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="55"/>
         <location filename="../gui/view/ResultProbe.cpp" line="38"/>
-        <location filename="../gui/view/ResultScene.cpp" line="62"/>
+        <location filename="../gui/view/ResultScene.cpp" line="56"/>
         <source>yielded before</source>
         <translation>früher plastifiziert</translation>
     </message>
     <message>
-        <location filename="../gui/results/QueryPlot.cpp" line="55"/>
+        <location filename="../gui/results/QueryPlot.cpp" line="56"/>
         <location filename="../gui/view/ResultProbe.cpp" line="39"/>
-        <location filename="../gui/view/ResultScene.cpp" line="62"/>
+        <location filename="../gui/view/ResultScene.cpp" line="56"/>
         <source>yielding now</source>
         <translation>plastifiziert jetzt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="87"/>
+        <location filename="../gui/view/ResultScene.cpp" line="81"/>
         <source>plastic state</source>
         <translation>plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="88"/>
+        <location filename="../gui/view/ResultScene.cpp" line="82"/>
         <source>plastic strain</source>
         <translation>plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="109"/>
+        <location filename="../gui/view/ResultScene.cpp" line="103"/>
         <source>displacement increment</source>
         <translation>Verschiebungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="111"/>
+        <location filename="../gui/view/ResultScene.cpp" line="105"/>
         <source>plastic strain increment</source>
         <translation>plastisches Dehnungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="89"/>
+        <location filename="../gui/view/ResultScene.cpp" line="83"/>
         <source>displacement</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="90"/>
+        <location filename="../gui/view/ResultScene.cpp" line="84"/>
         <source>x displacement</source>
         <translation>Verschiebung x</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="91"/>
+        <location filename="../gui/view/ResultScene.cpp" line="85"/>
         <source>y displacement</source>
         <translation>Verschiebung y</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="92"/>
+        <location filename="../gui/view/ResultScene.cpp" line="86"/>
         <source>stress xx</source>
         <translation>Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="93"/>
+        <location filename="../gui/view/ResultScene.cpp" line="87"/>
         <source>stress yy</source>
         <translation>Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="94"/>
+        <location filename="../gui/view/ResultScene.cpp" line="88"/>
         <source>shear stress xy</source>
         <translation>Schubspannung xy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="95"/>
+        <location filename="../gui/view/ResultScene.cpp" line="89"/>
         <source>principal stress 1</source>
         <translation>Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="96"/>
+        <location filename="../gui/view/ResultScene.cpp" line="90"/>
         <source>principal stress 3</source>
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1111"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1010"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1112"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1011"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="975"/>
+        <location filename="../gui/view/ResultScene.cpp" line="869"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="99"/>
+        <location filename="../gui/view/ResultScene.cpp" line="93"/>
         <source>pore pressure</source>
         <translation>Porenwasserdruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="100"/>
+        <location filename="../gui/view/ResultScene.cpp" line="94"/>
         <source>effective stress xx</source>
         <translation>effektive Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="101"/>
+        <location filename="../gui/view/ResultScene.cpp" line="95"/>
         <source>effective stress yy</source>
         <translation>effektive Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="103"/>
+        <location filename="../gui/view/ResultScene.cpp" line="97"/>
         <source>effective principal stress 1</source>
         <translation>effektive Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="105"/>
+        <location filename="../gui/view/ResultScene.cpp" line="99"/>
         <source>effective principal stress 3</source>
         <translation>effektive Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="977"/>
+        <location filename="../gui/view/ResultScene.cpp" line="871"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="980"/>
+        <location filename="../gui/view/ResultScene.cpp" line="874"/>
         <source>water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="987"/>
+        <location filename="../gui/view/ResultScene.cpp" line="881"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="990"/>
+        <location filename="../gui/view/ResultScene.cpp" line="884"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="994"/>
+        <location filename="../gui/view/ResultScene.cpp" line="888"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="999"/>
+        <location filename="../gui/view/ResultScene.cpp" line="893"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1023"/>
+        <location filename="../gui/view/ResultScene.cpp" line="917"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1067"/>
+        <location filename="../gui/view/ResultScene.cpp" line="963"/>
         <source>strengths divided by</source>
         <translation>Festigkeiten geteilt durch</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1071"/>
+        <location filename="../gui/view/ResultScene.cpp" line="968"/>
+        <source>load step</source>
+        <translation>Lastschritt</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultScene.cpp" line="969"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1075"/>
+        <location filename="../gui/view/ResultScene.cpp" line="974"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1082"/>
+        <location filename="../gui/view/ResultScene.cpp" line="981"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>

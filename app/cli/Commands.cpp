@@ -130,6 +130,9 @@ int run_render(const Request& r) {
     } catch (const view::ResultFieldError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return exit_model_error;
+    } catch (const view::ResultFileError& e) {  // a result file refused: input, like a model
+        std::cerr << "error: " << e.what() << "\n";
+        return exit_model_error;
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << "\n";
         return exit_output_error;

@@ -37,9 +37,8 @@ BoltForm::BoltForm(ModelDocument* document, QWidget* parent) : QWidget(parent), 
     form->addRow(QString(), apply_);
     status_ = form::status_label(QStringLiteral("boltStatus"), this);
     form->addRow(status_);
-    for (QDoubleSpinBox* box : fields_->boxes())
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) apply(); });
-    connect(name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) apply(); });
+    for (QDoubleSpinBox* box : fields_->boxes()) form::apply_on_enter(box, [this] { if (!loading_) apply(); });
+    form::apply_on_enter(name_, [this] { if (!loading_) apply(); });
     connect(document_, &ModelDocument::changed, this, &BoltForm::refresh);
     refresh();
 }

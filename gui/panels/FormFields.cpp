@@ -8,7 +8,9 @@
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QVariant>
 
@@ -53,6 +55,46 @@ void zero_is_automatic(QDoubleSpinBox* box)
 {
     box->setMinimum(0.0);  // below 0 means nothing: the validator refuses it anyway
     box->setSpecialValueText(QCoreApplication::translate("mcdda::gui::form", "automatic"));
+}
+
+namespace {
+
+/// Sees Enter in a spin box (which has no returnPressed signal): the box handles the key first
+/// (it interprets the text and fixes the value), then the form applies it.
+class EnterFilter : public QObject {
+public:
+    EnterFilter(QWidget* field, std::function<void()> apply) : QObject(field), apply_(std::move(apply))
+    {
+        field->installEventFilter(this);
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() != QEvent::KeyPress || busy_) return false;
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key != Qt::Key_Return && key != Qt::Key_Enter) return false;
+        busy_ = true;
+        watched->event(event);
+        busy_ = false;
+        apply_();
+        return true;
+    }
+
+private:
+    std::function<void()> apply_;
+    bool busy_ = false;
+};
+
+}  // namespace
+
+void apply_on_enter(QWidget* field, std::function<void()> apply)
+{
+    if (auto* line = qobject_cast<QLineEdit*>(field)) {
+        QObject::connect(line, &QLineEdit::returnPressed, line, std::move(apply));
+        return;
+    }
+    new EnterFilter(field, std::move(apply));
 }
 
 QLabel* status_label(const QString& name, QWidget* parent)
@@ -109,22 +151,20 @@ struct FormUnit {
 
 FormUnit form_unit(Quantity quantity)
 {
+    // Units and factors are DisplayUnits' (the messages use the same); ranges and decimals are the form's.
     const DisplayUnits* units = DisplayUnits::instance();
-    auto text = [](const char* unit) { return QCoreApplication::translate("mcdda::gui::form", unit); };
+    const QString unit = units->unitOf(quantity);
+    const double factor = units->factorOf(quantity);
     switch (quantity) {
-    case Quantity::Ratio: return {QString(), 1.0, 10.0, 6};
-    case Quantity::Modulus:
-        return {units->formModulusUnit(), units->formModulusFactor(), 1e15 / units->formModulusFactor(), 3};
-    case Quantity::Stress: {
-        const double factor = units->formStressFactor();
-        return {units->formStressUnit(), factor, 1e12 / factor, factor > 1e3 ? 6 : 3};  // 1 kPa steps in MPa too
-    }
-    case Quantity::Density: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m³")), 1e3 / standard_gravity, 1e4, 3};
-    case Quantity::Angle: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "°")), degree, 360.0, 3};
-    case Quantity::Stiffness: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "MN/m")), 1e6, 1e9, 3};
-    case Quantity::Force: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "kN/m")), 1e3, 1e9, 3};
-    case Quantity::Time: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "s")), 1.0, 1e6, 6};
-    case Quantity::Frequency: return {text(QT_TRANSLATE_NOOP("mcdda::gui::form", "Hz")), 1.0, 1e6, 3};
+    case Quantity::Ratio: return {unit, factor, 10.0, 6};
+    case Quantity::Modulus: return {unit, factor, 1e15 / factor, 3};
+    case Quantity::Stress: return {unit, factor, 1e12 / factor, factor > 1e3 ? 6 : 3};  // 1 kPa steps in MPa too
+    case Quantity::Density: return {unit, factor, 1e4, 3};
+    case Quantity::Angle: return {unit, factor, 360.0, 3};
+    case Quantity::Stiffness: return {unit, factor, 1e9, 3};
+    case Quantity::Force: return {unit, factor, 1e9, 3};
+    case Quantity::Time: return {unit, factor, 1e6, 6};
+    case Quantity::Frequency: return {unit, factor, 1e6, 3};
     }
     return {QString(), 1.0, 1e9, 3};
 }

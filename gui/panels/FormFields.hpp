@@ -7,6 +7,7 @@
 
 #include <QString>
 
+#include <functional>
 #include <string>
 
 class QComboBox;
@@ -48,6 +49,11 @@ void explain(QWidget* field, const QString& text);
 
 /// A number field whose value 0 means "automatic" and reads so (e.g. the contact penalty).
 void zero_is_automatic(QDoubleSpinBox* box);
+
+/// Calls `apply` when Enter (Return) is pressed in `field`, a spin box or a line edit, after the
+/// field has taken the text typed. Typed values are applied on Enter or the form's Apply button
+/// only: leaving a field (clicking elsewhere, Tab) does not apply it behind the user's back.
+void apply_on_enter(QWidget* field, std::function<void()> apply);
 
 /// A word-wrapped, selectable status line under a form.
 QLabel* status_label(const QString& name, QWidget* parent);

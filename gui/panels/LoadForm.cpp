@@ -176,7 +176,7 @@ QWidget* LoadForm::createLoadGroup()
     ld_status_ = status_label(QStringLiteral("loadStatus"), group);
     form->addRow(ld_status_);
     for (QDoubleSpinBox* box : {ld_fx_, ld_fy_, ld_pressure_})
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyLoad(); });
+        form::apply_on_enter(box, [this] { if (!loading_) applyLoad(); });
     return group;
 }
 
@@ -204,7 +204,7 @@ QWidget* LoadForm::createGravityGroup()
     grav_status_ = status_label(QStringLiteral("gravityStatus"), group);
     form->addRow(grav_status_);
     for (QDoubleSpinBox* box : {grav_x_, grav_y_})
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyGravity(); });
+        form::apply_on_enter(box, [this] { if (!loading_) applyGravity(); });
     return group;
 }
 

@@ -90,7 +90,7 @@ MeshForm::MeshForm(ModelDocument* document, QWidget* parent) : QWidget(parent), 
     column->addWidget(status_);
     column->addStretch(1);
     for (QDoubleSpinBox* box : {size_, min_angle_, grading_, max_elements_})
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyMesh(); });
+        form::apply_on_enter(box, [this] { if (!loading_) applyMesh(); });
     connect(document_, &ModelDocument::changed, this, &MeshForm::refresh);
     refresh();
 }

@@ -2,11 +2,13 @@
 
 #include "document/ModelDocument.hpp"
 #include "check/ModelValidator.hpp"
+#include "panels/AdvancedSettings.hpp"
 #include "panels/BoltForm.hpp"
 #include "panels/FormFields.hpp"
 #include "panels/LawFields.hpp"
 #include "panels/LoadForm.hpp"
 #include "panels/MeshForm.hpp"
+#include "session/DiagnosticText.hpp"
 #include "session/DisplayUnits.hpp"
 
 #include <QCheckBox>
@@ -111,7 +113,7 @@ QString PropertyEditor::refusal(const Model& candidate, const std::string& prefi
         if (d.severity != Diagnostic::Severity::Error) continue;
         const bool concerns = d.path.compare(0, prefix.size(), prefix) == 0 &&
                               (d.path.size() == prefix.size() || d.path[prefix.size()] == '/');
-        if (concerns) return tr("%1 (%2)").arg(to_qt(d.message), to_qt(d.path));
+        if (concerns) return diagnostic_text(candidate, d);  // in words and the forms' units
     }
     return {};
 }
@@ -160,9 +162,9 @@ QWidget* PropertyEditor::createMaterialForm()
     form->addRow(mat_status_);
     std::vector<QDoubleSpinBox*> boxes = mat_fields_->boxes();
     for (QDoubleSpinBox* box : mat_law_->boxes()) boxes.push_back(box);
-    for (QDoubleSpinBox* box : boxes)
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
-    connect(mat_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyMaterial(); });
+    // Typed values wait for Apply or Enter (form::apply_on_enter); a box ticked applies at once.
+    for (QDoubleSpinBox* box : boxes) form::apply_on_enter(box, [this] { if (!loading_) applyMaterial(); });
+    form::apply_on_enter(mat_name_, [this] { if (!loading_) applyMaterial(); });
     connect(mat_reduce_, &QCheckBox::toggled, this, [this] { if (!loading_) applyMaterial(); });
     return page;
 }
@@ -204,8 +206,8 @@ QWidget* PropertyEditor::createJointMaterialForm()
     jm_status_ = status_label(QStringLiteral("jointMaterialStatus"), page);
     form->addRow(jm_status_);
     for (QDoubleSpinBox* box : jm_fields_->boxes())
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
-    connect(jm_name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyJointMaterial(); });
+        form::apply_on_enter(box, [this] { if (!loading_) applyJointMaterial(); });
+    form::apply_on_enter(jm_name_, [this] { if (!loading_) applyJointMaterial(); });
     connect(jm_reduce_, &QCheckBox::toggled, this, [this] { if (!loading_) applyJointMaterial(); });
     return page;
 }
@@ -221,10 +223,11 @@ QWidget* PropertyEditor::createAnalysisForm()
     an_steps_->setObjectName(QStringLiteral("analysisSteps"));
     an_steps_->setRange(-1, 100000000);
     an_steps_->setKeyboardTracking(false);
-    form->addRow(tr("Steps [–]"), an_steps_);
-    explain(an_steps_, tr("Number of time steps; the loads follow their tables over the time they cover"));
-    an_fields_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(analysis_fields(), QStringLiteral("analysis_"),
-                                                                          form, page);
+    form->addRow(form::steps_label(false), an_steps_);
+    explain(an_steps_, tr("Number of load steps (a static analysis) or time steps (a dynamic one); the loads follow "
+                          "their tables over the steps"));
+    an_fields_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(form::everyday_analysis_fields(),
+                                                                          QStringLiteral("analysis_"), form, page);
     an_output_ = new QSpinBox(page);
     an_output_->setObjectName(QStringLiteral("analysisOutputEvery"));
     an_output_->setRange(-1, 100000000);
@@ -248,16 +251,21 @@ QWidget* PropertyEditor::createAnalysisForm()
                          "the non-associated law has no unique limit load and its factor may depend on the mesh "
                          "and the iteration where much of the ground yields"));
     connect(an_flow_, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyAnalysis(); });
+    // DDA's numerical settings, collapsed: a geotechnical analysis rarely changes them.
+    QFormLayout* advanced = form::advanced_section(QStringLiteral("analysisAdvanced"), form, page);
+    an_advanced_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(form::numerical_analysis_fields(),
+                                                                            QStringLiteral("analysis_"), advanced,
+                                                                            advanced->parentWidget());
+    form::add_default_notes(form::numerical_analysis_fields(), QStringLiteral("analysis_"), advanced);
     auto* apply = new QPushButton(tr("Apply"), page);
     apply->setObjectName(QStringLiteral("analysisApply"));
     connect(apply, &QPushButton::clicked, this, &PropertyEditor::applyAnalysis);
     form->addRow(QString(), apply);
     an_status_ = status_label(QStringLiteral("analysisStatus"), page);
     form->addRow(an_status_);
-    for (QDoubleSpinBox* box : an_fields_->boxes())
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyAnalysis(); });
-    for (QSpinBox* box : {an_steps_, an_output_})
-        connect(box, &QSpinBox::editingFinished, this, [this] { if (!loading_) applyAnalysis(); });
+    for (const auto* fields : {an_fields_.get(), an_advanced_.get()})
+        for (QDoubleSpinBox* box : fields->boxes()) form::apply_on_enter(box, [this] { if (!loading_) applyAnalysis(); });
+    for (QSpinBox* box : {an_steps_, an_output_}) form::apply_on_enter(box, [this] { if (!loading_) applyAnalysis(); });
     return page;
 }
 
@@ -306,6 +314,8 @@ QWidget* PropertyEditor::createInitialStressForm()
     form->addRow(QString(), apply);
     is_status_ = status_label(QStringLiteral("stressStatus"), page);
     form->addRow(is_status_);
+    for (QDoubleSpinBox* box : {is_sxx_, is_syy_, is_sxy_, is_szz_, is_surface_, is_k0_})
+        form::apply_on_enter(box, [this] { if (!loading_) applyInitialStress(); });
     return page;
 }
 
@@ -391,6 +401,7 @@ void PropertyEditor::loadAnalysis()
     form::show_analysis_type(an_kind_, a);
     an_steps_->setValue(a.steps);
     an_fields_->show(a);
+    an_advanced_->show(a);
     an_output_->setValue(a.output_every);
     an_plasticity_->setChecked(a.plasticity);
     an_flow_->setCurrentIndex(an_flow_->findData(static_cast<int>(a.non_associated_flow)));
@@ -399,6 +410,8 @@ void PropertyEditor::loadAnalysis()
     layout->setRowVisible(an_flow_, a.strength_reduction);
     // Newmark's γ and the Rayleigh damping act in a dynamic analysis only (an earthquake's).
     const bool dynamic = a.kind == AnalysisSettings::Kind::Dynamic;
+    // Static DDA speaks of load steps; time matters in a dynamic analysis only.
+    if (auto* label = qobject_cast<QLabel*>(layout->labelForField(an_steps_))) label->setText(form::steps_label(dynamic));
     for (QDoubleSpinBox* box : an_fields_->boxes()) {
         const QString key = box->objectName().mid(QStringLiteral("analysis_").size());
         if (key == QLatin1String("newmark_gamma") || key.startsWith(QLatin1String("damping_"))) layout->setRowVisible(box, dynamic);
@@ -592,6 +605,7 @@ bool PropertyEditor::applyAnalysis()
     form::read_analysis_type(an_kind_, a);
     a.steps = an_steps_->value();
     an_fields_->read(old, a);
+    an_advanced_->read(old, a);
     a.output_every = an_output_->value();
     a.plasticity = an_plasticity_->isChecked();
     a.non_associated_flow = static_cast<AnalysisSettings::NonAssociatedFlow>(an_flow_->currentData().toInt());

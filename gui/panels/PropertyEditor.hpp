@@ -44,8 +44,8 @@ public:
     explicit PropertyEditor(ModelDocument* document, QWidget* parent = nullptr);
 
     /// The first error that validate_model() reports for `candidate` at `prefix` (a JSON
-    /// pointer such as "/materials/0") or below it, as "message (pointer)"; empty when there
-    /// is none.
+    /// pointer such as "/materials/0") or below it, in words and display units
+    /// (session/DiagnosticText.hpp); empty when there is none.
     static QString refusal(const Model& candidate, const std::string& prefix);
 
     /// The material / joint material the forms show (an index into the model's lists).
@@ -125,7 +125,8 @@ private:
 
     QComboBox* an_kind_ = nullptr;
     QSpinBox* an_steps_ = nullptr;
-    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> an_fields_;
+    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> an_fields_;    ///< the everyday ones
+    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> an_advanced_;  ///< DDA's numerical ones, collapsed
     QSpinBox* an_output_ = nullptr;
     QCheckBox* an_plasticity_ = nullptr;
     QComboBox* an_flow_ = nullptr;  ///< strength reduction of non-associated materials: Davis or direct

@@ -1,6 +1,7 @@
 #include "panels/StagesPanel.hpp"
 
 #include "document/ModelDocument.hpp"
+#include "panels/AdvancedSettings.hpp"
 #include "panels/DeclaredFields.hpp"
 #include "panels/FormFields.hpp"
 #include "widgets/ModelView.hpp"
@@ -15,6 +16,8 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
+#include <QSplitter>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -25,11 +28,30 @@ namespace mcdda::gui {
 
 namespace {
 
+/// A list that never scrolls sideways in the narrow dock: long names are elided in the middle
+/// (the whole name in the row's tooltip) and the list asks for no width of its own.
+void fit_width(QListWidget* list)
+{
+    list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    list->setTextElideMode(Qt::ElideMiddle);
+    list->setSizePolicy(QSizePolicy::Ignored, list->sizePolicy().verticalPolicy());
+    list->setMinimumWidth(60);
+}
+
+/// A row of a list, its whole text also in its tooltip (the row may be elided).
+QListWidgetItem* row(const QString& text, QListWidget* list)
+{
+    auto* item = new QListWidgetItem(text, list);
+    item->setToolTip(text);
+    return item;
+}
+
 QListWidget* checklist(const QString& name, QWidget* parent)
 {
     auto* list = new QListWidget(parent);
     list->setObjectName(name);
     list->setMaximumHeight(90);
+    fit_width(list);
     return list;
 }
 
@@ -93,6 +115,7 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     list_ = new QListWidget(this);
     list_->setObjectName(QStringLiteral("stageList"));
     list_->setToolTip(tr("Choose a stage to see the model as it stands in it; the first row shows every region"));
+    fit_width(list_);
     auto* add = new QPushButton(tr("Add"), this);
     add->setObjectName(QStringLiteral("addStage"));
     add->setToolTip(tr("Add a stage at the end (10 steps, the model's analysis settings)"));
@@ -114,7 +137,7 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     remove_items_ = checklist(QStringLiteral("stageRemove"), this);
     remove_items_->setToolTip(tr("Supports, loads and bolts taken away at the start of the stage"));
     steps_ = count_box(QStringLiteral("stageSteps"), 1, QString(), this);
-    steps_->setToolTip(tr("Number of load steps of the stage"));
+    steps_->setToolTip(tr("Number of load steps of the stage (time steps in a dynamic stage)"));
     release_ = count_box(QStringLiteral("stageRelease"), 0, tr("over all steps"), this);
     release_->setSuffix(tr(" steps"));
     release_->setToolTip(tr("Over how many steps the forces the stage leaves out of balance (an excavation's) are "
@@ -133,6 +156,11 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     water_inherit_ = new QPushButton(tr("As Before"), this);
     water_inherit_->setObjectName(QStringLiteral("stageWaterInherit"));
     water_inherit_->setToolTip(tr("The stage keeps the water of the stage before (the model's for the first stage)"));
+    reset_ = new QCheckBox(tr("Reset displacements at its start"), this);
+    reset_->setObjectName(QStringLiteral("stageResetDisplacements"));
+    form::explain(reset_, tr("Displacements are reported from the start of this stage, as RS2 and PLAXIS reset them: the "
+                             "settlement under gravity in the stage before no longer shows. Stresses and the shape "
+                             "stay. Ticked by itself for the stage after the first when the model has gravity"));
     apply_ = new QPushButton(tr("Apply"), this);
     apply_->setObjectName(QStringLiteral("applyStage"));
     note_ = new QLabel(this);
@@ -140,17 +168,22 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
 
     auto* buttons = new QHBoxLayout;
     for (QPushButton* b : {add, remove_, up_, down_}) buttons->addWidget(b);
-    // The stage's settings scroll, so that a short dock still shows the stage list.
+    // The stage's settings scroll up and down, never sideways: long rows put the label above the
+    // field, so that the form fits the dock's default width.
     auto* settings = new QWidget;
+    settings->setObjectName(QStringLiteral("stageSettings"));
     auto* form = new QFormLayout(settings);
     form->setContentsMargins(0, 0, 0, 0);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     form->addRow(tr("Name"), name_);
-    form->addRow(tr("Excavates"), excavate_);
-    form->addRow(tr("Builds"), activate_);
-    form->addRow(tr("Installs"), install_);
-    form->addRow(tr("Removes"), remove_items_);
-    form->addRow(tr("Steps"), steps_);
+    form->addRow(tr("Excavate regions"), excavate_);
+    form->addRow(tr("Build regions (fill, liner)"), activate_);
+    form->addRow(tr("Install supports, loads, bolts"), install_);
+    form->addRow(tr("Remove supports, loads, bolts"), remove_items_);
+    form->addRow(form::steps_label(false), steps_);
     form->addRow(tr("Release"), release_);
+    form->addRow(QString(), reset_);
     // The water acts at once (one undoable edit per button), not through Apply; its buttons span
     // both columns so that they do not widen the form.
     form->addRow(tr("Ground water"), water_);
@@ -178,19 +211,41 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     form->addRow(seismic_row);
     type_ = form::analysis_type_box(QStringLiteral("stageAnalysisType"), settings);
     form->addRow(tr("Analysis"), type_);
-    // The stage's own analysis settings, declared once with the model's (model/ModelFields.hpp).
-    analysis_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(analysis_fields(), QStringLiteral("stage_"),
-                                                                         form, settings);
+    type_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    type_->setMinimumContentsLength(8);
+    // The stage's own analysis settings, declared once with the model's (model/ModelFields.hpp);
+    // DDA's numerical ones collapsed under Advanced, each with its default in a sentence.
+    analysis_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(form::everyday_analysis_fields(),
+                                                                         QStringLiteral("stage_"), form, settings);
+    QFormLayout* advanced = form::advanced_section(QStringLiteral("stageAdvanced"), form, settings);
+    advanced->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    advanced_ = std::make_unique<form::DeclaredFields<AnalysisSettings>>(form::numerical_analysis_fields(),
+                                                                         QStringLiteral("stage_"), advanced,
+                                                                         advanced->parentWidget());
+    form::add_default_notes(form::numerical_analysis_fields(), QStringLiteral("stage_"), advanced);
     form->addRow(QString(), apply_);
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(list_, 1);
-    layout->addLayout(buttons);
-    layout->addWidget(note_);
-    auto* scroll = new QScrollArea(this);
+    // The stage list above, the chosen stage's settings below, the border between them movable.
+    auto* top = new QWidget;
+    auto* top_layout = new QVBoxLayout(top);
+    top_layout->setContentsMargins(0, 0, 0, 0);
+    top_layout->addWidget(list_, 1);
+    top_layout->addLayout(buttons);
+    top_layout->addWidget(note_);
+    auto* scroll = new QScrollArea;
+    scroll->setObjectName(QStringLiteral("stageSettingsScroll"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setWidget(settings);
-    layout->addWidget(scroll, 2);
+    auto* splitter = new QSplitter(Qt::Vertical, this);
+    splitter->setObjectName(QStringLiteral("stageSplitter"));
+    splitter->setChildrenCollapsible(false);
+    splitter->addWidget(top);
+    splitter->addWidget(scroll);
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 2);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(splitter);
 
     connect(list_, &QListWidget::currentRowChanged, this, &StagesPanel::showStage);
     connect(add, &QPushButton::clicked, this, &StagesPanel::addStage);
@@ -202,8 +257,12 @@ StagesPanel::StagesPanel(ModelDocument* document, ModelView* view, QWidget* pare
     connect(water_dry_, &QPushButton::clicked, this, [this] { setStageWater(Water{}); });
     connect(water_inherit_, &QPushButton::clicked, this, [this] { setStageWater(std::nullopt); });
     connect(seismic_own_, &QCheckBox::toggled, this, &StagesPanel::applySeismicCoefficient);
-    for (QDoubleSpinBox* box : {seismic_kh_, seismic_kv_})
-        connect(box, &QDoubleSpinBox::editingFinished, this, &StagesPanel::applySeismicCoefficient);
+    // Typed values wait for Enter or Apply, as in the Properties dock.
+    for (QDoubleSpinBox* box : {seismic_kh_, seismic_kv_}) form::apply_on_enter(box, [this] { applySeismicCoefficient(); });
+    form::apply_on_enter(name_, [this] { applyStage(); });
+    for (QSpinBox* box : {steps_, release_}) form::apply_on_enter(box, [this] { applyStage(); });
+    for (const auto* fields : {analysis_.get(), advanced_.get()})
+        for (QDoubleSpinBox* box : fields->boxes()) form::apply_on_enter(box, [this] { applyStage(); });
     connect(document_, &ModelDocument::changed, this, &StagesPanel::refresh);
     refresh();
 }
@@ -219,9 +278,9 @@ void StagesPanel::refresh()
     {
         const QSignalBlocker block(list_);
         list_->clear();
-        list_->addItem(tr("Model as drawn (every region)"));
+        row(tr("Model as drawn (every region)"), list_);
         for (std::size_t k = 0; k < m.stages.size(); ++k)
-            list_->addItem(tr("%1. %2").arg(k + 1).arg(QString::fromStdString(m.stages[k].name)));
+            row(tr("%1. %2").arg(k + 1).arg(QString::fromStdString(m.stages[k].name)), list_);
         list_->setCurrentRow(std::max(kept, 0));
     }
     note_->setText(m.stages.empty() ? tr("No stages: the model is analysed in one go. Add one to excavate or build "
@@ -236,9 +295,10 @@ void StagesPanel::showStage()
     const int stage = currentStage();
     const bool editing = stage >= 0 && stage < static_cast<int>(m.stages.size());
     for (QWidget* w : std::initializer_list<QWidget*>{name_, excavate_, activate_, install_, remove_items_, steps_,
-                                                       release_, type_, apply_, remove_})
+                                                       release_, type_, apply_, remove_, reset_})
         w->setEnabled(editing);
-    for (QDoubleSpinBox* box : analysis_->boxes()) box->setEnabled(editing);
+    for (const auto* fields : {analysis_.get(), advanced_.get()})
+        for (QDoubleSpinBox* box : fields->boxes()) box->setEnabled(editing);
     up_->setEnabled(editing && stage > 0);
     down_->setEnabled(editing && stage + 1 < static_cast<int>(m.stages.size()));
     name_->setText(editing ? QString::fromStdString(m.stages[static_cast<std::size_t>(stage)].name) : QString());
@@ -246,7 +306,7 @@ void StagesPanel::showStage()
         list->clear();
         for (std::size_t r = 0; r < m.regions.size(); ++r) {
             const QString region = QString::fromStdString(m.regions[r].name);
-            auto* item = new QListWidgetItem(region.isEmpty() ? tr("region %1").arg(r + 1) : region, list);
+            auto* item = row(region.isEmpty() ? tr("region %1").arg(r + 1) : region, list);
             bool on = false;
             if (editing) {
                 const Stage& st = m.stages[static_cast<std::size_t>(stage)];
@@ -260,7 +320,7 @@ void StagesPanel::showStage()
     for (auto [list, which] : {std::pair{install_, 0}, std::pair{remove_items_, 1}}) {
         list->clear();
         for (const auto& [name, kind] : stage_items(m)) {
-            auto* item = new QListWidgetItem(tr("%1 (%2)").arg(QString::fromStdString(name), kind), list);
+            auto* item = row(tr("%1 (%2)").arg(QString::fromStdString(name), kind), list);
             item->setData(Qt::UserRole, QString::fromStdString(name));
             const std::vector<std::string>* names = st ? (which == 0 ? &st->install : &st->remove) : nullptr;
             const bool on = names && std::count(names->begin(), names->end(), name) > 0;
@@ -270,9 +330,13 @@ void StagesPanel::showStage()
     steps_->setValue(st ? st->analysis.steps : 1);
     release_->setValue(st ? st->release_steps : 0);
     analysis_->show(st ? st->analysis : m.analysis);
+    advanced_->show(st ? st->analysis : m.analysis);
+    reset_->setChecked(st && st->reset_displacements);
     form::show_analysis_type(type_, st ? st->analysis : m.analysis);
     // Newmark's γ and the Rayleigh damping: rows of a dynamic stage only (as in the Analysis tab).
     const bool dynamic = (st ? st->analysis : m.analysis).kind == AnalysisSettings::Kind::Dynamic;
+    if (auto* label = qobject_cast<QLabel*>(static_cast<QFormLayout*>(steps_->parentWidget()->layout())->labelForField(steps_)))
+        label->setText(form::steps_label(dynamic));
     for (QDoubleSpinBox* box : analysis_->boxes()) {
         const QString key = box->objectName().mid(QStringLiteral("stage_").size());
         if (key == QLatin1String("newmark_gamma") || key.startsWith(QLatin1String("damping_")))
@@ -358,6 +422,15 @@ void StagesPanel::applyStage()
     st.release_steps = release_->value();
     const AnalysisSettings before = st.analysis;
     analysis_->read(before, st.analysis);
+    advanced_->read(before, st.analysis);
+    st.reset_displacements = reset_->isChecked();
+    if (seismic_own_->isChecked()) {  // kh, kv typed and not yet entered go with Apply too, in the same edit
+        const SeismicCoefficient shown = seismic_of_stage(m, stage);
+        SeismicCoefficient k;
+        k.kh = form::si(seismic_kh_, shown.kh, 1.0);
+        k.kv = form::si(seismic_kv_, shown.kv, 1.0);
+        st.seismic_coefficient = k;
+    }
     form::read_analysis_type(type_, st.analysis);
     document_->replaceModel(m, tr("Edit stage \"%1\"").arg(QString::fromStdString(st.name)));
 }
@@ -369,6 +442,10 @@ void StagesPanel::addStage()
     st.name = tr("stage %1").arg(m.stages.size() + 1).toStdString();
     st.analysis = m.analysis;
     st.analysis.steps = 10;
+    // The first stage of a model with gravity is its gravity stage (RS2's, PLAXIS's initial
+    // phase); the one after it reports displacements from its own start, so that the settlement
+    // under gravity does not cover the excavation's. Stages read from a file keep their flag.
+    st.reset_displacements = m.stages.size() == 1 && (m.gravity.x != 0.0 || m.gravity.y != 0.0);
     m.stages.push_back(st);
     document_->replaceModel(m, tr("Add stage \"%1\"").arg(QString::fromStdString(st.name)));
     setCurrentStage(static_cast<int>(m.stages.size()) - 1);

@@ -71,7 +71,9 @@ private:
     QSpinBox* steps_ = nullptr;
     QSpinBox* release_ = nullptr;
     QComboBox* type_ = nullptr;  ///< static, dynamic, strength reduction (a safety stage)
-    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> analysis_;  ///< the stage's number settings
+    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> analysis_;  ///< the stage's everyday number settings
+    std::unique_ptr<form::DeclaredFields<AnalysisSettings>> advanced_;  ///< its numerical ones (Advanced)
+    QCheckBox* reset_ = nullptr;  ///< displacements reported from the stage's start
     QPushButton* apply_ = nullptr;
     QPushButton* remove_ = nullptr;
     QPushButton* up_ = nullptr;

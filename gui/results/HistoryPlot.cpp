@@ -32,7 +32,8 @@ HistoryPlot::HistoryPlot(QWidget* parent) : QWidget(parent)
                           "base's input motion"));
     x_box_ = new QComboBox(this);
     x_box_->setObjectName(QStringLiteral("historyAbscissa"));
-    x_box_->setToolTip(tr("Plotted against time or a load (load-settlement curve)"));
+    x_box_->setToolTip(tr("Plotted against the load step (a static analysis), time (a dynamic one) or a load "
+                          "(load-settlement curve)"));
     note_ = new QLabel(this);
 
     auto* chart = new QChart;
@@ -130,6 +131,8 @@ int HistoryPlot::load(const QString& csv_path)
             // One row per trial: displacements against the strength reduction factor.
             x_box_->addItem(tr("strength reduction factor"), QStringLiteral("factor"));
             y_box_->addItem(tr("largest displacement (m)"), QStringLiteral("max_displacement"));
+        } else if (load_steps_ && table_.column(QStringLiteral("step")) >= 0) {
+            x_box_->addItem(tr("load step"), QStringLiteral("step"));
         } else {
             x_box_->addItem(tr("time (s)"), QStringLiteral("time"));
         }

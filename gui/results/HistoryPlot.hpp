@@ -53,6 +53,9 @@ public:
     /// How a history column is offered ("crest:vx (m/s)", "base input ax (m/s²)"); empty for a
     /// column that is not a point's or the base's displacement, velocity or acceleration.
     static QString quantityLabel(const QString& column);
+    /// A static run's history: plotted against the load step (column "step") instead of time
+    /// in seconds, which a static analysis does not have. Takes effect at the next load().
+    void setLoadSteps(bool load_steps) { load_steps_ = load_steps; }
     /// Whether the curve is drawn; before a run (nothing to plot) a message stands instead.
     bool chartShown() const;
     QString emptyMessage() const;
@@ -73,6 +76,7 @@ private:
     QValueAxis* x_axis_ = nullptr;
     QValueAxis* y_axis_ = nullptr;
     HistoryTable table_;
+    bool load_steps_ = false;
 };
 
 }  // namespace mcdda::gui

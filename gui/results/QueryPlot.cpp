@@ -11,11 +11,12 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineSeries>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
-#include <QValueAxis>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
 #include <algorithm>
 #include <limits>
@@ -148,18 +149,18 @@ void QueryPlot::refresh(const view::ResultProbe& probe)
     const QString field = unitless ? field_ : field_ + QStringLiteral(" (") + units_ + QLatin1Char(')');
     if (probe.empty()) {
         note_->setText(tr("Query line from (%1, %2) to (%3, %4) m")
-                           .arg(from_.x, 0, 'g', 6)
-                           .arg(from_.y, 0, 'g', 6)
-                           .arg(to_.x, 0, 'g', 6)
-                           .arg(to_.y, 0, 'g', 6));
+                           .arg(QLocale().toString(from_.x, 'g', 6))
+                           .arg(QLocale().toString(from_.y, 'g', 6))
+                           .arg(QLocale().toString(to_.x, 'g', 6))
+                           .arg(QLocale().toString(to_.y, 'g', 6)));
         area_->showMessage(tr("The picture shows no result: run the model or choose a saved step."));
     } else {
         note_->setText(tr("%1 from (%2, %3) to (%4, %5) m: %n point(s) on the mesh", "", on_mesh)
                            .arg(field)
-                           .arg(from_.x, 0, 'g', 6)
-                           .arg(from_.y, 0, 'g', 6)
-                           .arg(to_.x, 0, 'g', 6)
-                           .arg(to_.y, 0, 'g', 6));
+                           .arg(QLocale().toString(from_.x, 'g', 6))
+                           .arg(QLocale().toString(from_.y, 'g', 6))
+                           .arg(QLocale().toString(to_.x, 'g', 6))
+                           .arg(QLocale().toString(to_.y, 'g', 6)));
         if (on_mesh > 0)
             area_->showChart();
         else

@@ -3,6 +3,7 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QSlider>
 
@@ -74,7 +75,12 @@ void StepSlider::showLabel()
     const int underscore = base.lastIndexOf(QLatin1Char('_'));
     bool numbered = false;
     const int step = underscore >= 0 ? base.mid(underscore + 1).toInt(&numbered) : 0;
-    const QString where = tr("%1 of %2, t = %3 s").arg(index + 1).arg(count()).arg(entries_[index].time, 0, 'g', 6);
+    if (load_steps_) {  // a static run: load steps, no time
+        const QString where = tr("%1 of %2").arg(index + 1).arg(count());
+        label_->setText(numbered ? tr("load step %1 (%2)").arg(step).arg(where) : where);
+        return;
+    }
+    const QString where = tr("%1 of %2, t = %3 s").arg(index + 1).arg(count()).arg(QLocale().toString(entries_[index].time, 'g', 6));
     label_->setText(numbered ? tr("step %1 (%2)").arg(step).arg(where) : where);
 }
 

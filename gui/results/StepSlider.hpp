@@ -32,6 +32,12 @@ public:
     int count() const { return static_cast<int>(entries_.size()); }
     const std::vector<PvdEntry>& entries() const { return entries_; }
     int currentIndex() const;
+    /// A static run's steps: the label says "load step 10 (2 of 3)", without a time.
+    void setLoadSteps(bool load_steps)
+    {
+        load_steps_ = load_steps;
+        showLabel();
+    }
     /// Moves to saved step `index` (0 = the first saved) and emits stepChosen.
     void setCurrentIndex(int index);
     QSlider* slider() const { return slider_; }
@@ -46,6 +52,7 @@ private:
     QSlider* slider_ = nullptr;
     QLabel* label_ = nullptr;
     std::vector<PvdEntry> entries_;
+    bool load_steps_ = false;
 };
 
 }  // namespace mcdda::gui

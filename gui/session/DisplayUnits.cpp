@@ -1,5 +1,7 @@
 #include "session/DisplayUnits.hpp"
 
+#include "model/Defaults.hpp"
+
 #include <QCoreApplication>
 #include <QSettings>
 
@@ -56,5 +58,34 @@ QString DisplayUnits::formModulusUnit() const
 }
 
 double DisplayUnits::formModulusFactor() const { return stress_ == view::StressUnit::KPa ? 1e3 : 1e6; }
+
+QString DisplayUnits::unitOf(Quantity quantity) const
+{
+    switch (quantity) {
+    case Quantity::Ratio: return QString();
+    case Quantity::Modulus: return formModulusUnit();
+    case Quantity::Stress: return formStressUnit();
+    case Quantity::Density: return tr("kN/m³");
+    case Quantity::Angle: return tr("°");
+    case Quantity::Stiffness: return tr("MN/m");
+    case Quantity::Force: return tr("kN/m");
+    case Quantity::Time: return tr("s");
+    case Quantity::Frequency: return tr("Hz");
+    }
+    return QString();
+}
+
+double DisplayUnits::factorOf(Quantity quantity) const
+{
+    switch (quantity) {
+    case Quantity::Modulus: return formModulusFactor();
+    case Quantity::Stress: return formStressFactor();
+    case Quantity::Density: return 1e3 / standard_gravity;  // unit weight γ = ρ g in kN/m³
+    case Quantity::Angle: return degree;
+    case Quantity::Stiffness: return 1e6;
+    case Quantity::Force: return 1e3;
+    default: return 1.0;
+    }
+}
 
 }  // namespace mcdda::gui

@@ -5,6 +5,7 @@
 /// "units/length") and shared by the legend and read-outs, the property forms and the Model
 /// tree; changed() tells them all to show their values again.
 
+#include "model/ModelFields.hpp"
 #include "view/ResultScene.hpp"
 
 #include <QObject>
@@ -31,6 +32,10 @@ public:
     /// The same for moduli (E): kPa or MPa as chosen; automatic: MPa.
     QString formModulusUnit() const;
     double formModulusFactor() const;
+    /// The unit forms and messages show a declared quantity in (MPa, kPa, kN/m³, °, MN/m, kN/m,
+    /// s, Hz; empty for a ratio), and its size in model units: model value = shown × factor.
+    QString unitOf(Quantity quantity) const;
+    double factorOf(Quantity quantity) const;
 
 signals:
     void changed();

@@ -119,6 +119,7 @@ void RunController::start()
         info.locked = report.locked;
         info.plastic_iterations = report.plastic_iterations;
         info.yielding = report.yielding;
+        info.load_steps = !has_dynamic_stage(p.model);
         unsent = info;
         snapshot_unsent = true;
         if (!progress_clock.isValid() || progress_clock.elapsed() >= progress_ms_) {

@@ -32,6 +32,9 @@ struct RunProgress {
     int open = 0, sliding = 0, locked = 0;  ///< contacts
     int plastic_iterations = 0;
     int yielding = 0;  ///< elements yielding in the step
+    /// No stage is dynamic: the steps are load steps and their time only orders them, so the
+    /// log leaves it out.
+    bool load_steps = false;
 };
 
 class RunController : public QObject {

@@ -1,5 +1,7 @@
 #include "session/RunMessages.hpp"
 
+#include "session/DiagnosticText.hpp"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
@@ -14,7 +16,6 @@ namespace mcdda::gui {
 namespace {
 
 
-QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 
 bool is_error(const Diagnostic& d) { return d.severity == Diagnostic::Severity::Error; }
 
@@ -24,7 +25,7 @@ QStringList preprocess_report(const Preprocessed& p, const QString& source)
 {
     QStringList lines;
     lines << QCoreApplication::translate("mcdda::gui::RunMessages", "Model: %1").arg(source);
-    for (const Diagnostic& d : p.diagnostics) lines << to_qt(format_diagnostic(d));
+    for (const Diagnostic& d : p.diagnostics) lines << diagnostic_line(p.model, d);
     if (p.ok) {
         lines << mesh_report(p.statistics);
         lines << QCoreApplication::translate("mcdda::gui::RunMessages", "Times: read %1 ms, checked %2 ms, cut %3 ms, meshed %4 ms")
@@ -84,6 +85,13 @@ QString permanent_displacement_line(const QString& summary_path)
 QString mesh_summary(const Preprocessed& p)
 {
     if (!p.ok) {
+        // An empty model is not in error: it asks for its first region (a file that could not be
+        // read has errors of its own and says so).
+        const bool empty = std::all_of(p.diagnostics.begin(), p.diagnostics.end(), [&](const Diagnostic& d) {
+            return !is_error(d) || is_empty_model_notice(p.model, d);
+        });
+        if (empty && p.model.regions.empty())
+            return QCoreApplication::translate("mcdda::gui::RunMessages", "Draw a region to start");
         const int errors = static_cast<int>(std::count_if(p.diagnostics.begin(), p.diagnostics.end(), is_error));
         return QCoreApplication::translate("mcdda::gui::RunMessages", "Not meshed: %n error(s)", "", errors);
     }
@@ -99,7 +107,7 @@ QStringList error_lines(const Preprocessed& p)
 {
     QStringList errors;
     for (const Diagnostic& d : p.diagnostics)
-        if (is_error(d)) errors << to_qt(format_diagnostic(d));
+        if (is_error(d)) errors << diagnostic_line(p.model, d);
     if (errors.isEmpty())
         errors << QCoreApplication::translate("mcdda::gui::RunMessages", "pre-processing stopped without a message");
     return errors;
@@ -116,12 +124,22 @@ QString first_lines(const QStringList& lines, int count)
 
 QString progress_line(const RunProgress& p)
 {
+    if (p.load_steps)  // static DDA: load steps, their Δt a numerical setting (Advanced), not time
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "load step %1/%2  contacts open/sliding/locked %3/%4/%5  "
+                                                                      "plastic iterations %6  yielding %7")
+            .arg(p.step)
+            .arg(p.total_steps)
+            .arg(p.open)
+            .arg(p.sliding)
+            .arg(p.locked)
+            .arg(p.plastic_iterations)
+            .arg(p.yielding);
     return QCoreApplication::translate("mcdda::gui::RunMessages", "step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  "
                                                 "plastic iterations %8  yielding %9")
         .arg(p.step)
         .arg(p.total_steps)
-        .arg(p.time, 0, 'g', 6)
-        .arg(p.time_step, 0, 'g', 4)
+        .arg(QLocale().toString(p.time, 'g', 6))
+        .arg(QLocale().toString(p.time_step, 'g', 4))
         .arg(p.open)
         .arg(p.sliding)
         .arg(p.locked)
@@ -144,7 +162,7 @@ QString trial_start_line(int number, double factor)
 {
     return QCoreApplication::translate("mcdda::gui::RunMessages", "Strength reduction: trial %1, strengths divided by %2...")
         .arg(number)
-        .arg(factor, 0, 'f', 4);
+        .arg(QLocale().toString(factor, 'f', 4));
 }
 
 QString trial_line(const StrengthTrial& trial)
@@ -152,30 +170,30 @@ QString trial_line(const StrengthTrial& trial)
     const QString numbers = QCoreApplication::translate("mcdda::gui::RunMessages",
                                                         "largest displacement %1 m, %n iteration(s), %2 s", "",
                                                         trial.iterations)
-                                .arg(trial.max_displacement, 0, 'g', 4)
-                                .arg(trial.seconds, 0, 'f', 1);
+                                .arg(QLocale().toString(trial.max_displacement, 'g', 4))
+                                .arg(QLocale().toString(trial.seconds, 'f', 1));
     if (trial.stands)
         return QCoreApplication::translate("mcdda::gui::RunMessages", "Trial %1: F = %2 stands (%3)")
             .arg(trial.number)
-            .arg(trial.factor, 0, 'f', 4)
+            .arg(QLocale().toString(trial.factor, 'f', 4))
             .arg(numbers);
     return QCoreApplication::translate("mcdda::gui::RunMessages", "Trial %1: F = %2 does not stand (%3): %4")
         .arg(trial.number)
-        .arg(trial.factor, 0, 'f', 4)
+        .arg(QLocale().toString(trial.factor, 'f', 4))
         .arg(numbers, QString::fromStdString(trial.message));
 }
 
 QString factor_text(const FactorOfSafety& factor)
 {
-    if (factor.found) return QString::number(factor.value, 'f', 3);
+    if (factor.found) return QLocale().toString(factor.value, 'f', 3);
     if (factor.converged > 0.0 && factor.not_converged == 0.0)
-        return QCoreApplication::translate("mcdda::gui::RunMessages", "above %1").arg(factor.converged, 0, 'f', 3);
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "above %1").arg(QLocale().toString(factor.converged, 'f', 3));
     if (factor.not_converged > 0.0 && factor.converged == 0.0)
-        return QCoreApplication::translate("mcdda::gui::RunMessages", "below %1").arg(factor.not_converged, 0, 'f', 3);
+        return QCoreApplication::translate("mcdda::gui::RunMessages", "below %1").arg(QLocale().toString(factor.not_converged, 'f', 3));
     if (factor.converged > 0.0)
         return QCoreApplication::translate("mcdda::gui::RunMessages", "between %1 and %2")
-            .arg(factor.converged, 0, 'f', 3)
-            .arg(factor.not_converged, 0, 'f', 3);
+            .arg(QLocale().toString(factor.converged, 'f', 3))
+            .arg(QLocale().toString(factor.not_converged, 'f', 3));
     return QCoreApplication::translate("mcdda::gui::RunMessages", "not found");
 }
 
@@ -188,8 +206,8 @@ QString factor_line(const FactorOfSafety& factor)
                                        "Factor of safety %1: the model stands with its strengths divided by %2, not by "
                                        "%3 (%n trial(s)).", "", factor.trials)
         .arg(factor_text(factor))
-        .arg(factor.converged, 0, 'f', 4)
-        .arg(factor.not_converged, 0, 'f', 4);
+        .arg(QLocale().toString(factor.converged, 'f', 4))
+        .arg(QLocale().toString(factor.not_converged, 'f', 4));
 }
 
 QString end_line(RunStatus status, int step, const QString& message)

@@ -1,5 +1,7 @@
 #include "view/ResultScene.hpp"
 
+#include "view/ResultFileReader.hpp"
+#include "io/FileKind.hpp"
 #include "view/DeformScale.hpp"
 
 #include "view/FlatActor.hpp"
@@ -19,7 +21,6 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
-#include <vtkLogger.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -37,18 +38,12 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkWindow.h>
-#include <vtkXMLPolyDataReader.h>
-#include <vtkXMLUnstructuredGridReader.h>
-#include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
 #include <vtkIdList.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <cctype>
 #include <limits>
 #include <map>
 #include <utility>
@@ -163,18 +158,13 @@ double field_number(vtkUnstructuredGrid* grid, const char* name)
 /// Reads a contacts file (ResultOptions::contacts) with its force arrays checked.
 vtkSmartPointer<vtkPolyData> load_contacts(const std::string& path)
 {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw std::runtime_error("cannot read contacts " + path + ": no such file");
-    vtkNew<vtkXMLPolyDataReader> reader;
-    if (reader->CanReadFile(path.c_str()) == 0)
-        throw std::runtime_error("cannot read contacts " + path + ": not a VTK XML poly data file (.vtp)");
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
+    // A directory, /dev/null or a pipe is named by what it is, not "no such file".
+    if (const std::string kind = not_a_regular_file(path); !kind.empty())
+        throw ResultFileError("cannot read contacts " + path + ": it " + kind);
+    vtkSmartPointer<vtkPolyData> data = read_contacts_file(path);  // every part checked (ResultFileReader)
     vtkDataArray* force = data != nullptr ? data->GetPointData()->GetArray("force") : nullptr;
     if (force == nullptr || force->GetNumberOfComponents() < 2)
-        throw std::runtime_error("contacts " + path + " hold no contact forces: is it a contacts file of mcdda run?");
+        throw ResultFileError("contacts " + path + " hold no contact forces: is it a contacts file of mcdda run?");
     return data;
 }
 
@@ -207,63 +197,6 @@ vtkSmartPointer<vtkUnstructuredGrid> present_cells(vtkSmartPointer<vtkUnstructur
     return kept;
 }
 
-/// The point and cell counts a .vtu file declares on its first <Piece>, read as text before VTK
-/// allocates anything from them; a count that is not a whole number is refused.
-std::pair<long long, long long> declared_counts(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::string head(1 << 16, '\0');
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    const std::size_t piece = head.find("<Piece");
-    if (piece == std::string::npos)
-        throw std::runtime_error("cannot read results " + path + ": no <Piece> element near its start (not a result file "
-                                 "of mcdda run)");
-    auto count = [&](const std::string& name) {
-        const std::size_t at = head.find(name + "=\"", piece);
-        if (at == std::string::npos) throw std::runtime_error("cannot read results " + path + ": its <Piece> has no " + name);
-        const std::size_t from = at + name.size() + 2, to = head.find('"', from);
-        const std::string text = head.substr(from, to == std::string::npos ? 0 : to - from);
-        if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
-            throw std::runtime_error("cannot read results " + path + ": " + name + " \"" + text.substr(0, 40) +
-                                     "\" is not a count");
-        return std::stoll(text);
-    };
-    return {count("NumberOfPoints"), count("NumberOfCells")};
-}
-
-/// Every cell a triangle of the kind the model's mesh has, every point index within the points,
-/// every coordinate finite: a damaged or foreign file must not reach the drawing code.
-void check_cells(vtkUnstructuredGrid* grid, const Preprocessed& model, const std::string& source)
-{
-    const bool quadratic = !model.mesh.midside.empty();
-    const int type = quadratic ? VTK_QUADRATIC_TRIANGLE : VTK_TRIANGLE, corners = quadratic ? 6 : 3;
-    const vtkIdType points = grid->GetNumberOfPoints();
-    vtkNew<vtkIdList> ids;
-    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-        if (grid->GetCellType(c) != type)
-            throw std::runtime_error("cannot read results " + source + ": cell " + std::to_string(c) + " is of VTK type " +
-                                     std::to_string(grid->GetCellType(c)) + ", not the " +
-                                     (quadratic ? "six" : "three") + "-node triangle of the model's mesh");
-        grid->GetCellPoints(c, ids);
-        if (ids->GetNumberOfIds() != corners)
-            throw std::runtime_error("cannot read results " + source + ": cell " + std::to_string(c) + " has " +
-                                     std::to_string(ids->GetNumberOfIds()) + " points instead of " + std::to_string(corners));
-        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-            if (ids->GetId(k) < 0 || ids->GetId(k) >= points)
-                throw std::runtime_error("cannot read results " + source + ": cell " + std::to_string(c) +
-                                         " names point " + std::to_string(ids->GetId(k)) + ", but the file has " +
-                                         std::to_string(points) + " points (connectivity damaged)");
-    }
-    for (vtkIdType i = 0; i < points; ++i) {
-        double x[3];
-        grid->GetPoint(i, x);
-        if (!std::isfinite(x[0]) || !std::isfinite(x[1]))
-            throw std::runtime_error("cannot read results " + source + ": point " + std::to_string(i) +
-                                     " has a coordinate that is not a finite number");
-    }
-}
-
 /// The arrays drawn hold finite numbers only (a NaN would colour nothing and scale nothing).
 void check_finite(vtkDataArray* a, const std::string& source, const std::string& what)
 {
@@ -290,10 +223,10 @@ Result check_result(vtkSmartPointer<vtkUnstructuredGrid> grid, const Preprocesse
     Result r;
     r.grid = std::move(grid);
     if (r.grid == nullptr || r.grid->GetNumberOfCells() == 0 || r.grid->GetNumberOfPoints() == 0)
-        throw std::runtime_error("cannot read results " + source + ": the file is damaged or holds no cells");
+        throw ResultFileError("cannot read results " + source + ": the file is damaged or holds no cells");
     const auto cells = static_cast<std::size_t>(r.grid->GetNumberOfCells());
     if (cells != model.mesh.triangles.size())
-        throw std::runtime_error("results " + source + " have " + std::to_string(cells) +
+        throw ResultFileError("results " + source + " have " + std::to_string(cells) +
                                  " cells but the model's mesh has " + std::to_string(model.mesh.triangles.size()) +
                                  " triangles: were they written by a run of this model (with the same --set options)?");
     r.grid = present_cells(r.grid);
@@ -320,57 +253,19 @@ Result load_result(const Preprocessed& model, const std::string& path, const Res
     const FieldInfo& field = find_field(options);
     if (!std::isfinite(options.deform)) throw ResultFieldError("the deformation factor must be a finite number");
 
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw std::runtime_error("cannot read results " + path + ": no such file");
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    if (reader->CanReadFile(path.c_str()) == 0)
-        throw std::runtime_error("cannot read results " + path + ": not a VTK XML unstructured grid (.vtu)");
-    // The declared sizes against the model's before VTK allocates from them (a count of 3·10⁹
-    // is a few bytes in the file).
-    const auto [points, cells] = declared_counts(path);
-    if (static_cast<std::size_t>(points) != model.mesh.nodes.size() ||
-        static_cast<std::size_t>(cells) != model.mesh.triangles.size())
-        throw std::runtime_error("results " + path + " declare " + std::to_string(points) + " points and " +
-                                 std::to_string(cells) + " cells but the model's mesh has " +
-                                 std::to_string(model.mesh.nodes.size()) + " nodes and " +
-                                 std::to_string(model.mesh.triangles.size()) +
-                                 " triangles: were they written by a run of this model (with the same --set options)?");
-    reader->SetFileName(path.c_str());
-    // VTK's own messages about a damaged file go to this observer, not to the terminal; the
-    // first is the reason given.
-    vtkNew<vtkCallbackCommand> on_error;
-    std::string vtk_error;
-    on_error->SetClientData(&vtk_error);
-    on_error->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
-        auto* text = static_cast<std::string*>(client);
-        if (text->empty() && call != nullptr) *text = static_cast<const char*>(call);
-    });
-    reader->AddObserver(vtkCommand::ErrorEvent, on_error);
-    reader->AddObserver(vtkCommand::WarningEvent, on_error);
-    // (its XML parser and pipeline log theirs: silenced while reading)
-    const vtkLogger::Verbosity logged = vtkLogger::GetCurrentVerbosityCutoff();
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    reader->Update();
-    vtkLogger::SetStderrVerbosity(logged);
-    if (!vtk_error.empty() || reader->GetErrorCode() != 0) {
-        std::string why = vtk_error.empty() ? "VTK could not read it" : vtk_error;
-        // VTK's text starts with its own source location ("ERROR: In …, line N vtkXML…Reader (0x…): ").
-        if (const std::size_t at = why.find("): "); at != std::string::npos) why = why.substr(at + 3);
-        while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back()))) why.pop_back();
-        throw std::runtime_error("cannot read results " + path + ": the file is damaged (" + why + ")");
-    }
-    if (reader->GetOutput()->GetNumberOfPoints() != points || reader->GetOutput()->GetNumberOfCells() != cells)
-        throw std::runtime_error("cannot read results " + path + ": the file is damaged (it holds " +
-                                 std::to_string(reader->GetOutput()->GetNumberOfPoints()) + " points and " +
-                                 std::to_string(reader->GetOutput()->GetNumberOfCells()) + " cells of the " +
-                                 std::to_string(points) + " and " + std::to_string(cells) + " it declares)");
-    check_cells(reader->GetOutput(), model, path);
-    Result r = check_result(reader->GetOutput(), model, path, field, options);
-    if (const double step = field_number(reader->GetOutput(), "step"); std::isfinite(step)) r.step = static_cast<int>(step);
-    if (const double stage = field_number(reader->GetOutput(), "stage"); std::isfinite(stage)) r.stage = static_cast<int>(stage);
-    r.time = field_number(reader->GetOutput(), "time");
-    r.strength_factor = field_number(reader->GetOutput(), "strength_factor");
+    // A directory, /dev/null or a pipe is named by what it is, not "no such file".
+    if (const std::string kind = not_a_regular_file(path); !kind.empty())
+        throw ResultFileError("cannot read results " + path + ": it " + kind);
+    // The file is read by mcdda's own strict reader: its declared counts against the model's
+    // mesh before anything is read from them, then every array, index, offset and cell type.
+    const vtkSmartPointer<vtkUnstructuredGrid> grid =
+        read_result_grid(path, ExpectedMesh{model.mesh.nodes.size(), model.mesh.triangles.size(),
+                                            !model.mesh.midside.empty()});
+    Result r = check_result(grid, model, path, field, options);
+    if (const double step = field_number(grid, "step"); std::isfinite(step)) r.step = static_cast<int>(step);
+    if (const double stage = field_number(grid, "stage"); std::isfinite(stage)) r.stage = static_cast<int>(stage);
+    r.time = field_number(grid, "time");
+    r.strength_factor = field_number(grid, "strength_factor");
     if (!options.contacts.empty()) r.contacts = load_contacts(options.contacts);
     return r;
 }
@@ -1062,19 +957,24 @@ std::string result_title(const Preprocessed& model, const Result& r, const Resul
         // A strength reduction trial is named by its factor (its step number and time only
         // order the saved trials).
         const bool trial = std::isfinite(r.strength_factor);
+        // A static run's steps are load steps: their time (Δt apart) says nothing to the user.
+        const bool load_steps = !has_dynamic_stage(model.model);
         if (trial) {
             std::snprintf(part, sizeof part, " — %s %.4g",
                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "strengths divided by")).c_str(),
                           r.strength_factor);
             title += part;
         } else if (r.step >= 0) {
-            std::snprintf(part, sizeof part, " — %s %d", picture_text(QT_TRANSLATE_NOOP("mcdda::view", "step")).c_str(), r.step);
+            std::snprintf(part, sizeof part, " — %s %d",
+                          (load_steps ? picture_text(QT_TRANSLATE_NOOP("mcdda::view", "load step"))
+                                      : picture_text(QT_TRANSLATE_NOOP("mcdda::view", "step"))).c_str(),
+                          r.step);
             title += part;
         }
         if (r.stage >= 1 && r.stage <= static_cast<int>(model.model.stages.size()))
             title += ", " + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "stage")) + " \"" +
                      model.model.stages[static_cast<std::size_t>(r.stage - 1)].name + "\"";
-        if (std::isfinite(r.time) && !trial) {
+        if (std::isfinite(r.time) && !trial && !load_steps) {
             std::snprintf(part, sizeof part, ", t = %g s", r.time);
             title += part;
         }

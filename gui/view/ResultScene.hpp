@@ -89,6 +89,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// A result or contacts file that is not one `mcdda run` wrote, or was damaged since; what()
+/// names the file (and the line) and the problem. Input refused, like a model.
+class ResultFileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 /// The fields a result picture can show, in the order the help text names them.
 const std::vector<std::string>& result_field_names();
 

@@ -21,7 +21,13 @@ constexpr int ring_role = Qt::UserRole + 2;
 
 QString to_qt(const std::string& s) { return QString::fromStdString(s); }
 
-QString point_text(const Point2& p) { return QStringLiteral("(%1, %2)").arg(p.x, 0, 'g', 6).arg(p.y, 0, 'g', 6); }
+/// A point in the user's locale; "; " between the numbers where the decimal mark is a comma.
+QString point_text(const Point2& p)
+{
+    const QLocale locale;
+    const QString separator = locale.decimalPoint() == QStringLiteral(",") ? QStringLiteral("; ") : QStringLiteral(", ");
+    return QLatin1Char('(') + locale.toString(p.x, 'g', 6) + separator + locale.toString(p.y, 'g', 6) + QLatin1Char(')');
+}
 
 constexpr int pressure_role = Qt::UserRole + 3;  ///< an edge pressure's value (Pa), for a change of units
 
@@ -120,7 +126,7 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
         const auto& begin = p->mesh.block_triangle_begin;
         const int elements = b + 1 < begin.size() ? begin[b + 1] - begin[b] : 0;
         row(blocks_, tr("block %1").arg(b + 1),
-            tr("%1, %2 m², %n elements", "", elements).arg(material).arg(block.area, 0, 'g', 4));
+            tr("%1, %2 m², %n elements", "", elements).arg(material, QLocale().toString(block.area, 'g', 4)));
     }
     blocks_->setExpanded(blocks_expanded_);
 
@@ -129,9 +135,9 @@ void ModelTree::refresh(const Model& m, const Preprocessed* p)
     std::vector<QTreeWidgetItem*> sets;
     for (std::size_t i = 0; i < m.joint_sets.size(); ++i) {
         const JointSet& set = m.joint_sets[i];
-        QString details = tr("spacing %1 m").arg(set.spacing);
+        QString details = tr("spacing %1 m").arg(QLocale().toString(set.spacing, 'g', 6));
         if (set.persistence < 1.0)
-            details += tr(", persistence %1 %, joints %2 m long").arg(100.0 * set.persistence).arg(set.trace_length);
+            details += tr(", persistence %1 %, joints %2 m long").arg(QLocale().toString(100.0 * set.persistence, 'g', 6), QLocale().toString(set.trace_length, 'g', 6));
         sets.push_back(new QTreeWidgetItem(joints, {tr("Set %1").arg(name_or(set.name, QString::number(i + 1))), details}));
     }
     int explicit_count = 0;

@@ -291,7 +291,7 @@ void ResultToolBar::showInfo(const view::ResultInfo& info)
 {
     QString text;
     if (info.deform_factor != 0.0)
-        text = deformAuto() ? tr("×%1 (auto)").arg(info.deform_factor, 0, 'g', 3) : QString();
+        text = deformAuto() ? tr("×%1 (auto)").arg(QLocale().toString(info.deform_factor, 'g', 3)) : QString();
     if (info.inverted_elements > 0)
         text += (text.isEmpty() ? QString() : QStringLiteral("  ")) +
                 tr("⚠ %n element(s) drawn inside out: lower the scale", "", info.inverted_elements);

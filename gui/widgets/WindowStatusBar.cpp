@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QFont>
 #include <QLabel>
+#include <QLocale>
 #include <QPointF>
 #include <QProgressBar>
 
@@ -38,7 +39,7 @@ void WindowStatusBar::showCursor(const QPointF& model_pos, double metres_per_pix
     const int decimals = metres_per_pixel > 0.0
                              ? std::clamp(static_cast<int>(std::ceil(-std::log10(metres_per_pixel))), 0, 6)
                              : 3;
-    QString text = tr("x = %1 m   y = %2 m").arg(model_pos.x(), 0, 'f', decimals).arg(model_pos.y(), 0, 'f', decimals);
+    QString text = tr("x = %1 m   y = %2 m").arg(QLocale().toString(model_pos.x(), 'f', decimals), QLocale().toString(model_pos.y(), 'f', decimals));
     if (!value.isEmpty()) text += QStringLiteral("   ") + value;
     cursor_->setText(text);
 }

@@ -395,7 +395,7 @@ void EarthquakeTest::stageSeismicCoefficient()
     own->setChecked(true);
     QVERIFY(doc->model().stages[1].seismic_coefficient.has_value());
     kh->setValue(0.1);
-    emit kh->editingFinished();
+    QTest::keyClick(kh, Qt::Key_Return);  // typed values are applied on Enter (or Apply)
     QCOMPARE(doc->model().stages[1].seismic_coefficient->kh, 0.1);
     QCOMPARE(seismic_of_stage(doc->model(), 1).kh, 0.1);
     QCOMPARE(seismic_of_stage(doc->model(), 0).kh, 0.0);

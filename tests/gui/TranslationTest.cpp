@@ -124,8 +124,21 @@ private slots:
         QCOMPARE(tr_run("Res&ume"), QStringLiteral("&Fortsetzen"));
         QCOMPARE(tr_run("&Stop"), QStringLiteral("&Abbrechen"));
         QCOMPARE(tr_run("Results &Folder..."), QStringLiteral("Ergebnis&ordner..."));
-        QCOMPARE(tr_messages("Run completed: %n step(s).", 1), QStringLiteral("Berechnung abgeschlossen: 1 Zeitschritt."));
-        QCOMPARE(tr_messages("Run completed: %n step(s).", 40), QStringLiteral("Berechnung abgeschlossen: 40 Zeitschritte."));
+        // "Schritt" throughout (a static run's "Lastschritt"); "Zeitschritt" only where time steps are meant.
+        QCOMPARE(tr_messages("Run completed: %n step(s).", 1), QStringLiteral("Berechnung abgeschlossen: 1 Schritt."));
+        QCOMPARE(tr_messages("Run completed: %n step(s).", 40), QStringLiteral("Berechnung abgeschlossen: 40 Schritte."));
+        QVERIFY(tr_messages("load step %1/%2  contacts open/sliding/locked %3/%4/%5  plastic iterations %6  yielding %7")
+                    .startsWith(QStringLiteral("Lastschritt %1/%2")));
+        QCOMPARE(QCoreApplication::translate("mcdda::view", "load step"), QStringLiteral("Lastschritt"));
+        QCOMPARE(QCoreApplication::translate("mcdda::gui::StepSlider", "Step:"), QStringLiteral("Schritt:"));
+        // Regions built and supports installed are different words, never both "baut ein".
+        const QString builds = QCoreApplication::translate("mcdda::gui::StagesPanel", "Build regions (fill, liner)");
+        const QString installs = QCoreApplication::translate("mcdda::gui::StagesPanel", "Install supports, loads, bolts");
+        QVERIFY2(builds.startsWith(QStringLiteral("Einbau von Bereichen")), qPrintable(builds));
+        QVERIFY2(installs.startsWith(QStringLiteral("Stützmittel")), qPrintable(installs));
+        QVERIFY(!QCoreApplication::translate("mcdda::gui::ModelTree", "builds %1").contains(QStringLiteral("baut")));
+        QVERIFY(QCoreApplication::translate("mcdda::gui::ModelTree", "builds %1") !=
+                QCoreApplication::translate("mcdda::gui::ModelTree", "installs %1"));
         // Access keys stay unique in the menu bar and the Run menu.
         QVERIFY(distinct_mnemonics(QStringList{tr_main_window("&File"), tr_main_window("&Edit"),
                                                QCoreApplication::translate("mcdda::gui::ViewMenu", "&View"), tr_run("&Run"),
