@@ -5,11 +5,13 @@
 #include "model/Defaults.hpp"
 #include "model/ModelFields.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <map>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 
 namespace mcdda {
 
@@ -320,6 +322,32 @@ void check_geometry(Checker& c, const Model& m) {
             if (k > 0 && j.points[k].x == j.points[k - 1].x && j.points[k].y == j.points[k - 1].y)
                 c.error(path + "/points/" + std::to_string(k), "repeats the previous point (zero-length joint segment)");
         }
+    }
+    // A copy of a region or joint adds nothing but work: the cutter's arrangement merges copies
+    // pairwise (a thousand copies of one region: minutes), so they are refused by name.
+    const auto key = [](const std::vector<Point2>& points) {
+        std::string text(points.size() * 2 * sizeof(double), '\0');
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            std::memcpy(&text[16 * k], &points[k].x, sizeof(double));
+            std::memcpy(&text[16 * k + 8], &points[k].y, sizeof(double));
+        }
+        return text;
+    };
+    std::unordered_map<std::string, std::size_t> first_region, first_joint;
+    for (std::size_t i = 0; i < m.regions.size(); ++i) {
+        const auto [it, fresh] = first_region.emplace(key(m.regions[i].boundary), i);
+        if (!fresh)
+            c.error("/regions/" + std::to_string(i) + "/boundary",
+                    "region \"" + m.regions[i].name + "\" has the boundary of region \"" + m.regions[it->second].name +
+                        "\" (/regions/" + std::to_string(it->second) + "): leave the copy out");
+    }
+    for (std::size_t i = 0; i < m.joints.size(); ++i) {
+        if (m.joints[i].joint_set >= 0) continue;
+        const auto [it, fresh] = first_joint.emplace(key(m.joints[i].points), i);
+        if (!fresh)
+            c.error("/joints/" + std::to_string(i) + "/points",
+                    "joint \"" + m.joints[i].name + "\" has the points of joint \"" + m.joints[it->second].name +
+                        "\" (/joints/" + std::to_string(it->second) + "): leave the copy out");
     }
     const auto model_box = m.bounds();
     for (std::size_t i = 0; i < m.joint_sets.size(); ++i) {

@@ -253,16 +253,31 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
     const auto inside = face_membership(arr);
 
     // Overlapping regions: a face inside two regions at once.
+    // (The first few pairs are named: a thousand copies of one region are half a million pairs.)
+    constexpr std::size_t named_overlaps = 10;
     std::set<std::pair<int, int>> overlaps;
-    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    bool more_overlaps = false;
+    for (auto f = arr.faces_begin(); f != arr.faces_end() && !more_overlaps; ++f) {
         const auto& in = inside.at(&*f);
-        for (std::size_t a = 0; a < in.size(); ++a)
-            for (std::size_t b = a + 1; b < in.size(); ++b) overlaps.insert({in[a], in[b]});
+        for (std::size_t a = 0; a < in.size() && !more_overlaps; ++a)
+            for (std::size_t b = a + 1; b < in.size(); ++b) {
+                overlaps.insert({in[a], in[b]});
+                if (overlaps.size() > named_overlaps) {
+                    more_overlaps = true;
+                    break;
+                }
+            }
     }
-    for (const auto& [a, b] : overlaps)
+    std::size_t named = 0;
+    for (const auto& [a, b] : overlaps) {
+        if (++named > named_overlaps) break;
         diagnostics.push_back({Diagnostic::Severity::Error, "/regions/" + std::to_string(b),
                                "region \"" + model.regions[b].name + "\" overlaps region \"" +
                                    model.regions[a].name + "\" (/regions/" + std::to_string(a) + ")"});
+    }
+    if (more_overlaps)
+        diagnostics.push_back({Diagnostic::Severity::Error, "/regions", "more regions overlap (the first " +
+                                                                            std::to_string(named_overlaps) + " pairs are named)"});
     if (!overlaps.empty()) return {};
 
     // A joint with no piece in any region is a mistake; the pieces that separate no blocks (they

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -141,6 +142,17 @@ public:
         }
         error(where, "must be a whole number, got " + (j.is_number() ? number_text(j.get<double>()) : type_name(j)));
         return fallback;
+    }
+
+    /// A whole number that an int holds (counts of steps, iterations, trials): beyond it the
+    /// value is an error, not wrapped around (4294967297 steps were read as 1).
+    int whole(const json& object, const std::string& path, const char* key, int fallback) {
+        const long v = integer(object, path, key, fallback);
+        if (v > std::numeric_limits<int>::max() || v < std::numeric_limits<int>::min()) {
+            error(path + "/" + key, "must be a whole number below 2147483648, got " + std::to_string(v));
+            return fallback;
+        }
+        return static_cast<int>(v);
     }
 
     bool boolean(const json& object, const std::string& path, const char* key, bool fallback) {
@@ -674,22 +686,22 @@ void parse_analysis_object(Parser& p, const json& o, const std::string& path, An
     if (type == "static" || type == "strength_reduction") a.kind = AnalysisSettings::Kind::Static;
     else if (type == "dynamic") a.kind = AnalysisSettings::Kind::Dynamic;
     else p.error(path + "/type", "must be \"static\", \"dynamic\" or \"strength_reduction\", got \"" + type + "\"");
-    a.max_trials = static_cast<int>(p.integer(o, path, "max_trials", a.max_trials));
+    a.max_trials = p.whole(o, path, "max_trials", a.max_trials);
     const std::string flow = p.string(o, path, "non_associated_flow",
                                        std::string(non_associated_flow_name(a.non_associated_flow)));
     if (flow == "davis") a.non_associated_flow = AnalysisSettings::NonAssociatedFlow::Davis;
     else if (flow == "direct") a.non_associated_flow = AnalysisSettings::NonAssociatedFlow::Direct;
     else p.error(path + "/non_associated_flow", "must be \"davis\" or \"direct\", got \"" + flow + "\"");
-    a.steps = static_cast<int>(p.integer(o, path, "steps", a.steps));
+    a.steps = p.whole(o, path, "steps", a.steps);
     read_fields_over(p, o, path, analysis_fields(), a);
-    a.max_open_close_iterations = static_cast<int>(p.integer(o, path, "open_close_iterations", a.max_open_close_iterations));
-    a.max_plastic_iterations = static_cast<int>(p.integer(o, path, "plastic_iterations", a.max_plastic_iterations));
+    a.max_open_close_iterations = p.whole(o, path, "open_close_iterations", a.max_open_close_iterations);
+    a.max_plastic_iterations = p.whole(o, path, "plastic_iterations", a.max_plastic_iterations);
     const std::string geometry = p.string(
         o, path, "geometry", std::string(a.geometry == AnalysisSettings::Geometry::Updated ? "updated" : "initial"));
     if (geometry == "updated") a.geometry = AnalysisSettings::Geometry::Updated;
     else if (geometry == "initial") a.geometry = AnalysisSettings::Geometry::Initial;
     else p.error(path + "/geometry", "must be \"updated\" or \"initial\", got \"" + geometry + "\"");
-    a.output_every = static_cast<int>(p.integer(o, path, "output_every", a.output_every));
+    a.output_every = p.whole(o, path, "output_every", a.output_every);
     a.plasticity = p.boolean(o, path, "plasticity", a.plasticity);
 }
 
@@ -885,7 +897,7 @@ void parse_stages(Parser& p, const json& root, Model& m, const std::map<std::str
                 p.check_keys(r, where, {"steps", "table"});
                 if (r.contains("steps") && r.contains("table"))
                     p.error(where, "give either \"steps\" or \"table\", not both");
-                st.release_steps = static_cast<int>(p.integer(r, where, "steps", 0));
+                st.release_steps = p.whole(r, where, "steps", 0);
                 if (st.release_steps < 0) p.error(where + "/steps", "must be 0 (all the stage's steps) or more");
                 st.release_table = optional_reference(p, r, where, "table", table_names, "load table");
             }
