@@ -709,25 +709,37 @@ void add_arrays(vtkDataSetAttributes* to, const std::vector<Array>& arrays, cons
     if (!scalars.empty()) to->SetActiveScalars(scalars.c_str());
 }
 
+/// The opening of a file of data set `type` up to its one <Piece>: the declaration, the
+/// <VTKFile> root, the data set element and its optional <FieldData> (read into `field_data`).
+struct Opening {
+    Tag root, body, piece;
+};
+Opening open_piece(Reader& r, const char* type, std::vector<Array>& field_data)
+{
+    r.prolog();
+    Opening o;
+    o.root = r.root(type);
+    o.body = r.expect_open(type, o.root);
+    r.allow_only(o.body, {});
+    r.not_empty(o.body);
+    o.piece = r.next_tag(element(o.body.name));
+    if (!o.piece.closing && o.piece.name == "FieldData") {
+        field_data = read_field_data(r, o.piece);
+        o.piece = r.next_tag(element(o.body.name));
+    }
+    if (o.piece.closing || o.piece.name != "Piece")
+        r.fail(o.piece.pos, "expected <Piece> inside <" + std::string(type) + ">, found <" + std::string(o.piece.closing ? "/" : "") +
+                                o.piece.name + ">");
+    return o;
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkUnstructuredGrid> read_result_grid(const std::string& path, const ExpectedMesh& mesh)
 {
     Reader r(path, "result file");
-    r.prolog();
-    const Tag root = r.root("UnstructuredGrid");
-    const Tag body = r.expect_open("UnstructuredGrid", root);
-    r.allow_only(body, {});
-    r.not_empty(body);
     std::vector<Array> field_data;
-    Tag piece = r.next_tag(element(body.name));
-    if (!piece.closing && piece.name == "FieldData") {
-        field_data = read_field_data(r, piece);
-        piece = r.next_tag(element(body.name));
-    }
-    if (piece.closing || piece.name != "Piece")
-        r.fail(piece.pos, "expected <Piece> inside <UnstructuredGrid>, found <" + std::string(piece.closing ? "/" : "") +
-                              piece.name + ">");
+    const auto [root, body, piece] = open_piece(r, "UnstructuredGrid", field_data);
     r.allow_only(piece, {"NumberOfPoints", "NumberOfCells"});
     const long long points = r.count(piece, "NumberOfPoints", false), cells = r.count(piece, "NumberOfCells", false);
     // The declared sizes against the model's before anything is read from them.
@@ -775,20 +787,8 @@ vtkSmartPointer<vtkUnstructuredGrid> read_result_grid(const std::string& path, c
 vtkSmartPointer<vtkPolyData> read_contacts_file(const std::string& path)
 {
     Reader r(path, "contacts file");
-    r.prolog();
-    const Tag root = r.root("PolyData");
-    const Tag body = r.expect_open("PolyData", root);
-    r.allow_only(body, {});
-    r.not_empty(body);
     std::vector<Array> field_data;
-    Tag piece = r.next_tag(element(body.name));
-    if (!piece.closing && piece.name == "FieldData") {
-        field_data = read_field_data(r, piece);
-        piece = r.next_tag(element(body.name));
-    }
-    if (piece.closing || piece.name != "Piece")
-        r.fail(piece.pos, "expected <Piece> inside <PolyData>, found <" + std::string(piece.closing ? "/" : "") +
-                              piece.name + ">");
+    const auto [root, body, piece] = open_piece(r, "PolyData", field_data);
     r.allow_only(piece, {"NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"});
     const long long points = r.count(piece, "NumberOfPoints"), verts = r.count(piece, "NumberOfVerts"),
                     lines = r.count(piece, "NumberOfLines");

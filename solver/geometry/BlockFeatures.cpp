@@ -120,8 +120,8 @@ std::optional<SmallFeature> find_small_feature(const Block& block, double tolera
     return std::nullopt;
 }
 
-std::optional<SharpCorner> find_sharp_corner(const Block& block, double limit_deg) {
-    std::optional<SharpCorner> sharpest;
+SharpCorner sharpest_corner(const Block& block) {
+    SharpCorner sharpest;
     auto visit = [&](const Ring& ring) {
         const std::size_t n = ring.size();
         for (std::size_t i = 0; i < n; ++i) {
@@ -132,12 +132,18 @@ std::optional<SharpCorner> find_sharp_corner(const Block& block, double limit_de
             // π minus the left turn from the incoming to the outgoing edge.
             const double ix = v.x - prev.x, iy = v.y - prev.y, ox = next.x - v.x, oy = next.y - v.y;
             const double angle = 180.0 - std::atan2(ix * oy - iy * ox, ix * ox + iy * oy) * 180.0 / M_PI;
-            if (angle < limit_deg && (!sharpest || angle < sharpest->angle_deg)) sharpest = SharpCorner{angle, v};
+            if (angle < sharpest.angle_deg) sharpest = SharpCorner{angle, v};
         }
     };
     visit(block.outer);
     for (const Ring& h : block.holes) visit(h);
     return sharpest;
+}
+
+std::optional<SharpCorner> find_sharp_corner(const Block& block, double limit_deg) {
+    const SharpCorner corner = sharpest_corner(block);
+    if (corner.angle_deg < limit_deg) return corner;
+    return std::nullopt;
 }
 
 void check_block_features(const Model& model, const std::vector<Block>& blocks, std::vector<Diagnostic>& diagnostics) {

@@ -43,11 +43,14 @@ constexpr double smallest_block_feature_ratio = 1e-5;
 /// settle (ten joints fanned 0.38° apart: 74 factorisations without finishing one step).
 constexpr double sharpest_corner_deg = 1.0;
 
-/// A corner of a block sharper than `limit_deg`, if any (the sharpest): its angle and vertex.
+/// A corner of a block: its interior angle and vertex.
 struct SharpCorner {
-    double angle_deg = 0.0;
+    double angle_deg = 180.0;
     Point2 where;
 };
+/// The sharpest corner of a block, over its outer ring and holes.
+SharpCorner sharpest_corner(const Block& block);
+/// The sharpest corner of a block if it is sharper than `limit_deg`.
 std::optional<SharpCorner> find_sharp_corner(const Block& block, double limit_deg);
 
 /// An error per block (the first few) with a feature below smallest_block_feature_ratio of the

@@ -1,5 +1,7 @@
 #include "mesh/MeshStatistics.hpp"
 
+#include "geometry/BlockFeatures.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -12,23 +14,7 @@ constexpr double to_deg = 180.0 / 3.14159265358979323846;
 
 double smallest_corner_angle_deg(const std::vector<Block>& blocks) {
     double smallest = 180.0;
-    auto visit = [&](const Ring& ring) {
-        const std::size_t n = ring.size();
-        for (std::size_t i = 0; i < n; ++i) {
-            const Point2& prev = ring[(i + n - 1) % n];
-            const Point2& v = ring[i];
-            const Point2& next = ring[(i + 1) % n];
-            // The block lies left of every ring edge (outer rings CCW, holes CW), so the
-            // interior angle is π minus the left turn from the incoming to the outgoing edge.
-            const double ix = v.x - prev.x, iy = v.y - prev.y, ox = next.x - v.x, oy = next.y - v.y;
-            const double turn = std::atan2(ix * oy - iy * ox, ix * ox + iy * oy);
-            smallest = std::min(smallest, 180.0 - turn * to_deg);
-        }
-    };
-    for (const Block& b : blocks) {
-        visit(b.outer);
-        for (const Ring& h : b.holes) visit(h);
-    }
+    for (const Block& b : blocks) smallest = std::min(smallest, sharpest_corner(b).angle_deg);
     return smallest;
 }
 
