@@ -405,8 +405,8 @@ double estimate_triangle_count(const Model& model, const std::vector<Block>& blo
         }
         // A block narrower than the size asked for is meshed at its width (the minimum angle
         // forbids long thin triangles): a sliver of width w and length L takes about L / w
-        // triangles, whatever the size field says. 4 A / P is the width of a strip (twice it)
-        // and the side of a square.
+        // triangles, whatever the size field says. 4 A / P measures the width: twice it for a
+        // long strip, the side for a square.
         double perimeter = 0.0;
         const auto add_ring = [&perimeter](const Ring& ring) {
             for (std::size_t k = 0; k < ring.size(); ++k) {
