@@ -177,6 +177,27 @@ StudyCheck check_study(const StudyDefinition& study, const std::vector<StudyRun>
 {
     StudyCheck check;
     if (runs.empty()) return check;
+    // Each run is started as `mcdda run MODEL --set …` (app/cli/StudyCommand.cpp): its settings
+    // must fit a command line (Linux: 128 KiB for one argument, about 2 MB for all of them and
+    // the environment), or the run cannot start at all.
+    constexpr std::size_t longest_setting = 100000, longest_settings = 1000000;
+    for (const StudyRun& run : runs) {
+        std::size_t total = 0, longest = 0;
+        for (const std::string& o : run.overrides) {
+            total += o.size() + 7;  // "--set", the terminating NULs
+            longest = std::max(longest, o.size());
+        }
+        if (total > longest_settings || longest > longest_setting) {
+            check.study.push_back({Diagnostic::Severity::Error, "/set",
+                                   "the " + std::to_string(run.overrides.size()) + " settings of run " +
+                                       std::to_string(run.index) + " (" + std::to_string(total) +
+                                       " bytes, the longest " + std::to_string(longest) +
+                                       ") do not fit the command line that starts it (at most " +
+                                       std::to_string(longest_settings) + " bytes, " +
+                                       std::to_string(longest_setting) + " for one): put them in the model"});
+            return check;
+        }
+    }
     const Preprocessed first = preprocess_file(study.model, runs.front().overrides, PreprocessStage::Validate);
     check.model = first.diagnostics;
     if (!first.ok) return check;
