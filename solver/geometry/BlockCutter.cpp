@@ -125,16 +125,22 @@ void add_cracks(Arrangement::Ccb_halfedge_const_circulator first, std::vector<Bl
     } while (++c != first);
 }
 
-/// The joints' polylines with every region vertex that lies within `tolerance` of a joint made
-/// a vertex of it: a joint drawn through a corner (a joint set through a tunnel's polygon) then
-/// passes exactly through it instead of a rounding error away, which would leave an edge of
-/// 1e-16 m that no mesher can resolve. The joint moves by less than the tolerance.
-std::vector<std::vector<Point2>> joints_through_nearby_vertices(const Model& model, double tolerance) {
-    std::vector<Point2> anchors;
+std::vector<Point2> region_vertices(const Model& model) {
+    std::vector<Point2> out;
     for (const Region& r : model.regions) {
-        anchors.insert(anchors.end(), r.boundary.begin(), r.boundary.end());
-        for (const Ring& h : r.holes) anchors.insert(anchors.end(), h.begin(), h.end());
+        out.insert(out.end(), r.boundary.begin(), r.boundary.end());
+        for (const Ring& h : r.holes) out.insert(out.end(), h.begin(), h.end());
     }
+    return out;
+}
+
+/// The joints' polylines with every anchor (a region vertex, a point where joints meet) that
+/// lies within `tolerance` of a joint made a vertex of it: a joint drawn through a corner (a
+/// joint set through a tunnel's polygon) then passes exactly through it instead of a rounding
+/// error away, which would leave an edge of 1e-16 m that no mesher can resolve. The joint moves
+/// by less than the tolerance.
+std::vector<std::vector<Point2>> joints_through_anchors(const Model& model, const std::vector<Point2>& anchors,
+                                                        double tolerance) {
     std::vector<std::vector<Point2>> out;
     out.reserve(model.joints.size());
     if (anchors.empty() || !(tolerance > 0.0)) {
@@ -207,6 +213,60 @@ std::vector<std::vector<Point2>> joints_through_nearby_vertices(const Model& mod
     return out;
 }
 
+/// One point (the mean) for each cluster of arrangement vertices closer than `tolerance` to one
+/// another, leaving out clusters with a region vertex (joints near one already pass through it:
+/// such a cluster is two regions' vertices, which stay as drawn); empty when there is none.
+std::vector<Point2> near_coincident_vertices(const Arrangement& arr, const std::vector<Point2>& region_points,
+                                             double tolerance) {
+    std::vector<Point2> points;
+    points.reserve(arr.number_of_vertices());
+    for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) points.push_back(to_point(v->point()));
+    // Vertices binned in cells of the tolerance: a close pair lies in neighbouring cells.
+    auto cell = [&](double v) { return static_cast<long long>(std::floor(v / tolerance)); };
+    std::map<std::pair<long long, long long>, std::vector<int>> bins;
+    for (std::size_t k = 0; k < points.size(); ++k) bins[{cell(points[k].x), cell(points[k].y)}].push_back(static_cast<int>(k));
+    std::vector<int> parent(points.size());
+    for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
+    auto root = [&](int k) {
+        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+        return k;
+    };
+    bool any = false;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const long long i = cell(points[k].x), j = cell(points[k].y);
+        for (long long di = -1; di <= 1; ++di)
+            for (long long dj = -1; dj <= 1; ++dj) {
+                const auto it = bins.find({i + di, j + dj});
+                if (it == bins.end()) continue;
+                for (int m : it->second)
+                    if (m > static_cast<int>(k) &&
+                        std::hypot(points[m].x - points[k].x, points[m].y - points[k].y) < tolerance) {
+                        parent[root(m)] = root(static_cast<int>(k));
+                        any = true;
+                    }
+            }
+    }
+    if (!any) return {};
+    std::set<std::pair<double, double>> fixed;
+    for (const Point2& p : region_points) fixed.insert({p.x, p.y});
+    struct Cluster {
+        Point2 sum{0.0, 0.0};
+        int count = 0;
+        bool fixed = false;
+    };
+    std::map<int, Cluster> clusters;  // by root
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        Cluster& c = clusters[root(static_cast<int>(k))];
+        c.sum = {c.sum.x + points[k].x, c.sum.y + points[k].y};
+        ++c.count;
+        c.fixed = c.fixed || fixed.count({points[k].x, points[k].y});
+    }
+    std::vector<Point2> out;
+    for (const auto& [r, c] : clusters)
+        if (c.count > 1 && !c.fixed) out.push_back({c.sum.x / c.count, c.sum.y / c.count});
+    return out;
+}
+
 }  // namespace
 
 std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagnostics) {
@@ -238,17 +298,34 @@ std::vector<Block> cut_blocks(const Model& model, std::vector<Diagnostic>& diagn
     }
     const auto box = model.bounds();
     const double size = std::hypot(box[2] - box[0], box[3] - box[1]);
-    const auto joint_paths = joints_through_nearby_vertices(model, smallest_feature_ratio * size);
-    for (std::size_t j = 0; j < model.joints.size(); ++j) {
-        const auto& pts = joint_paths[j];
-        for (std::size_t k = 1; k < pts.size(); ++k) {
-            if (pts[k].x == pts[k - 1].x && pts[k].y == pts[k - 1].y) continue;
-            curves.emplace_back(Kernel::Segment_2({pts[k - 1].x, pts[k - 1].y}, {pts[k].x, pts[k].y}),
-                                static_cast<int>(j));
+    const double tolerance = smallest_feature_ratio * size;
+    const std::size_t region_curves = curves.size();
+    auto add_joints = [&](const std::vector<Point2>& anchors) {
+        curves.resize(region_curves);
+        const auto joint_paths = joints_through_anchors(model, anchors, tolerance);
+        for (std::size_t j = 0; j < model.joints.size(); ++j) {
+            const auto& pts = joint_paths[j];
+            for (std::size_t k = 1; k < pts.size(); ++k) {
+                if (pts[k].x == pts[k - 1].x && pts[k].y == pts[k - 1].y) continue;
+                curves.emplace_back(Kernel::Segment_2({pts[k - 1].x, pts[k - 1].y}, {pts[k].x, pts[k].y}),
+                                    static_cast<int>(j));
+            }
         }
-    }
+    };
+    std::vector<Point2> anchors = region_vertices(model);
+    add_joints(anchors);
     Arrangement arr;
     CGAL::insert(arr, curves.begin(), curves.end());
+    // Joints drawn through one point (three or more) meet there only up to rounding: exactly,
+    // their crossings are a few points 1e-15 m apart, and the cut a sliver block. Such crossings
+    // become one point that every joint passes through, and the joints are cut again.
+    const std::vector<Point2> meeting = near_coincident_vertices(arr, anchors, tolerance);
+    if (!meeting.empty()) {
+        anchors.insert(anchors.end(), meeting.begin(), meeting.end());
+        add_joints(anchors);
+        arr.clear();
+        CGAL::insert(arr, curves.begin(), curves.end());
+    }
 
     const auto inside = face_membership(arr);
 

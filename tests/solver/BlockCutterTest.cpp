@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 using namespace mcdda;
 using mcdda::test::all_messages;
@@ -254,6 +255,43 @@ TEST(BlockCutter, AJointThroughPolygonVerticesPassesExactlyThroughThem) {
     EXPECT_NEAR(total_area(p.blocks), 1600.0 - 64 * 0.5 * 9 * std::sin(2 * M_PI / 64), 1e-6);
     EXPECT_GT(p.statistics.elements, 100);
     EXPECT_GE(p.statistics.min_angle_deg, 28.0 - 1e-9);
+}
+
+// Joints drawn through one point meet there only up to rounding: exactly, three or more of them
+// cross at a few points 1e-15 m apart, which made a sliver block ("an edge 0 m long") and refused
+// the model. Their crossings are made one point, and each joint passes through it.
+TEST(BlockCutter, JointsDrawnThroughOnePointMeetThereExactly) {
+    const double cx = 5.3, cy = 4.7;
+    for (int count : {3, 4, 7}) {
+        std::ostringstream joints;
+        joints.precision(17);
+        joints << "/joints=[";
+        for (int i = 0; i < count; ++i) {
+            const double angle = 3.0 * M_PI / 180.0 + i * M_PI / count;
+            const double dx = 20.0 * std::cos(angle), dy = 20.0 * std::sin(angle);
+            joints << (i ? "," : "") << "{\"name\": \"j" << i << "\", \"points\": [[" << cx - dx << "," << cy - dy
+                   << "],[" << cx + dx << "," << cy + dy << "]]}";
+        }
+        joints << "]";
+        const Preprocessed p = preprocess_text(square_model_json(), {joints.str()}, PreprocessStage::Mesh);
+        ASSERT_TRUE(p.ok) << count << " joints: " << all_messages(p.diagnostics);
+        EXPECT_EQ(p.blocks.size(), static_cast<std::size_t>(2 * count)) << count << " joints";
+        EXPECT_NEAR(total_area(p.blocks), 100.0, 1e-9);
+        // Every block has the meeting point as a corner, one and the same.
+        for (const Block& b : p.blocks) {
+            int corners_there = 0;
+            for (const Point2& q : b.outer) corners_there += std::hypot(q.x - cx, q.y - cy) < 1e-6;
+            EXPECT_EQ(corners_there, 1) << count << " joints";
+        }
+    }
+    // Joints ending in the rock (cracks) crossing at one point: one block.
+    const Preprocessed cracks = preprocess_text(
+        square_model_json(),
+        {R"(/joints=[{"name": "a", "points": [[2,5],[8,5]]}, {"name": "b", "points": [[3.5,2.4019237886],[6.5,7.5980762114]]},
+                     {"name": "c", "points": [[6.5,2.4019237886],[3.5,7.5980762114]]}])"},
+        PreprocessStage::Mesh);
+    ASSERT_TRUE(cracks.ok) << all_messages(cracks.diagnostics);
+    EXPECT_EQ(cracks.blocks.size(), 1u);
 }
 
 // Crossing joint sets make block corners in proportion to the product of their traces; more than
