@@ -464,7 +464,12 @@ bool EditingTools::enterCoordinates(const QString& text)
             tr("Type a point as \"x, y\" in metres, e.g. \"2.5, -1\" (or \"2,5; -1\")"), 5000);
         return false;
     }
+    // The view follows typed points (clicked ones are in sight already): the shape drawn so
+    // far, or the item the point finished.
+    std::vector<Point2> shape = tool->points();
     tool->addPoint(p);
+    shape.push_back(p);
+    view_->keepInView(shape);
     return true;
 }
 

@@ -165,10 +165,20 @@ int axes_bottom_pixels(double dpi) { return scaled(72, dpi); }
 void add_axes_and_scale_bar(vtkRenderer* renderer, const Box& box, double dpi)
 {
     if (renderer == nullptr || !box.valid()) return;
+    renderer->AddViewProp(make_axes_and_scale_bar(box, dpi));
+}
+
+vtkSmartPointer<vtkProp> make_axes_and_scale_bar(const Box& box, double dpi)
+{
     vtkNew<AxesOverlay> overlay;
     overlay->box = box;
     overlay->dpi = dpi;
-    renderer->AddViewProp(overlay);
+    return overlay.GetPointer();
+}
+
+void set_axes_box(vtkProp* axes, const Box& box)
+{
+    if (auto* overlay = AxesOverlay::SafeDownCast(axes)) overlay->box = box;
 }
 
 }  // namespace mcdda::view

@@ -3,6 +3,8 @@
 #include "tools/ViewTool.hpp"
 #include "view/Palette.hpp"
 #include "view/PictureText.hpp"
+#include "view/ScaleBar.hpp"
+#include "view/SceneGeometry.hpp"
 
 #include <QEvent>
 #include <QGuiApplication>
@@ -19,6 +21,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkProp.h>
 #include <vtkProperty.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -41,6 +44,9 @@ struct ModelView::Impl {
     vtkNew<vtkActor> preview_halo_actor;  ///< white under an emphasised (query) rubber band
     vtkNew<vtkActor> preview_actor;
     std::vector<Point2> preview;
+    /// Rulers over the picture while the first region is drawn (the model has no extent yet, so
+    /// the picture of the model has none).
+    vtkSmartPointer<vtkProp> drawing_axes;
     vtkNew<vtkPolyData> query_data;  ///< the query line and its end markers
     vtkNew<vtkActor> query_halo_actor;
     vtkNew<vtkActor> query_actor;
@@ -114,6 +120,8 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<
     impl_->preview_actor->GetProperty()->LightingOff();
     impl_->preview_actor->VisibilityOff();
     impl_->overlay->AddActor(impl_->preview_actor);
+    impl_->drawing_axes = view::make_axes_and_scale_bar(view::Box{}, 72.0);
+    impl_->overlay->AddViewProp(impl_->drawing_axes);
 
     halo(impl_->query_halo_actor, impl_->query_data, 7.0f, 15.0f);
     impl_->overlay->AddActor(impl_->query_halo_actor);
@@ -504,7 +512,32 @@ void ModelView::setPreview(const std::vector<Point2>& points, bool closed, bool 
     impl_->preview_actor->GetProperty()->SetColor(c[0], c[1], c[2]);
     impl_->preview_actor->GetProperty()->SetLineWidth(emphasised ? 3.0f : 2.0f);
     impl_->preview_actor->GetProperty()->SetPointSize(emphasised ? 9.0f : 6.0f);
+    const bool model_empty = !impl_->scene || !view::model_box(*impl_->scene).valid();
+    view::Box everywhere;  // the rulers mark whatever is in sight
+    if (model_empty && n > 0) everywhere = {-1e300, -1e300, 1e300, 1e300};
+    view::set_axes_box(impl_->drawing_axes, everywhere);
     update();
+}
+
+void ModelView::keepInView(const std::vector<Point2>& points)
+{
+    if (points.empty() || width() <= 0 || height() <= 0) return;
+    // The rulers take the left and bottom edges: a point under them is not in sight.
+    const double dpi = impl_->window->GetDPI() > 0 ? impl_->window->GetDPI() : 72.0;
+    const QRectF shown(QPointF(view::axes_left_pixels(dpi), 0),
+                       QPointF(width(), height() - view::axes_bottom_pixels(dpi)));
+    view::Box box;
+    bool outside = false;
+    for (const Point2& p : points) {
+        box.add(p);
+        outside = outside || !shown.contains(toWidget(QPointF(p.x, p.y)));
+    }
+    if (!outside) return;
+    // What is in sight stays in sight (the rest of the model), with the points added.
+    const QPointF low = toModel(shown.bottomLeft()), high = toModel(shown.topRight());
+    box.add({low.x(), low.y()});
+    box.add({high.x(), high.y()});
+    showBox(box.xmin, box.ymin, box.xmax, box.ymax);
 }
 
 void ModelView::clearPreview() { setPreview({}, false); }

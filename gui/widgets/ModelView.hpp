@@ -105,6 +105,9 @@ public:
     bool queryLine(Point2* from = nullptr, Point2* to = nullptr) const;
     /// Whether the query line is drawn in the picture now (set, and a result shown).
     bool queryLineShown() const;
+    /// Widens the view to show `points` where one of them is out of sight (a point typed far
+    /// off), keeping in sight what was; counts as navigating.
+    void keepInView(const std::vector<Point2>& points);
     /// Shows the model box [xmin, xmax] × [ymin, ymax] (with a margin); counts as navigating.
     void showBox(double xmin, double ymin, double xmax, double ymax);
 

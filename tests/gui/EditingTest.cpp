@@ -60,6 +60,7 @@ private slots:
     void viewMenuMessagesAndStepLabel();
     void helpShowsTheUserGuide();
     void newModelTalksOfRegionsAndFitsTheFirst();
+    void typedPointsStayInSightWithRulers();
     void stageListShowsAndEditsStages();
     void boltToolDrawsABolt();
     void tinyBlocksAreReported();
@@ -526,6 +527,69 @@ void EditingTest::newModelTalksOfRegionsAndFitsTheFirst()
     QVERIFY(guitest::count_around(*view, 230.0, 120.0, rock) > 40);
     // Now "nothing is fixed" is worth saying.
     QVERIFY2(window.messages().contains(QStringLiteral("nothing is fixed")), qPrintable(window.messages()));
+}
+
+namespace {
+
+/// Near-black pixels (ruler lines, ticks and numbers) in the strips the rulers take along the
+/// left and bottom edges of the picture.
+int ruler_ink(const QImage& picture)
+{
+    int ink = 0;
+    for (int y = 0; y < picture.height(); ++y)
+        for (int x = 0; x < picture.width(); ++x) {
+            if (x >= 50 && y < picture.height() - 38) continue;
+            const QColor c = picture.pixelColor(x, y);
+            ink += c.red() < 90 && c.green() < 90 && c.blue() < 90;
+        }
+    return ink;
+}
+
+}  // namespace
+
+// Typing the first region of a new model: rulers from the first point on (the model has no
+// extent yet), and the view widens to a point typed beyond it instead of letting the shape run
+// off the picture.
+void EditingTest::typedPointsStayInSightWithRulers()
+{
+    MainWindow window;
+    window.setAskToSave(false);
+    window.resize(1000, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QTRY_VERIFY(!window.isPreprocessing());
+    gui::ModelView* view = window.modelView();
+    window.drawRegionTool();
+    auto* field = window.findChild<QLineEdit*>(QStringLiteral("coordinateEdit"));
+    const int empty_ink = ruler_ink(view->grabFrame());
+    type_point(field, QStringLiteral("0, 0"));
+    const int drawing_ink = ruler_ink(view->grabFrame());
+    QVERIFY2(drawing_ink > empty_ink + 100, qPrintable(QStringLiteral("ruler ink %1 before the first point, %2 after")
+                                                           .arg(empty_ink).arg(drawing_ink)));
+    // Far beyond the picture (it shows a few tens of metres): the view follows, and both points
+    // and the edge between them are drawn.
+    const QRect shown = view->rect();
+    QVERIFY(!shown.contains(guitest::pixel_of(*view, 400.0, 300.0)));
+    type_point(field, QStringLiteral("400, 300"));
+    for (auto [x, y] : {std::pair{0.0, 0.0}, {400.0, 300.0}})
+        QVERIFY2(shown.contains(guitest::pixel_of(*view, x, y)), qPrintable(QStringLiteral("(%1, %2) not in view").arg(x).arg(y)));
+    const QImage wide = view->grabFrame();
+    const QPoint middle = guitest::pixel_of(*view, 200.0, 150.0);
+    int blue = 0;
+    for (int dy = -3; dy <= 3; ++dy)
+        for (int dx = -3; dx <= 3; ++dx) {
+            const QColor c = wide.pixelColor(middle.x() + dx, middle.y() + dy);
+            blue += c.blue() > 150 && c.red() < 80;
+        }
+    QVERIFY2(blue > 0, "the edge being drawn is not in the picture");
+    // The rulers now span hundreds of metres: still drawn.
+    QVERIFY(ruler_ink(wide) > empty_ink + 100);
+    // Once the region is closed the model's own rulers take over.
+    type_point(field, QStringLiteral("0, 300"));
+    type_point(field, QString());
+    QTRY_VERIFY_WITH_TIMEOUT(!window.isPreprocessing() && view->scene() && !view->scene()->model.regions.empty(), 30000);
+    QVERIFY(ruler_ink(view->grabFrame()) > empty_ink + 100);
 }
 
 // Stages in the window: the Stages dock lists the staged jointed tunnel's stages; the
