@@ -89,7 +89,9 @@ public:
     /// One group: its code's line number, code and value.
     void group(std::size_t line, int code, const std::string& value)
     {
-        if (code == 0) {
+        // dxflib starts an entity (or a header variable) at group code 9 as at 0: "9 LWPOLYLINE"
+        // followed by a count of 10⁹ made it allocate for 10⁹ vertices.
+        if (code == 0 || code == 9) {
             finish();
             entity_ = Entity{value, line, {}, {}, {}, 0};
             return;

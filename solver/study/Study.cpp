@@ -14,6 +14,7 @@
 #include <fstream>
 #include <numeric>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -47,8 +48,11 @@ double unit(std::mt19937_64& random) { return static_cast<double>(random() >> 11
 class Reader {
 public:
     explicit Reader(std::vector<Diagnostic>& d) : d_(d) {}
+    /// The first problems are listed, then that there are more: a file of 46,000 copies of one
+    /// parameter once made a billion messages (24 GB).
     void error(const std::string& path, const std::string& message) {
-        d_.push_back({Diagnostic::Severity::Error, path, message});
+        if (++errors_ <= most_errors) d_.push_back({Diagnostic::Severity::Error, path, message});
+        else if (errors_ == most_errors + 1) d_.push_back({Diagnostic::Severity::Error, "", "more problems not listed"});
     }
     bool number(const json& j, const std::string& path, double& out) {
         if (!j.is_number()) {
@@ -72,7 +76,9 @@ public:
     }
 
 private:
+    static constexpr int most_errors = 50;
     std::vector<Diagnostic>& d_;
+    int errors_ = 0;
 };
 
 /// A value as a message quotes it: "2", "1.5", "the text \"1\"", "a list".
@@ -195,6 +201,7 @@ std::optional<StudyDefinition> read_study_text(const std::string& text, const st
     }
     const json parameters = root.contains("parameters") ? root["parameters"] : json::array();
     if (!parameters.is_array() || parameters.empty()) r.error("/parameters", "a study varies at least one field");
+    std::set<std::string> names;
     for (std::size_t i = 0; parameters.is_array() && i < parameters.size(); ++i) {
         const std::string path = "/parameters/" + std::to_string(i);
         const json& o = parameters[i];
@@ -234,8 +241,7 @@ std::optional<StudyDefinition> read_study_text(const std::string& text, const st
         }
         if (s.design == StudyDefinition::Design::Grid && p.uniform)
             r.error(path + "/uniform", "a grid design needs \"values\" or \"range\" (uniform draws need latin_hypercube or monte_carlo)");
-        for (const StudyParameter& q : s.parameters)
-            if (q.name == p.name) r.error(path + "/name", "another parameter is called \"" + p.name + "\"");
+        if (!names.insert(p.name).second) r.error(path + "/name", "another parameter is called \"" + p.name + "\"");
         s.parameters.push_back(p);
     }
     const json outputs = root.contains("outputs") ? root["outputs"] : json::array();
