@@ -1460,17 +1460,17 @@
         <translation>Einen Punkt als „x, y“ in Metern eingeben, z. B. „2.5, -1“ (oder „2,5; -1“)</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="515"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="520"/>
         <source>Import a ground motion first (Earthquake dock): the compliant base is where it enters the model.</source>
         <translation>Zuerst eine Bodenbewegung importieren (Fenster Erdbeben): die nachgiebige Basis ist die Stelle, an der sie in das Modell eintritt.</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="519"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="524"/>
         <source>Click the two ends of the compliant base</source>
         <translation>Die beiden Enden der nachgiebigen Basis anklicken</translation>
     </message>
     <message>
-        <location filename="../gui/tools/EditingTools.cpp" line="532"/>
+        <location filename="../gui/tools/EditingTools.cpp" line="537"/>
         <source>%1 was not deleted: a region or hole keeps at least three vertices.</source>
         <translation>%1 wurde nicht gelöscht: ein Bereich oder Loch behält mindestens drei Eckpunkte.</translation>
     </message>
@@ -3948,12 +3948,12 @@
         <translation>; %1: ux %2 mm, uy %3 mm</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="88"/>
+        <location filename="../gui/session/RunMessages.cpp" line="94"/>
         <source>Draw a region to start</source>
         <translation>Zuerst einen Bereich zeichnen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="90"/>
+        <location filename="../gui/session/RunMessages.cpp" line="96"/>
         <source>Not meshed: %n error(s)</source>
         <translation>
             <numerusform>Nicht vernetzt: %n Fehler</numerusform>
@@ -3961,17 +3961,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="93"/>
+        <location filename="../gui/session/RunMessages.cpp" line="99"/>
         <source>%1 blocks, %2 nodes, %3 elements, smallest angle %4°</source>
         <translation>%1 Blöcke, %2 Knoten, %3 Elemente, kleinster Winkel %4°</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="106"/>
+        <location filename="../gui/session/RunMessages.cpp" line="112"/>
         <source>pre-processing stopped without a message</source>
         <translation>die Vorverarbeitung brach ohne Meldung ab</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="115"/>
+        <location filename="../gui/session/RunMessages.cpp" line="121"/>
         <source>... and %n more</source>
         <translation>
             <numerusform>... und %n weitere</numerusform>
@@ -3979,17 +3979,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="122"/>
+        <location filename="../gui/session/RunMessages.cpp" line="128"/>
         <source>load step %1/%2  contacts open/sliding/locked %3/%4/%5  plastic iterations %6  yielding %7</source>
         <translation>Lastschritt %1/%2  Kontakte offen/gleitend/haftend %3/%4/%5  plastische Iterationen %6  plastifizierend %7</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="131"/>
+        <location filename="../gui/session/RunMessages.cpp" line="137"/>
         <source>step %1/%2  t = %3 s  dt = %4 s  contacts open/sliding/locked %5/%6/%7  plastic iterations %8  yielding %9</source>
         <translation>Zeitschritt %1/%2  t = %3 s  dt = %4 s  Kontakte offen/gleitend/haftend %5/%6/%7  plastische Iterationen %8  plastifizierend %9</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="146"/>
+        <location filename="../gui/session/RunMessages.cpp" line="152"/>
         <source>Step %1: equilibrium iteration %2, out-of-balance %3 (tolerance %4), %n point(s) yielding</source>
         <translation>
             <numerusform>Schritt %1: Gleichgewichtsiteration %2, Ungleichgewicht %3 (Toleranz %4), %n Punkt plastifiziert</numerusform>
@@ -3997,12 +3997,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="157"/>
+        <location filename="../gui/session/RunMessages.cpp" line="163"/>
         <source>Strength reduction: trial %1, strengths divided by %2...</source>
         <translation>Festigkeitsreduktion: Versuch %1, Festigkeiten geteilt durch %2 …</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="164"/>
+        <location filename="../gui/session/RunMessages.cpp" line="170"/>
         <source>largest displacement %1 m, %n iteration(s), %2 s</source>
         <translation>
             <numerusform>größte Verschiebung %1 m, %n Iteration, %2 s</numerusform>
@@ -4010,37 +4010,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="170"/>
+        <location filename="../gui/session/RunMessages.cpp" line="176"/>
         <source>Trial %1: F = %2 stands (%3)</source>
         <translation>Versuch %1: F = %2 steht (%3)</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="174"/>
+        <location filename="../gui/session/RunMessages.cpp" line="180"/>
         <source>Trial %1: F = %2 does not stand (%3): %4</source>
         <translation>Versuch %1: F = %2 steht nicht (%3): %4</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="184"/>
+        <location filename="../gui/session/RunMessages.cpp" line="190"/>
         <source>above %1</source>
         <translation>über %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="186"/>
+        <location filename="../gui/session/RunMessages.cpp" line="192"/>
         <source>below %1</source>
         <translation>unter %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="188"/>
+        <location filename="../gui/session/RunMessages.cpp" line="194"/>
         <source>between %1 and %2</source>
         <translation>zwischen %1 und %2</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="191"/>
+        <location filename="../gui/session/RunMessages.cpp" line="197"/>
         <source>not found</source>
         <translation>nicht gefunden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="197"/>
+        <location filename="../gui/session/RunMessages.cpp" line="203"/>
         <source>Factor of safety %1 (%n trial(s)).</source>
         <translation>
             <numerusform>Sicherheitsfaktor %1 (%n Versuch).</numerusform>
@@ -4048,7 +4048,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="199"/>
+        <location filename="../gui/session/RunMessages.cpp" line="205"/>
         <source>Factor of safety %1: the model stands with its strengths divided by %2, not by %3 (%n trial(s)).</source>
         <translation>
             <numerusform>Sicherheitsfaktor %1: das Modell steht mit durch %2 geteilten Festigkeiten, nicht mit durch %3 geteilten (%n Versuch).</numerusform>
@@ -4056,7 +4056,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/session/RunMessages.cpp" line="210"/>
+        <location filename="../gui/session/RunMessages.cpp" line="216"/>
         <source>Run completed: %n step(s).</source>
         <translation>
             <numerusform>Berechnung abgeschlossen: %n Schritt.</numerusform>
@@ -4064,22 +4064,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="215"/>
+        <location filename="../gui/session/RunMessages.cpp" line="221"/>
         <source>Run ended but the model is not in equilibrium: %1</source>
         <translation>Berechnung beendet, aber das Modell ist nicht im Gleichgewicht: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="217"/>
+        <location filename="../gui/session/RunMessages.cpp" line="223"/>
         <source>Run stopped after step %1.</source>
         <translation>Berechnung nach Schritt %1 abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="218"/>
+        <location filename="../gui/session/RunMessages.cpp" line="224"/>
         <source>The model collapsed: %1</source>
         <translation>Das Modell ist kollabiert: %1</translation>
     </message>
     <message>
-        <location filename="../gui/session/RunMessages.cpp" line="219"/>
+        <location filename="../gui/session/RunMessages.cpp" line="225"/>
         <source>The run failed: %1</source>
         <translation>Die Berechnung ist fehlgeschlagen: %1</translation>
     </message>
@@ -4638,182 +4638,182 @@
     <name>mcdda::view</name>
     <message>
         <location filename="../gui/results/QueryPlot.cpp" line="54"/>
-        <location filename="../gui/view/ResultProbe.cpp" line="37"/>
-        <location filename="../gui/view/ResultScene.cpp" line="56"/>
+        <location filename="../gui/view/ResultProbe.cpp" line="70"/>
+        <location filename="../gui/view/ResultScene.cpp" line="57"/>
         <source>elastic</source>
         <translation>elastisch</translation>
     </message>
     <message>
         <location filename="../gui/results/QueryPlot.cpp" line="55"/>
-        <location filename="../gui/view/ResultProbe.cpp" line="38"/>
-        <location filename="../gui/view/ResultScene.cpp" line="56"/>
+        <location filename="../gui/view/ResultProbe.cpp" line="71"/>
+        <location filename="../gui/view/ResultScene.cpp" line="57"/>
         <source>yielded before</source>
         <translation>früher plastifiziert</translation>
     </message>
     <message>
         <location filename="../gui/results/QueryPlot.cpp" line="56"/>
-        <location filename="../gui/view/ResultProbe.cpp" line="39"/>
-        <location filename="../gui/view/ResultScene.cpp" line="56"/>
+        <location filename="../gui/view/ResultProbe.cpp" line="72"/>
+        <location filename="../gui/view/ResultScene.cpp" line="57"/>
         <source>yielding now</source>
         <translation>plastifiziert jetzt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="81"/>
+        <location filename="../gui/view/ResultScene.cpp" line="82"/>
         <source>plastic state</source>
         <translation>plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="82"/>
+        <location filename="../gui/view/ResultScene.cpp" line="83"/>
         <source>plastic strain</source>
         <translation>plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="103"/>
+        <location filename="../gui/view/ResultScene.cpp" line="104"/>
         <source>displacement increment</source>
         <translation>Verschiebungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="105"/>
+        <location filename="../gui/view/ResultScene.cpp" line="106"/>
         <source>plastic strain increment</source>
         <translation>plastisches Dehnungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="83"/>
+        <location filename="../gui/view/ResultScene.cpp" line="84"/>
         <source>displacement</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="84"/>
+        <location filename="../gui/view/ResultScene.cpp" line="85"/>
         <source>x displacement</source>
         <translation>Verschiebung x</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="85"/>
+        <location filename="../gui/view/ResultScene.cpp" line="86"/>
         <source>y displacement</source>
         <translation>Verschiebung y</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="86"/>
+        <location filename="../gui/view/ResultScene.cpp" line="87"/>
         <source>stress xx</source>
         <translation>Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="87"/>
+        <location filename="../gui/view/ResultScene.cpp" line="88"/>
         <source>stress yy</source>
         <translation>Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="88"/>
+        <location filename="../gui/view/ResultScene.cpp" line="89"/>
         <source>shear stress xy</source>
         <translation>Schubspannung xy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="89"/>
+        <location filename="../gui/view/ResultScene.cpp" line="90"/>
         <source>principal stress 1</source>
         <translation>Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="90"/>
+        <location filename="../gui/view/ResultScene.cpp" line="91"/>
         <source>principal stress 3</source>
         <translation>Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1010"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1041"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="1011"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1042"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="869"/>
+        <location filename="../gui/view/ResultScene.cpp" line="900"/>
         <source>block boundary</source>
         <translation>Blockrand</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="93"/>
+        <location filename="../gui/view/ResultScene.cpp" line="94"/>
         <source>pore pressure</source>
         <translation>Porenwasserdruck</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="94"/>
+        <location filename="../gui/view/ResultScene.cpp" line="95"/>
         <source>effective stress xx</source>
         <translation>effektive Spannung xx</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="95"/>
+        <location filename="../gui/view/ResultScene.cpp" line="96"/>
         <source>effective stress yy</source>
         <translation>effektive Spannung yy</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="97"/>
+        <location filename="../gui/view/ResultScene.cpp" line="98"/>
         <source>effective principal stress 1</source>
         <translation>effektive Hauptspannung 1</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="99"/>
+        <location filename="../gui/view/ResultScene.cpp" line="100"/>
         <source>effective principal stress 3</source>
         <translation>effektive Hauptspannung 3</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="871"/>
+        <location filename="../gui/view/ResultScene.cpp" line="902"/>
         <source>joint</source>
         <translation>Kluft</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="874"/>
+        <location filename="../gui/view/ResultScene.cpp" line="905"/>
         <source>water table</source>
         <translation>Grundwasserspiegel</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="881"/>
+        <location filename="../gui/view/ResultScene.cpp" line="912"/>
         <source>contact force, largest</source>
         <translation>Kontaktkraft, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="884"/>
+        <location filename="../gui/view/ResultScene.cpp" line="915"/>
         <source>bolt</source>
         <translation>Anker</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="888"/>
+        <location filename="../gui/view/ResultScene.cpp" line="919"/>
         <source>joint slip, largest</source>
         <translation>Kluftverschiebung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="893"/>
+        <location filename="../gui/view/ResultScene.cpp" line="924"/>
         <source>joint opening, largest</source>
         <translation>Kluftöffnung, größte</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="917"/>
+        <location filename="../gui/view/ResultScene.cpp" line="948"/>
         <source>uniform:</source>
         <translation>gleichförmig:</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="963"/>
+        <location filename="../gui/view/ResultScene.cpp" line="994"/>
         <source>strengths divided by</source>
         <translation>Festigkeiten geteilt durch</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="968"/>
+        <location filename="../gui/view/ResultScene.cpp" line="999"/>
         <source>load step</source>
         <translation>Lastschritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="969"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1000"/>
         <source>step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="974"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1005"/>
         <source>stage</source>
         <translation>Bauphase</translation>
     </message>
     <message>
-        <location filename="../gui/view/ResultScene.cpp" line="981"/>
+        <location filename="../gui/view/ResultScene.cpp" line="1012"/>
         <source>deformed</source>
         <translation>verformt</translation>
     </message>
@@ -4896,6 +4896,11 @@
         <location filename="../gui/view/SceneLegend.cpp" line="225"/>
         <source>Measurement point</source>
         <translation>Messpunkt</translation>
+    </message>
+    <message>
+        <location filename="../gui/view/ResultProbe.cpp" line="58"/>
+        <source>bolt, axial force</source>
+        <translation>Anker, Axialkraft</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,7 @@
 
 #include "view/PictureText.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -29,7 +30,39 @@ bool ResultProbe::valueAt(double x, double y, double* value) const
     return false;
 }
 
+namespace {
+
+double distance_to_segment(double x, double y, Point2 a, Point2 b)
+{
+    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+    const double t = length2 > 0.0 ? std::clamp(((x - a.x) * dx + (y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+    return std::hypot(x - (a.x + t * dx), y - (a.y + t * dy));
+}
+
+}  // namespace
+
 std::string ResultProbe::describe(double x, double y) const
+{
+    // A bolt under the point first: its force is what one points at a bolt for.
+    const Bolt* nearest = nullptr;
+    double nearest_distance = bolt_reach;
+    for (const Bolt& b : bolts)
+        if (const double d = distance_to_segment(x, y, b.from, b.to); d <= nearest_distance) {
+            nearest = &b;
+            nearest_distance = d;
+        }
+    std::string bolt;
+    if (nearest) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%.3g", nearest->force / 1e3);
+        bolt = picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt, axial force")) + " " + number + " kN/m";
+    }
+    const std::string field = describe_field(x, y);
+    if (bolt.empty()) return field;
+    return field.empty() ? bolt : bolt + "; " + field;
+}
+
+std::string ResultProbe::describe_field(double x, double y) const
 {
     double v = 0.0;
     if (empty() || !valueAt(x, y, &v)) return {};

@@ -15,8 +15,8 @@ namespace mcdda::view {
 class ResultProbe {
 public:
     /// The field at the model point (x, y) of the picture as text, e.g. "principal stress 1 =
-    /// -12.3 MPa" or "plastic state: yielding now" (translated by picture_text); empty outside
-    /// the mesh or for an empty probe.
+    /// -12.3 MPa" or "plastic state: yielding now" (translated by picture_text), led by the axial
+    /// force of a bolt there; empty outside the mesh or for an empty probe.
     std::string describe(double x, double y) const;
     /// The value at (x, y) in the legend's units (a state 0, 1, 2 for plastic_state); false
     /// outside the mesh.
@@ -31,6 +31,17 @@ public:
     bool categorical = false;                         ///< plastic_state
     std::string title;                                ///< the field as the legend names it
     std::string units;                                ///< m, kPa, MPa, -, ...
+
+    /// A bolt as drawn, with its axial force (N/m, tension positive).
+    struct Bolt {
+        Point2 from, to;
+        double force = 0.0;
+    };
+    std::vector<Bolt> bolts;
+    double bolt_reach = 0.0;  ///< how near a bolt (m) a point is on it: a few pixels
+
+private:
+    std::string describe_field(double x, double y) const;
 };
 
 }  // namespace mcdda::view

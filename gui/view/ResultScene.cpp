@@ -820,16 +820,23 @@ void add_slip_and_opening(vtkRenderer* renderer, vtkPolyData* c, const std::vect
     }
 }
 
-/// Bolts: the poly data's lines, between their anchors. True when there is one.
-bool add_bolt_lines(vtkRenderer* renderer, vtkPolyData* c, double z_step, double pixel)
+/// Bolts beyond this many are not labelled with their forces (the labels would cover the picture;
+/// the cursor still tells each one's force).
+constexpr std::size_t most_bolt_labels = 20;
+
+/// Bolts: the poly data's lines, between their anchors, each labelled with its axial force
+/// (kN/m) at its middle; `shown` learns them for the cursor. True when there is one.
+bool add_bolt_lines(vtkRenderer* renderer, vtkPolyData* c, const Box& box, double z_step, double pixel,
+                    ResultProbe& shown)
 {
-    // Bolts: the poly data's lines, between their anchors.
     vtkNew<vtkPoints> bolt_points;
     vtkNew<vtkCellArray> bolt_lines;
     vtkCellArray* lines_in = c->GetLines();
+    vtkDataArray* force = c->GetCellData()->GetArray("bolt_force");
     vtkNew<vtkIdList> line;
     lines_in->InitTraversal();
-    while (lines_in->GetNextCell(line) != 0) {
+    // Cell data runs over the vertices first, then the lines.
+    for (vtkIdType cell = c->GetNumberOfVerts(); lines_in->GetNextCell(line) != 0; ++cell) {
         if (line->GetNumberOfIds() < 2) continue;
         double a[3], b[3];
         c->GetPoint(line->GetId(0), a);
@@ -837,7 +844,29 @@ bool add_bolt_lines(vtkRenderer* renderer, vtkPolyData* c, double z_step, double
         const vtkIdType l[2] = {bolt_points->InsertNextPoint(a[0], a[1], 5.0 * z_step),
                                 bolt_points->InsertNextPoint(b[0], b[1], 5.0 * z_step)};
         bolt_lines->InsertNextCell(2, l);
+        const double f = force != nullptr && cell < force->GetNumberOfTuples() ? force->GetTuple1(cell) : 0.0;
+        shown.bolts.push_back({{a[0], a[1]}, {b[0], b[1]}, f});
     }
+    shown.bolt_reach = 0.01 * box.size();
+    if (force != nullptr && shown.bolts.size() <= most_bolt_labels)
+        for (const ResultProbe::Bolt& bolt : shown.bolts) {
+            char text[48];
+            std::snprintf(text, sizeof text, "%.3g kN/m", bolt.force / 1e3);
+            vtkNew<vtkTextActor> label;
+            label->SetInput(text);
+            vtkTextProperty* t = label->GetTextProperty();
+            t->SetFontFamilyToArial();
+            t->SetFontSize(static_cast<int>(std::lround(10 * pixel)));
+            t->SetColor(0.0, 0.0, 0.0);
+            t->SetBackgroundColor(1.0, 1.0, 1.0);
+            t->SetBackgroundOpacity(0.75);
+            t->SetJustificationToCentered();
+            t->SetVerticalJustificationToBottom();
+            label->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+            label->GetPositionCoordinate()->SetValue(0.5 * (bolt.from.x + bolt.to.x), 0.5 * (bolt.from.y + bolt.to.y),
+                                                     6.0 * z_step);
+            renderer->AddActor2D(label);
+        }
     vtkNew<vtkPolyData> bolts_data;
     bolts_data->SetPoints(bolt_points);
     bolts_data->SetLines(bolt_lines);
@@ -846,7 +875,8 @@ bool add_bolt_lines(vtkRenderer* renderer, vtkPolyData* c, double z_step, double
 }
 
 /// Contact forces, joint slip and opening, and bolts (docs/running.md, the contacts files).
-ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, const Box& box, double z_step, double pixel)
+ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, const Box& box, double z_step, double pixel,
+                               ResultProbe& shown)
 {
     ContactMarks m;
     m.drawn = c != nullptr;
@@ -854,7 +884,7 @@ ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, const Box&
     const std::vector<vtkIdType> at = contact_vertices(c);
     m.largest_force = add_force_ticks(renderer, c, at, box, z_step, pixel);
     add_slip_and_opening(renderer, c, at, box, z_step, pixel, m);
-    m.any_bolt = add_bolt_lines(renderer, c, z_step, pixel);
+    m.any_bolt = add_bolt_lines(renderer, c, box, z_step, pixel, shown);
     return m;
 }
 
@@ -1023,7 +1053,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     add_block_outlines(renderer, grid, cells.points, cells.point_count, z_step, pixel);
     const bool joints = add_joints(renderer, model, grid, options, cells.deform, z_step, pixel);
     const bool water = add_water_table(renderer, model, r, options, box, z_step, pixel);
-    const ContactMarks marks = add_contact_marks(renderer, r.contacts, box, z_step, pixel);
+    const ContactMarks marks = add_contact_marks(renderer, r.contacts, box, z_step, pixel, shown);
     const double reserved = colouring.categorical ? add_state_legend(renderer, field, joints, water, marks, drew.legend)
                                                   : add_scale_bar(renderer, field, colouring, sign_note, options);
     const std::string title = result_title(model, r, options, shown.title, cells.deform);

@@ -16,6 +16,10 @@ struct Contact {
     bool intact = true;      ///< cohesion and tensile strength still act (lost once opened or slid)
     double shear_spring = 0.0;  ///< committed elastic shear displacement of a locked contact (m)
     double slip_total = 0.0;    ///< relative shear displacement along the edge while closed, summed (m)
+    /// The gap (≥ 0) when the contact was first found. An open contact's opening counts from it:
+    /// a vertex at a joint junction may face another block's edge across a gap of the geometry
+    /// (a corner, the model's edge), which is not the joint opening.
+    double gap_found = 0.0;
 
     // Results of the last solve, for output and the next open–close check.
     double gap = 0.0;           ///< dn after the increment: > 0 open, < 0 penetration (m)

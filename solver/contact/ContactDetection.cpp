@@ -187,6 +187,7 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
                     c.intact = old.intact;
                     c.shear_spring = old.shear_spring;
                     c.slip_total = old.slip_total;
+                    c.gap_found = old.gap_found;
                     c.normal_force = old.normal_force;
                     c.shear_force = old.shear_force;
                 } else {
@@ -194,6 +195,7 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
                     const Point2 a = nodes[edge.from], b = nodes[edge.to], p = nodes[node];
                     const double gap = signed_gap(p, a, b);
                     c.state = gap <= 1e-9 * topology.model_size ? ContactState::Locked : ContactState::Open;
+                    c.gap_found = std::max(0.0, gap);
                     if (c.state == ContactState::Locked && expected_increment.size() > 0) {
                         const double l = std::hypot(b.x - a.x, b.y - a.y);
                         const double tx = (b.x - a.x) / l, ty = (b.y - a.y) / l;

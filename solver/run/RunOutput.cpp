@@ -223,7 +223,7 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         const double fn = closed ? c.normal_force : 0.0, ft = closed ? c.shear_force : 0.0;
         data.vertices.push_back(static_cast<int>(data.points.size()));
         data.points.push_back(s.nodes[c.node]);
-        point_values(fn, ft, {fn * n.x - ft * t.x, fn * n.y - ft * t.y}, n, closed ? 0.0 : std::max(0.0, k.gap),
+        point_values(fn, ft, {fn * n.x - ft * t.x, fn * n.y - ft * t.y}, n, closed ? 0.0 : std::max(0.0, k.gap - c.gap_found),
                      c.slip_total, c.state == ContactState::Open ? 0 : c.state == ContactState::Sliding ? 1 : 2,
                      sim.mesh().node_block[c.node], c.edge_block, topology.edges[c.edge].joint,
                      water ? water_factor * sim.model().water.pore_pressure(s.nodes[c.node]) : 0.0);

@@ -5,6 +5,7 @@
 #include "view/ModelScene.hpp"
 #include "view/OffscreenRender.hpp"
 #include "view/Palette.hpp"
+#include "view/ResultProbe.hpp"
 #include "view/ResultScene.hpp"
 #include "view/ScaleBar.hpp"
 #include "view/SceneGeometry.hpp"
@@ -24,6 +25,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -581,6 +583,26 @@ TEST_F(RenderPng, ResultContactForcesAndBolts)
     // Nothing blue far from the interface (the block's top).
     const auto top = projection.pixel({2.0, 1.9});
     EXPECT_EQ(with.count_around(top[0], top[1], 3, is_force_blue), 0);
+    // The bolt's axial force is written at its middle (dark digits over a light ground) and
+    // told under the cursor.
+    auto is_ink = [](const Rgb8& c) { return c[0] < 70 && c[1] < 70 && c[2] < 70; };
+    const auto middle = projection.pixel({2.5, 1.05});
+    const int ink_with = with.count_in(middle[0] - 40, middle[1], middle[0] + 40, middle[1] + 16, is_ink);
+    const int ink_without = without.count_in(middle[0] - 40, middle[1], middle[0] + 40, middle[1] + 16, is_ink);
+    EXPECT_GT(ink_with, ink_without + 15) << "the bolt's force label";
+    view::ResultProbe probe;
+    {
+        vtkNew<vtkRenderer> renderer;
+        view::build_result_scene(renderer, p, vtu, options, &probe);
+    }
+    ASSERT_EQ(probe.bolts.size(), 1u);
+    EXPECT_GT(probe.bolts[0].force, 0.0);  // pretensioned, then loaded by the block's weight
+    char force[32];
+    std::snprintf(force, sizeof force, "%.3g kN/m", probe.bolts[0].force / 1e3);
+    const std::string on_bolt = probe.describe(2.5, 1.05);
+    EXPECT_EQ(on_bolt.rfind("bolt, axial force " + std::string(force), 0), 0u) << on_bolt;
+    EXPECT_NE(on_bolt.find("; "), std::string::npos) << on_bolt;  // the field there follows
+    EXPECT_EQ(probe.describe(0.5, 0.5).find("bolt"), std::string::npos);
 
     EXPECT_THROW(view::render_result_png(p, vtu, [&] {
         view::ResultOptions o;
