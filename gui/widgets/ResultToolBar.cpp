@@ -48,6 +48,19 @@ QLabel* label(const QString& text, QWidget* parent)
 
 }  // namespace
 
+namespace {
+
+/// The list drops down below the box, as in a web form: the style's default lays it over the
+/// box with the current item under the pointer, so that a field further down the list opened
+/// far above the toolbar and the next click could choose an item by accident.
+void drop_down_below(QComboBox* box)
+{
+    box->setStyleSheet(QStringLiteral("QComboBox { combobox-popup: 0; }"));
+    box->setMaxVisibleItems(16);
+}
+
+}  // namespace
+
 ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
 {
     setObjectName(QStringLiteral("results"));
@@ -69,6 +82,7 @@ ResultToolBar::ResultToolBar(QWidget* parent) : QToolBar(tr("Results"), parent)
     field_box_->addItem(tr("Mechanism: plastic strain increment"), QStringLiteral("plastic_strain_increment"));
     field_box_->addItem(tr("Mechanism: displacement increment"), QStringLiteral("displacement_increment"));
     connect(field_box_, &QComboBox::currentIndexChanged, this, &ResultToolBar::optionsChanged);
+    drop_down_below(field_box_);
     addWidget(field_box_);
 
     sign_box_ = new QComboBox(this);

@@ -22,6 +22,7 @@
 #include "widgets/ResultToolBar.hpp"
 
 #include <QAbstractAxis>
+#include <QAbstractItemView>
 #include <QAction>
 #include <QCategoryAxis>
 #include <QChart>
@@ -102,6 +103,7 @@ private slots:
     void exportSuggestsAName();
     void newModelForgetsTheQueryLine();
     void automaticScaleTurnsNoElementInsideOut();
+    void fieldListDropsDownBelowTheBox();
     void cleanupTestCase();
 
 private:
@@ -412,6 +414,28 @@ void FirstUseTest::cleanupTestCase()
     window_.reset();
     if (!results_.isEmpty() && QFileInfo(results_).fileName().startsWith(QStringLiteral("mcdda-untitled-")))
         QDir(results_).removeRecursively();
+}
+
+
+// The result field list opens below its box whichever field is chosen (it opened with the
+// chosen field under the pointer, the list reaching far above the toolbar).
+void FirstUseTest::fieldListDropsDownBelowTheBox()
+{
+    MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* fields = window.findChild<QComboBox*>(QStringLiteral("fieldBox"));
+    QVERIFY(fields);
+    fields->setEnabled(true);
+    fields->setCurrentIndex(fields->count() - 1);
+    fields->showPopup();
+    QWidget* popup = fields->view()->window();
+    QTRY_VERIFY(popup->isVisible());
+    const int box_bottom = fields->mapToGlobal(QPoint(0, fields->height())).y();
+    QVERIFY2(popup->geometry().top() >= box_bottom - 2,
+             qPrintable(QStringLiteral("list top %1, box bottom %2").arg(popup->geometry().top()).arg(box_bottom)));
+    fields->hidePopup();
 }
 
 QTEST_MAIN(FirstUseTest)
