@@ -772,7 +772,10 @@ def mutate_dxf(pairs, rng, log_kinds):
                 s = rng.choice(starts)
                 e = next((i for i in range(s + 1, len(pairs)) if pairs[i][0] == 0), len(pairs))
                 ent = pairs[s:e]
-                pairs[e:e] = ent * rng.choice([1, 10, 1000])
+                # At most about two million groups (tens of MB): a thousand copies of a
+                # 100,000-vertex polyline made a 4.5 GB drawing, whose reading is no finding.
+                times = min(rng.choice([1, 10, 1000]), max(1, 2000000 // max(1, len(ent))))
+                pairs[e:e] = ent * times
         elif kind == "layer":
             cands = [i for i, (c, _) in enumerate(pairs) if c == 8]
             if cands:
