@@ -221,10 +221,21 @@ std::vector<Point2> near_coincident_vertices(const Arrangement& arr, const std::
     std::vector<Point2> points;
     points.reserve(arr.number_of_vertices());
     for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) points.push_back(to_point(v->point()));
-    // Vertices binned in cells of the tolerance: a close pair lies in neighbouring cells.
-    auto cell = [&](double v) { return static_cast<long long>(std::floor(v / tolerance)); };
+    if (points.empty()) return {};
+    // Vertices binned in cells of the tolerance, counted from the lowest corner (the model is a
+    // million tolerances across, whatever its coordinates): a close pair lies in neighbouring cells.
+    Point2 low = points.front(), high = low;
+    for (const Point2& p : points) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+    }
+    // Joints reaching far beyond the rock: cell numbers would overflow, and at that range a
+    // tolerance this fine is below the coordinates' own resolution.
+    if (!(std::max(high.x - low.x, high.y - low.y) < 1e12 * tolerance)) return {};
+    auto cell_x = [&](double v) { return static_cast<long long>(std::floor((v - low.x) / tolerance)); };
+    auto cell_y = [&](double v) { return static_cast<long long>(std::floor((v - low.y) / tolerance)); };
     std::map<std::pair<long long, long long>, std::vector<int>> bins;
-    for (std::size_t k = 0; k < points.size(); ++k) bins[{cell(points[k].x), cell(points[k].y)}].push_back(static_cast<int>(k));
+    for (std::size_t k = 0; k < points.size(); ++k) bins[{cell_x(points[k].x), cell_y(points[k].y)}].push_back(static_cast<int>(k));
     std::vector<int> parent(points.size());
     for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
     auto root = [&](int k) {
@@ -233,7 +244,7 @@ std::vector<Point2> near_coincident_vertices(const Arrangement& arr, const std::
     };
     bool any = false;
     for (std::size_t k = 0; k < points.size(); ++k) {
-        const long long i = cell(points[k].x), j = cell(points[k].y);
+        const long long i = cell_x(points[k].x), j = cell_y(points[k].y);
         for (long long di = -1; di <= 1; ++di)
             for (long long dj = -1; dj <= 1; ++dj) {
                 const auto it = bins.find({i + di, j + dj});
