@@ -865,14 +865,14 @@
     <message>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="45"/>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="80"/>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="241"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="252"/>
         <source>g</source>
         <translation>g</translation>
     </message>
     <message>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="45"/>
         <location filename="../gui/panels/EarthquakePanel.cpp" line="81"/>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="241"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="252"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -1042,22 +1042,32 @@
         <translation>Vertikaler Erdbebenbeiwert: kv·g je Masseneinheit, für kv &gt; 0 nach oben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="204"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="162"/>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="164"/>
+        <source>Apply the values typed in the record, base and seismic coefficient fields</source>
+        <translation>Die eingegebenen Werte für Aufzeichnung, Basis und Erdbebenbeiwerte übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="215"/>
         <source>Import acceleration record</source>
         <translation>Beschleunigungszeitverlauf importieren</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="205"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="216"/>
         <source>Acceleration records (*.csv *.txt *.at2 *.AT2);;All files (*)</source>
         <translation>Beschleunigungszeitverläufe (*.csv *.txt *.at2 *.AT2);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="216"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="227"/>
         <source>The record was not imported: %1</source>
         <translation>Die Aufzeichnung wurde nicht importiert: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="239"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="250"/>
         <source>Imported &quot;%1&quot;: %n point(s), read in %2 (change Units if the file is in the other unit).</source>
         <translation>
             <numerusform>„%1“ importiert: %n Punkt, gelesen in %2 (Einheiten ändern, wenn die Datei in der anderen Einheit ist).</numerusform>
@@ -1065,52 +1075,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="262"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="273"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="294"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="305"/>
         <source>points given in the model</source>
         <translation>Punkte im Modell angegeben</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="309"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="320"/>
         <source>Not applied: another ground motion is called &quot;%1&quot;.</source>
         <translation>Nicht übernommen: eine andere Bodenbewegung heißt „%1“.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="313"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="324"/>
         <source>Not applied: a ground motion needs a name.</source>
         <translation>Nicht übernommen: eine Bodenbewegung braucht einen Namen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="317"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="328"/>
         <source>Not applied: the scale must not be 0.</source>
         <translation>Nicht übernommen: die Skalierung darf nicht 0 sein.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="328"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="339"/>
         <source>Applied.</source>
         <translation>Übernommen.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="349"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="360"/>
         <source>Import a ground motion first: the base moves with it.</source>
         <translation>Zuerst eine Bodenbewegung importieren: die Basis bewegt sich mit ihr.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="369"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="380"/>
         <source>The supports move with the record in the dynamic stages.</source>
         <translation>Die Lager bewegen sich in den dynamischen Bauphasen mit der Aufzeichnung.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="370"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="381"/>
         <source>The record enters through the compliant base in the dynamic stages.</source>
         <translation>Die Aufzeichnung tritt in den dynamischen Bauphasen durch die nachgiebige Basis ein.</translation>
     </message>
     <message>
-        <location filename="../gui/panels/EarthquakePanel.cpp" line="371"/>
+        <location filename="../gui/panels/EarthquakePanel.cpp" line="382"/>
         <source>No base motion.</source>
         <translation>Keine Bewegung der Basis.</translation>
     </message>
@@ -3591,243 +3601,243 @@
 <context>
     <name>mcdda::gui::ResultToolBar</name>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="51"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="64"/>
         <source>Results</source>
         <translation>Ergebnisse</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="55"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="68"/>
         <source>Field shown for results</source>
         <translation>Angezeigtes Ergebnisfeld</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="57"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="70"/>
         <source>Displacement |u|</source>
         <translation>Verschiebung |u|</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="58"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="71"/>
         <source>Displacement ux</source>
         <translation>Verschiebung ux</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="59"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="72"/>
         <source>Displacement uy</source>
         <translation>Verschiebung uy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="60"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="73"/>
         <source>Stress σxx</source>
         <translation>Spannung σxx</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="61"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="74"/>
         <source>Stress σyy</source>
         <translation>Spannung σyy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="62"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="75"/>
         <source>Stress τxy</source>
         <translation>Spannung τxy</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="63"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="76"/>
         <source>Principal stress σ1</source>
         <translation>Hauptspannung σ1</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="64"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="77"/>
         <source>Principal stress σ3</source>
         <translation>Hauptspannung σ3</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="65"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="78"/>
         <source>Plastic state</source>
         <translation>Plastischer Zustand</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="66"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="79"/>
         <source>Plastic strain</source>
         <translation>Plastische Dehnung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="69"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="82"/>
         <source>Mechanism: plastic strain increment</source>
         <translation>Mechanismus: plastisches Dehnungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="70"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="83"/>
         <source>Mechanism: displacement increment</source>
         <translation>Mechanismus: Verschiebungsinkrement</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="76"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="90"/>
         <source>compression +</source>
         <translation>Druck +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="77"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="91"/>
         <source>tension +</source>
         <translation>Zug +</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="78"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="92"/>
         <source>Sign of the stresses shown. Compression positive (as RS2, PLAXIS and UDEC): σ1 is the major compressive stress, σ1 ≥ σ3. Tension positive: the result files&apos; convention.</source>
         <translation>Vorzeichen der gezeigten Spannungen. Druck positiv (wie RS2, PLAXIS und UDEC): σ1 ist die größte Druckspannung, σ1 ≥ σ3. Zug positiv: die Konvention der Ergebnisdateien.</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="85"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="99"/>
         <source>Total stress</source>
         <translation>Totale Spannung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="86"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="100"/>
         <source>Effective stress</source>
         <translation>Effektive Spannung</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="87"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="101"/>
         <source>Stresses of a run with ground water: total stress σ, or effective stress σ′ (the total stress less the pore pressure: what the rock or soil yields on). τxy is the same in both. Without water the stresses are total.</source>
         <translation>Spannungen einer Berechnung mit Grundwasser: totale Spannung σ oder effektive Spannung σ′ (die totale Spannung abzüglich des Porenwasserdrucks: maßgebend für das Fließen von Fels und Boden). τxy ist in beiden gleich. Ohne Wasser sind die Spannungen total.</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="94"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="108"/>
         <source>Deformation ×</source>
         <translation>Verformung ×</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="97"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="111"/>
         <source>Scale factor of the drawn displacements: 0 = undeformed; one step below 0 = auto, the largest displacement drawn as 5 % of the model&apos;s size</source>
         <translation>Überhöhung der gezeichneten Verschiebungen: 0 = unverformt; eine Stufe unter 0 = auto, die größte Verschiebung als 5 % der Modellgröße gezeichnet</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="100"/>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="174"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="114"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="188"/>
         <source>auto</source>
         <translation>auto</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="111"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="125"/>
         <source>Contacts</source>
         <translation>Kontakte</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="115"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="129"/>
         <source>Draw the contact forces (lines along the force, the largest 6 % of the model long), joint slip and opening, and the bolts of the saved step shown</source>
         <translation>Kontaktkräfte (Linien in Kraftrichtung, die größte 6 % der Modellgröße lang), Kluftgleiten und -öffnung und die Anker des gezeigten gespeicherten Schritts zeichnen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="122"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="136"/>
         <source>Units</source>
         <translation>Einheiten</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="123"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="137"/>
         <source>Units of stresses and displacements in the legend, the cursor read-out and query lines</source>
         <translation>Einheiten der Spannungen und Verschiebungen in Legende, Cursoranzeige und Abfragelinien</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="134"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="148"/>
         <source>Stresses</source>
         <translation>Spannungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="135"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="149"/>
         <source>kPa, or MPa from 1 MPa on</source>
         <translation>kPa, ab 1 MPa in MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="136"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="150"/>
         <source>kPa</source>
         <translation>kPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="137"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="151"/>
         <source>MPa</source>
         <translation>MPa</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="139"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="153"/>
         <source>Displacements</source>
         <translation>Verschiebungen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="140"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="154"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="141"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="155"/>
         <source>mm</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="156"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="170"/>
         <source>Rainbow</source>
         <translation>Regenbogen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="157"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="171"/>
         <source>Viridis</source>
         <translation>Viridis</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="158"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="172"/>
         <source>Grey</source>
         <translation>Grau</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="159"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="173"/>
         <source>Blue–white–red</source>
         <translation>Blau–Weiß–Rot</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="160"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="174"/>
         <source>Colour map of the scale</source>
         <translation>Farbskala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="166"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="180"/>
         <source>smooth</source>
         <translation>stufenlos</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="167"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="181"/>
         <source> bands</source>
         <translation> Stufen</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="168"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="182"/>
         <source>Number of colour bands (contours); smooth = a continuous scale</source>
         <translation>Anzahl der Farbstufen (Isoflächen); stufenlos = kontinuierliche Skala</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="171"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="185"/>
         <source>Range</source>
         <translation>Bereich</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="182"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="196"/>
         <source>Lower end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Unteres Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="183"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="197"/>
         <source>Upper end of the colour scale in the legend&apos;s units; empty = automatic</source>
         <translation>Oberes Ende der Farbskala in den Einheiten der Legende; leer = automatisch</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="212"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="226"/>
         <source>Pore pressure u</source>
         <translation>Porenwasserdruck u</translation>
     </message>
     <message>
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="294"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="308"/>
         <source>×%1 (auto)</source>
         <translation>×%1 (auto)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../gui/widgets/ResultToolBar.cpp" line="297"/>
+        <location filename="../gui/widgets/ResultToolBar.cpp" line="311"/>
         <source>⚠ %n element(s) drawn inside out: lower the scale</source>
         <translation>
             <numerusform>⚠ %n Element umgestülpt gezeichnet: Überhöhung verringern</numerusform>

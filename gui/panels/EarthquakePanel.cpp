@@ -157,6 +157,12 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
     seismic_form->addRow(tr("kv [–]"), kv_);
     explain(kv_, tr("Vertical seismic coefficient: kv·g per unit mass, upwards for kv > 0"));
     column->addWidget(seismic);
+    // Typed values wait for Enter or Apply, as in every form (form::apply_on_enter); a choice
+    // made in a list or a box ticked applies at once.
+    auto* apply = new QPushButton(tr("Apply"), inner);
+    apply->setObjectName(QStringLiteral("earthquakeApply"));
+    apply->setToolTip(tr("Apply the values typed in the record, base and seismic coefficient fields"));
+    column->addWidget(apply, 0, Qt::AlignRight);
 
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -169,9 +175,9 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
     connect(import, &QPushButton::clicked, this, &EarthquakePanel::importDialog);
     connect(remove_, &QPushButton::clicked, this, &EarthquakePanel::removeRecord);
     connect(list_, &QListWidget::currentRowChanged, this, [this] { if (!loading_) showRecord(); });
-    connect(name_, &QLineEdit::editingFinished, this, [this] { if (!loading_) applyRecord(); });
+    form::apply_on_enter(name_, [this] { if (!loading_) applyRecord(); });
     connect(units_, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyRecord(); });
-    connect(scale_, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyRecord(); });
+    form::apply_on_enter(scale_, [this] { if (!loading_) applyRecord(); });
     connect(baseline_, &QCheckBox::toggled, this, [this] { if (!loading_) applyRecord(); });
     // Long choices (record names, the base's kinds) must not widen the dock.
     for (QComboBox* box : {units_, base_kind_, base_x_, base_y_}) {
@@ -183,10 +189,15 @@ EarthquakePanel::EarthquakePanel(ModelDocument* document, QWidget* parent) : QWi
     for (QComboBox* box : {base_kind_, base_x_, base_y_})
         connect(box, &QComboBox::currentIndexChanged, this, [this] { if (!loading_) applyBase(); });
     for (QDoubleSpinBox* box : {base_from_[0], base_from_[1], base_to_[0], base_to_[1]})
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applyBase(); });
+        form::apply_on_enter(box, [this] { if (!loading_) applyBase(); });
     connect(base_draw_, &QPushButton::clicked, this, &EarthquakePanel::drawBaseRequested);
-    for (QDoubleSpinBox* box : {kh_, kv_})
-        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { if (!loading_) applySeismic(); });
+    for (QDoubleSpinBox* box : {kh_, kv_}) form::apply_on_enter(box, [this] { if (!loading_) applySeismic(); });
+    connect(apply, &QPushButton::clicked, this, [this] {
+        if (loading_) return;
+        applyRecord();
+        applyBase();
+        applySeismic();
+    });
     connect(document_, &ModelDocument::changed, this, &EarthquakePanel::refresh);
     refresh();
 }

@@ -169,7 +169,9 @@ void EarthquakeTest::importedRecordIsPlotted()
     auto* scale = panel->findChild<QDoubleSpinBox*>(QStringLiteral("recordScale"));
     QVERIFY(scale);
     scale->setValue(0.5);
-    emit scale->editingFinished();
+    emit scale->editingFinished();  // leaving the field: not applied behind the user's back
+    QCOMPARE(doc->model().ground_motions[0].scale, 1.0);
+    QTest::keyClick(scale, Qt::Key_Return);
     QCOMPARE(doc->model().ground_motions[0].scale, 0.5);
     QVERIFY(std::fabs(plot->peak() - 0.15) < 1e-9);
     doc->undoStack()->undo();
@@ -313,6 +315,10 @@ void EarthquakeTest::baseAndSeismicCoefficientSavedAndReadBack()
     QVERIFY(kh);
     kh->setValue(0.15);
     emit kh->editingFinished();
+    QCOMPARE(doc->model().seismic_coefficient.kh, 0.0);  // waits for Apply or Enter
+    auto* apply = panel->findChild<QPushButton*>(QStringLiteral("earthquakeApply"));
+    QVERIFY(apply);
+    apply->click();
     QCOMPARE(doc->model().seismic_coefficient.kh, 0.15);
     doc->undoStack()->undo();
     QCOMPARE(doc->model().seismic_coefficient.kh, 0.0);
