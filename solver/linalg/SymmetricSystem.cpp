@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <stdexcept>
 
 namespace mcdda {
@@ -157,8 +156,6 @@ namespace {
 constexpr double refinement_tolerance = 1e-10;
 /// More iterations than this in one solve: the held factor no longer fits the matrix.
 constexpr int max_refinement_iterations = 40;
-/// Iterations before their rate of convergence is taken as a prediction.
-constexpr int min_iterations_for_rate = 3;
 /// A triangular solve or a product with the matrix runs at a lower flop rate than the
 /// factorisation, whose dense blocks (supernodal) make better use of the cache: measured on
 /// OpenBLAS (docs/benchmarks.md), a 51k-element six-node system factorised in the time of 27
@@ -270,21 +267,14 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs) {
     if (!stale_) return factor_->llt.solve(rhs);
     // Conjugate gradients on the current matrix, preconditioned by the held factor.
     const auto A = matrix_.selfadjointView<Eigen::Lower>();
-    const double start = rhs.norm(), target = refinement_tolerance * start;
+    const double target = refinement_tolerance * rhs.norm();
     Eigen::VectorXd x = Eigen::VectorXd::Zero(rhs.size()), r = rhs, z, p, Ap;
     double rz = 0.0;
     for (int k = 0; k < max_refinement_iterations; ++k) {
-        const double left = r.norm();
-        if (left <= target) {
+        if (r.norm() <= target) {
             last_refinement_iterations_ = k;
             return x;
         }
-        // The rate so far tells how many iterations the tolerance needs. Beyond the limit the
-        // held factor no longer fits (Δt was cut, many contacts changed state): every iteration
-        // until the limit would be lost (an 81,000-element step spent 60 % of its time so).
-        if (k >= min_iterations_for_rate &&
-            (left >= start || k * std::log(target / start) / std::log(left / start) > max_refinement_iterations))
-            break;
         z = factor_->llt.solve(r);
         const double rz_next = r.dot(z);
         if (k == 0) p = z;
