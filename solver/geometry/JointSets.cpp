@@ -108,9 +108,13 @@ void expand_joint_sets(Model& model) {
                 lo = std::min(lo, t);
                 hi = std::max(hi, t);
             }
+        // Counted in floating point before any trace number is made a long: over an extent of
+        // 1e25 m the numbers overflowed, and the loop below never ended.
+        if (!((hi - lo) / set.spacing <= static_cast<double>(max_joint_set_traces)) ||
+            !(std::fabs(lo / set.spacing) < 1e15 && std::fabs(hi / set.spacing) < 1e15))
+            continue;  // reported by the validator
         const long first = static_cast<long>(std::ceil(lo / set.spacing));
         const long last = static_cast<long>(std::floor(hi / set.spacing));
-        if (last - first > max_joint_set_traces) continue;  // reported by the validator
         std::vector<Joint> generated;
         bool within_limit = true;
         for (long k = first; k <= last && within_limit; ++k) {
