@@ -275,6 +275,17 @@ CrackTips crack_tips(const Block& block) {
 /// opening's square-root profile near the tip, and a short crack is never one element.
 constexpr double crack_tip_size_fraction = 0.1;
 
+/// The mesh controls of one block: the model's, finer towards the tips of its cracks.
+MeshControls block_controls(const Model& model, const SizeField& model_field, const CrackTips& tips) {
+    MeshControls controls = model.mesh;
+    for (const auto& [at, length] : tips) {
+        const Point2 tip{at.first, at.second};
+        const double size = crack_tip_size_fraction * length;
+        if (size < model_field(tip)) controls.local.push_back({tip, tip, size, 0.0});
+    }
+    return controls;
+}
+
 /// Blocks that need more triangles than this are seeded before refinement (below).
 constexpr double seeded_block_triangles = 100000;
 
@@ -393,7 +404,7 @@ private:
 }  // namespace
 
 double estimate_triangle_count(const Model& model, const std::vector<Block>& blocks) {
-    const SizeField field(model.mesh, resolved_global_size(model));
+    const SizeField model_field(model.mesh, resolved_global_size(model));
     // Refinement to a max-edge bound h gives triangles of about 0.3 h² on average.
     constexpr double area_per_h2 = 0.3;
     double count = 0.0;
@@ -418,6 +429,8 @@ double estimate_triangle_count(const Model& model, const std::vector<Block>& blo
         add_ring(b.outer);
         for (const Ring& h : b.holes) add_ring(h);
         const double width = perimeter > 0.0 ? 4.0 * b.area / perimeter : 0.0;
+        // Thousands of cracks make the mesh fine at their tips all over the block.
+        const SizeField field(block_controls(model, model_field, crack_tips(b)), model_field.global_size());
         const auto size_at = [&](const Point2& c) { return width > 0.0 ? std::min(field(c), width) : field(c); };
         constexpr int n = 24;
         const double dx = (box[2] - box[0]) / n, dy = (box[3] - box[1]) / n;
@@ -445,7 +458,7 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         msg << "the mesh would have about " << estimate << " triangles, above the limit of "
             << model.mesh.max_elements
             << " (blocks narrower than the mesh size, between joints closer together than it, are meshed at "
-               "their width; raise /mesh/max_elements, coarsen /mesh/size or space the joints wider)";
+               "their width, and the mesh is finer towards crack tips; raise /mesh/max_elements, coarsen /mesh/size or space the joints wider)";
         diagnostics.push_back({Diagnostic::Severity::Error, "/mesh", msg.str()});
         return mesh;
     }
@@ -458,13 +471,7 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
         const Block& block = blocks[bi];
         // The size field of the block: the model's, finer towards the tips of its cracks.
         const CrackTips tips = crack_tips(block);
-        MeshControls controls = model.mesh;
-        for (const auto& [at, length] : tips) {
-            const Point2 tip{at.first, at.second};
-            const double size = crack_tip_size_fraction * length;
-            if (size < model_field(tip)) controls.local.push_back({tip, tip, size, 0.0});
-        }
-        const SizeField field(controls, model_field.global_size());
+        const SizeField field(block_controls(model, model_field, tips), model_field.global_size());
         const SizeFieldCriteria criteria(model.mesh.min_angle, field);
         CDT cdt;
         insert_ring(cdt, block.outer);

@@ -9,6 +9,8 @@ namespace {
 
 /// Below this many features a point looks at all of them.
 constexpr std::size_t binned_from = 32;
+/// Cells per side of the grid at most (a few features far apart).
+constexpr long long max_cells_per_side = 4096;
 
 }  // namespace
 
@@ -18,32 +20,49 @@ SizeField::SizeField(const MeshControls& controls, double global_size)
         for (std::size_t i = 0; i < local_.size(); ++i) everywhere_.push_back(static_cast<int>(i));
         return;
     }
-    // A feature makes the size finer than the global one within its reach: its radius plus the
-    // distance over which the grading brings its size up to the global size.
-    auto reach = [&](const LocalSize& l) { return l.radius + std::max(0.0, global_ - l.size) / grading_; };
-    double mean = 0.0;
-    for (const LocalSize& l : local_) mean += reach(l);
-    cell_ = std::max(mean / static_cast<double>(local_.size()), 1e-12);
+    // The grid covers the features' boxes with about one cell per feature.
+    double box[4] = {1e300, 1e300, -1e300, -1e300};
+    for (const LocalSize& l : local_) {
+        box[0] = std::min({box[0], l.from.x - l.radius, l.to.x - l.radius});
+        box[1] = std::min({box[1], l.from.y - l.radius, l.to.y - l.radius});
+        box[2] = std::max({box[2], l.from.x + l.radius, l.to.x + l.radius});
+        box[3] = std::max({box[3], l.from.y + l.radius, l.to.y + l.radius});
+    }
+    const double width = box[2] - box[0], height = box[3] - box[1];
+    const double extent = std::max(width, height);
+    if (!std::isfinite(extent)) {
+        for (std::size_t i = 0; i < local_.size(); ++i) everywhere_.push_back(static_cast<int>(i));
+        return;
+    }
+    cell_ = std::max({std::sqrt(width * height / static_cast<double>(local_.size())),
+                      extent / static_cast<double>(max_cells_per_side), 1e-12 * std::max(extent, 1.0)});
+    x0_ = box[0];
+    y0_ = box[1];
+    nx_ = static_cast<long long>(width / cell_) + 1;
+    ny_ = static_cast<long long>(height / cell_) + 1;
+    cells_.resize(static_cast<std::size_t>(nx_ * ny_));
+    smallest_ = global_;
     for (std::size_t i = 0; i < local_.size(); ++i) {
         const LocalSize& l = local_[i];
-        const double r = reach(l);
-        const double x0 = std::min(l.from.x, l.to.x) - r, x1 = std::max(l.from.x, l.to.x) + r;
-        const double y0 = std::min(l.from.y, l.to.y) - r, y1 = std::max(l.from.y, l.to.y) + r;
-        // A feature reaching over very many cells (a long line) is looked at everywhere instead.
-        if ((x1 - x0) * (y1 - y0) > 64.0 * cell_ * cell_) {
+        const long long i0 = column(std::min(l.from.x, l.to.x) - l.radius), i1 = column(std::max(l.from.x, l.to.x) + l.radius);
+        const long long j0 = row(std::min(l.from.y, l.to.y) - l.radius), j1 = row(std::max(l.from.y, l.to.y) + l.radius);
+        // A feature over very many cells (a long line) is looked at everywhere instead.
+        if ((i1 - i0 + 1) * (j1 - j0 + 1) > 64) {
             everywhere_.push_back(static_cast<int>(i));
             continue;
         }
-        for (double x = std::floor(x0 / cell_); x <= std::floor(x1 / cell_); x += 1.0)
-            for (double y = std::floor(y0 / cell_); y <= std::floor(y1 / cell_); y += 1.0)
-                cells_[key(x * cell_ + 0.5 * cell_, y * cell_ + 0.5 * cell_)].push_back(static_cast<int>(i));
+        smallest_ = std::min(smallest_, l.size);
+        for (long long x = i0; x <= i1; ++x)
+            for (long long y = j0; y <= j1; ++y) cells_[static_cast<std::size_t>(y * nx_ + x)].push_back(static_cast<int>(i));
     }
 }
 
-unsigned long long SizeField::key(double x, double y) const {
-    // Unsigned: cell indices may be negative.
-    const auto i = static_cast<long long>(std::floor(x / cell_)), j = static_cast<long long>(std::floor(y / cell_));
-    return (static_cast<unsigned long long>(i) << 32) ^ (static_cast<unsigned long long>(j) & 0xffffffffULL);
+long long SizeField::column(double x) const {
+    return std::clamp(static_cast<long long>(std::floor((x - x0_) / cell_)), 0LL, nx_ - 1);
+}
+
+long long SizeField::row(double y) const {
+    return std::clamp(static_cast<long long>(std::floor((y - y0_) / cell_)), 0LL, ny_ - 1);
 }
 
 double SizeField::operator()(Point2 p) const {
@@ -54,10 +73,35 @@ double SizeField::operator()(Point2 p) const {
         h = std::min(h, l.size + grading_ * std::max(0.0, d - l.radius));
     };
     for (int i : everywhere_) consider(i);
-    if (!cells_.empty()) {
-        const auto it = cells_.find(key(p.x, p.y));
-        if (it != cells_.end())
-            for (int i : it->second) consider(i);
+    if (cells_.empty()) return h;
+    // Rings of cells around the point's own (outside the grid: around the cell nearest to it).
+    // A feature first met in ring r lies wholly outside rings 0 … r − 1, so at least (r − 1)
+    // cells from the point's projection onto the grid, and the point is further still by its
+    // distance to the grid: it cannot give less than smallest_ + grading · that distance.
+    const double dx = std::max({0.0, x0_ - p.x, p.x - (x0_ + static_cast<double>(nx_) * cell_)});
+    const double dy = std::max({0.0, y0_ - p.y, p.y - (y0_ + static_cast<double>(ny_) * cell_)});
+    const double outside2 = dx * dx + dy * dy;
+    const long long ci = column(p.x), cj = row(p.y);
+    const long long last = std::max({ci, nx_ - 1 - ci, cj, ny_ - 1 - cj});
+    auto scan = [&](long long x, long long y) {
+        if (x < 0 || x >= nx_ || y < 0 || y >= ny_) return;
+        for (int i : cells_[static_cast<std::size_t>(y * nx_ + x)]) consider(i);
+    };
+    for (long long r = 0; r <= last; ++r) {
+        const double apart = static_cast<double>(std::max(0LL, r - 1)) * cell_;
+        if (r > 0 && smallest_ + grading_ * std::sqrt(outside2 + apart * apart) >= h) break;
+        if (r == 0) {
+            scan(ci, cj);
+            continue;
+        }
+        for (long long x = ci - r; x <= ci + r; ++x) {
+            scan(x, cj - r);
+            scan(x, cj + r);
+        }
+        for (long long y = cj - r + 1; y <= cj + r - 1; ++y) {
+            scan(ci - r, y);
+            scan(ci + r, y);
+        }
     }
     return h;
 }

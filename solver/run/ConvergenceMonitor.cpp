@@ -99,6 +99,16 @@ std::string ConvergenceMonitor::why(Verdict v, const Iteration& it) const {
                           it.norm / it.scale, tolerance_, it.newton ? newton_stall_window : stall_window, it.k);
             return "the equilibrium iterations stalled: " + std::string(numbers) + where;
         case Verdict::Capped:
+            // Within the force tolerance only the displacement had not settled (converged needs
+            // both): say that, not that the force was above a tolerance it was below.
+            if (it.norm <= tolerance_ * it.scale) {
+                std::snprintf(numbers, sizeof numbers,
+                              "after %d iterations the out-of-balance force was within tolerance (%.3g of the "
+                              "force scale) but the displacement still changed by %.3g of the increment per "
+                              "iteration, above the tolerance %.3g",
+                              it.k, it.norm / it.scale, it.last_correction / it.yardstick, tolerance_);
+                return "the equilibrium iterations reached their limit: " + std::string(numbers) + where;
+            }
             std::snprintf(numbers, sizeof numbers,
                           "after %d iterations the out-of-balance force was %.3g of the force scale, above the "
                           "tolerance %.3g",

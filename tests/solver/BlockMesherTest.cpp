@@ -167,3 +167,24 @@ TEST(SizeField, BinnedFeaturesGiveTheSameSizeAsAllOfThem) {
         ASSERT_DOUBLE_EQ(field(p), expected) << "at (" << p.x << ", " << p.y << ")";
     }
 }
+
+// With a gentle grading every crack tip reaches over the whole model: the field must still be
+// the minimum over all of them, inside the features' box and outside it.
+TEST(SizeField, FarReachingFeaturesGiveTheSameSizeAsAllOfThem) {
+    MeshControls controls;
+    controls.grading = 0.2;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coordinate(-20.0, 20.0), size(0.1, 0.12);
+    for (int i = 0; i < 5000; ++i) {
+        const Point2 a{coordinate(rng), 0.3 * coordinate(rng)};
+        controls.local.push_back({a, a, size(rng), 0.0});
+    }
+    const SizeField field(controls, 4.0);
+    for (int k = 0; k < 5000; ++k) {
+        const Point2 p{2.0 * coordinate(rng), 2.0 * coordinate(rng)};
+        double expected = 4.0;
+        for (const LocalSize& l : controls.local)
+            expected = std::min(expected, l.size + 0.2 * distance_to_segment(p, l.from, l.to));
+        ASSERT_DOUBLE_EQ(field(p), expected) << "at (" << p.x << ", " << p.y << ")";
+    }
+}

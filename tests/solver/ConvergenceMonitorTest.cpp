@@ -86,6 +86,19 @@ TEST(ConvergenceMonitor, DivergenceMechanismAndCap) {
     EXPECT_NE(capped.why(v, at(5, 1e-5)).find("reached their limit"), std::string::npos);
 }
 
+TEST(ConvergenceMonitor, ACapWithTheForceWithinToleranceBlamesTheDisplacement) {
+    // The force was below the tolerance and only the corrections had not settled: the message
+    // must not say the force was above the tolerance.
+    ConvergenceMonitor m(1e-4, 5, 1.0);
+    const std::string why = m.why(Verdict::Capped, at(5, 6.21e-6, 3e-3));
+    EXPECT_EQ(why.find("force scale, above"), std::string::npos) << why;
+    EXPECT_NE(why.find("within tolerance (6.21e-06 of the force scale)"), std::string::npos) << why;
+    EXPECT_NE(why.find("changed by 0.003 of the increment"), std::string::npos) << why;
+    const std::string force = m.why(Verdict::Capped, at(5, 2e-3, 1e-6));
+    EXPECT_NE(force.find("out-of-balance force was 0.002 of the force scale, above the tolerance"), std::string::npos)
+        << force;
+}
+
 TEST(ConvergenceMonitor, PolishingGetsAFreshWindowAndItsOwnCap) {
     ConvergenceMonitor m(1e-12, 40, 1.0);
     Verdict v = Verdict::Continue;
