@@ -754,15 +754,43 @@ std::vector<vtkIdType> contact_vertices(vtkPolyData* c)
     return at;
 }
 
-/// Contact forces as ticks from each contact's vertex, the largest 6 % of the model long.
-/// Returns the largest force.
+/// The median size of the result's blocks (the square root of their areas), or 0 when the grid
+/// has no block numbers.
+double median_block_size(vtkUnstructuredGrid* grid)
+{
+    vtkDataArray* block = grid->GetCellData()->GetArray("block");
+    if (block == nullptr) return 0.0;
+    std::map<long, double> area;
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType cell = 0; cell < grid->GetNumberOfCells(); ++cell) {
+        grid->GetCellPoints(cell, ids);
+        if (ids->GetNumberOfIds() < 3) continue;
+        double a[3], b[3], c[3];
+        grid->GetPoint(ids->GetId(0), a);
+        grid->GetPoint(ids->GetId(1), b);
+        grid->GetPoint(ids->GetId(2), c);
+        area[std::lround(block->GetTuple1(cell))] +=
+            0.5 * std::fabs((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+    }
+    std::vector<double> sizes;
+    for (const auto& [b, value] : area) sizes.push_back(std::sqrt(value));
+    if (sizes.empty()) return 0.0;
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    return sizes[sizes.size() / 2];
+}
+
+/// Contact forces as ticks from each contact's vertex, the largest a tenth of the median block
+/// size long (at most 6 % of the model): where every joint carries about the same force (an
+/// in-situ stress) ticks of a fixed share of the model covered whole blocks. Returns the
+/// largest force.
 double add_force_ticks(vtkRenderer* renderer, vtkPolyData* c, const std::vector<vtkIdType>& at, const Box& box,
-                       double z_step, double pixel)
+                       double block_size, double z_step, double pixel)
 {
     vtkDataArray* force = c->GetPointData()->GetArray("force");
     double largest_force = 0.0;
     for (vtkIdType p : at) largest_force = std::max(largest_force, std::hypot(force->GetComponent(p, 0), force->GetComponent(p, 1)));
-    const double scale = largest_force > 0.0 ? 0.06 * box.size() / largest_force : 0.0;
+    const double longest = block_size > 0.0 ? std::min(0.06 * box.size(), 0.3 * block_size) : 0.06 * box.size();
+    const double scale = largest_force > 0.0 ? longest / largest_force : 0.0;
     vtkNew<vtkPoints> force_points;
     vtkNew<vtkCellArray> force_lines;
     for (vtkIdType p : at) {
@@ -875,14 +903,14 @@ bool add_bolt_lines(vtkRenderer* renderer, vtkPolyData* c, const Box& box, doubl
 }
 
 /// Contact forces, joint slip and opening, and bolts (docs/running.md, the contacts files).
-ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, const Box& box, double z_step, double pixel,
-                               ResultProbe& shown)
+ContactMarks add_contact_marks(vtkRenderer* renderer, vtkPolyData* c, vtkUnstructuredGrid* grid, const Box& box,
+                               double z_step, double pixel, ResultProbe& shown)
 {
     ContactMarks m;
     m.drawn = c != nullptr;
     if (!m.drawn) return m;
     const std::vector<vtkIdType> at = contact_vertices(c);
-    m.largest_force = add_force_ticks(renderer, c, at, box, z_step, pixel);
+    m.largest_force = add_force_ticks(renderer, c, at, box, median_block_size(grid), z_step, pixel);
     add_slip_and_opening(renderer, c, at, box, z_step, pixel, m);
     m.any_bolt = add_bolt_lines(renderer, c, box, z_step, pixel, shown);
     return m;
@@ -1053,7 +1081,7 @@ void add_result(vtkRenderer* renderer, const Preprocessed& model, const Result& 
     add_block_outlines(renderer, grid, cells.points, cells.point_count, z_step, pixel);
     const bool joints = add_joints(renderer, model, grid, options, cells.deform, z_step, pixel);
     const bool water = add_water_table(renderer, model, r, options, box, z_step, pixel);
-    const ContactMarks marks = add_contact_marks(renderer, r.contacts, box, z_step, pixel, shown);
+    const ContactMarks marks = add_contact_marks(renderer, r.contacts, grid, box, z_step, pixel, shown);
     const double reserved = colouring.categorical ? add_state_legend(renderer, field, joints, water, marks, drew.legend)
                                                   : add_scale_bar(renderer, field, colouring, sign_note, options);
     const std::string title = result_title(model, r, options, shown.title, cells.deform);

@@ -530,6 +530,73 @@ TEST_F(RenderPng, ResultErrors)
     EXPECT_FALSE(fs::exists(path));
 }
 
+// A jointed rock mass under an in-situ stress: every joint carries about the same force. Ticks a
+// fixed share of the model long (6 %: 1.2 m on 2 m blocks) covered most of the picture; a tenth
+// of the median block size leaves the blocks in sight.
+TEST_F(RenderPng, ContactForceTicksLeaveTheBlocksInSight)
+{
+    const char* text = R"({
+  "format": "mcdda-model", "version": 2, "name": "jointed square",
+  "materials": [ { "name": "rock", "young_modulus": 1e10, "poisson_ratio": 0.25, "unit_weight": 26000, "plastic": false } ],
+  "joint_materials": [ { "name": "joint", "friction_angle": 35 } ],
+  "regions": [ { "name": "rock", "material": "rock", "boundary": [[0,0],[20,0],[20,20],[0,20]] } ],
+  "joint_sets": [ { "name": "A", "angle": 0, "spacing": 2, "origin": [0.5, 1] },
+                  { "name": "B", "angle": 90, "spacing": 2, "origin": [1, 0.5] } ],
+  "rollers": [ { "name": "base", "from": [0,0], "to": [20,0], "fixed": "y" },
+               { "name": "left", "from": [0,0], "to": [0,20], "fixed": "x" },
+               { "name": "right", "from": [20,0], "to": [20,20], "fixed": "x" } ],
+  "edge_pressures": [ { "name": "top", "from": [0,20], "to": [20,20], "pressure": 2e6 } ],
+  "gravity": [0, -9.81],
+  "initial_stress": { "type": "gravity", "surface_y": 96.9, "k0": 0.8 },
+  "mesh": { "size": 1.0, "min_angle": 30 },
+  "analysis": { "type": "static", "steps": 1, "time_step": 1.0, "output_every": 1 }
+})";
+    const auto read = read_model_text(text, {}, "jointed square");
+    ASSERT_TRUE(read.model);
+    const Preprocessed p = preprocess_model(*read.model);
+    ASSERT_TRUE(p.ok);
+    const fs::path dir = fs::path(MCDDA_TEST_OUTPUT_DIR) / "jointed-square";
+    fs::remove_all(dir);
+    {
+        Simulation simulation(p);
+        RunOutput output(dir.string(), "square");
+        run_steps(simulation, &output, nullptr, nullptr);
+    }
+    const std::string vtu = (dir / "square_000001.vtu").string(), vtp = (dir / "square_contacts_000001.vtp").string();
+    ASSERT_TRUE(fs::exists(vtu) && fs::exists(vtp));
+    auto is_force_blue = [](const Rgb8& c) { return near(c, to_bytes(view::Rgb{0.0, 0.40, 0.75}), 20); };
+    view::ResultOptions options;
+    options.field = "plastic_state";
+    options.contacts = vtp;
+    const std::string drawn = output_path("result_contact_forces_in_situ.png");
+    view::render_result_png(p, vtu, options, width, height, drawn);
+    Picture picture(drawn);
+    Projection projection([&](vtkRenderer* r) { view::build_result_scene(r, p, vtu, options); });
+    const auto lo = projection.pixel({0.0, 0.0}), hi = projection.pixel({20.0, 20.0});
+    EXPECT_GT(picture.count_in(std::min(lo[0], hi[0]), std::min(lo[1], hi[1]), std::max(lo[0], hi[0]),
+                               std::max(lo[1], hi[1]), is_force_blue),
+              500)
+        << "the ticks are drawn";
+    // The longest straight run of blue, across or along the rows (two ticks of the contacts on
+    // either side of a joint, pointing away from each other), is at most two thirds of a block:
+    // the old ticks, 6 % of the model (0.95 m each), made runs of 94 % of a block.
+    int longest = 0;
+    const int x0 = std::min(lo[0], hi[0]), x1 = std::max(lo[0], hi[0]), y0 = std::min(lo[1], hi[1]), y1 = std::max(lo[1], hi[1]);
+    for (int x = x0; x <= x1; ++x)
+        for (int y = y0, run = 0; y <= y1; ++y) {
+            run = is_force_blue(picture.at(x, y)) ? run + 1 : 0;
+            longest = std::max(longest, run);
+        }
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0, run = 0; x <= x1; ++x) {
+            run = is_force_blue(picture.at(x, y)) ? run + 1 : 0;
+            longest = std::max(longest, run);
+        }
+    const double block_pixels = (x1 - x0) / 10.0;  // 2 m blocks across 20 m
+    EXPECT_LT(longest, 0.65 * block_pixels) << "the ticks cover the blocks";
+    EXPECT_GT(longest, block_pixels / 6.0) << "the ticks are long enough to read";
+}
+
 // A block resting on a base, bolted to it, run for a few steps: the contacts file of its last
 // step drawn over the result shows the contact forces (blue, vertical, at the interface) and the
 // bolt (green); the same picture without the file shows neither.
