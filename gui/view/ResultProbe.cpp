@@ -53,9 +53,8 @@ std::string ResultProbe::describe(double x, double y) const
         }
     std::string bolt;
     if (nearest) {
-        char number[32];
-        std::snprintf(number, sizeof number, "%.3g", nearest->force / 1e3);
-        bolt = picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt, axial force")) + " " + number + " kN/m";
+        bolt = picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt, axial force")) + " " +
+               picture_number("%.3g", nearest->force / 1e3) + " kN/m";
     }
     const std::string field = describe_field(x, y);
     if (bolt.empty()) return field;
@@ -73,9 +72,7 @@ std::string ResultProbe::describe_field(double x, double y) const
         const int s = std::lround(v) < 0 ? 0 : std::lround(v) > 2 ? 2 : static_cast<int>(std::lround(v));
         return title + ": " + picture_text(states[s]);
     }
-    char number[32];
-    std::snprintf(number, sizeof number, "%.4g", v);
-    return title + " = " + number + (units.empty() || units == "-" ? std::string() : " " + units);
+    return title + " = " + picture_number("%.4g", v) + (units.empty() || units == "-" ? std::string() : " " + units);
 }
 
 }  // namespace mcdda::view

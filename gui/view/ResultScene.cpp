@@ -7,6 +7,7 @@
 #include "view/FlatActor.hpp"
 #include "view/ModelScene.hpp"
 #include "view/OffscreenRender.hpp"
+#include "view/LocalisedScalarBar.hpp"
 #include "view/PictureText.hpp"
 #include "view/Palette.hpp"
 #include "view/SceneGeometry.hpp"
@@ -878,10 +879,9 @@ bool add_bolt_lines(vtkRenderer* renderer, vtkPolyData* c, const Box& box, doubl
     shown.bolt_reach = 0.01 * box.size();
     if (force != nullptr && shown.bolts.size() <= most_bolt_labels)
         for (const ResultProbe::Bolt& bolt : shown.bolts) {
-            char text[48];
-            std::snprintf(text, sizeof text, "%.3g kN/m", bolt.force / 1e3);
+            const std::string text = picture_number("%.3g", bolt.force / 1e3) + " kN/m";
             vtkNew<vtkTextActor> label;
-            label->SetInput(text);
+            label->SetInput(text.c_str());
             vtkTextProperty* t = label->GetTextProperty();
             t->SetFontFamilyToArial();
             t->SetFontSize(static_cast<int>(std::lround(10 * pixel)));
@@ -935,19 +935,19 @@ double add_state_legend(vtkRenderer* renderer, const FieldInfo& field, bool join
         char largest[64];
         // No row for forces that are not there ("largest (0 kN/m)" on a model without joints).
         if (marks.largest_force > 0.0) {
-            std::snprintf(largest, sizeof largest, " (%.3g kN/m)", marks.largest_force / 1e3);
+            std::snprintf(largest, sizeof largest, " (%s kN/m)", picture_number("%.3g", marks.largest_force / 1e3).c_str());
             entries.push_back({LegendEntry::Icon::Line, contact_force_color,
                                picture_text(QT_TRANSLATE_NOOP("mcdda::view", "contact force, largest")) + largest});
         }
         if (marks.any_bolt)
             entries.push_back({LegendEntry::Icon::Line, bolt_color, picture_text(QT_TRANSLATE_NOOP("mcdda::view", "bolt"))});
         if (marks.largest_slip > 0.0) {
-            std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * marks.largest_slip);
+            std::snprintf(largest, sizeof largest, " (%s mm)", picture_number("%.3g", 1e3 * marks.largest_slip).c_str());
             entries.push_back({LegendEntry::Icon::Line, slip_color,
                                picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint slip, largest")) + largest});
         }
         if (marks.largest_opening > 0.0) {
-            std::snprintf(largest, sizeof largest, " (%.3g mm)", 1e3 * marks.largest_opening);
+            std::snprintf(largest, sizeof largest, " (%s mm)", picture_number("%.3g", 1e3 * marks.largest_opening).c_str());
             entries.push_back({LegendEntry::Icon::Line, opening_color,
                                picture_text(QT_TRANSLATE_NOOP("mcdda::view", "joint opening, largest")) + largest});
         }
@@ -965,15 +965,13 @@ double add_scale_bar(vtkRenderer* renderer, const FieldInfo& field, const Colour
     const double pixel = dpi_of(renderer) / 72.0;
     const int* size = renderer->GetSize();
     const double width = std::max(1, size[0]);
-    vtkNew<vtkScalarBarActor> bar;
+    vtkNew<LocalisedScalarBar> bar;
     bar->SetLookupTable(c.table);
     // Two lines: the field, then its unit and sign (the bar's column is narrow).
     std::string title = picture_text(field.title) + "\n(" + c.units + (sign_note.empty() ? "" : ", " + sign_note) + ")";
     vtkNew<vtkDoubleArray> labels;
     if (c.uniform) {
-        char value[48];
-        std::snprintf(value, sizeof value, "%.4g", c.uniform_value);
-        title += "\n" + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "uniform:")) + " " + value;
+        title += "\n" + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "uniform:")) + " " + picture_number("%.4g", c.uniform_value);
         labels->InsertNextValue(c.uniform_value);
     } else {
         for (double t = c.range[0]; t <= c.range[1] + 1e-9 * c.tick_step; t += c.tick_step)
@@ -1018,9 +1016,9 @@ std::string result_title(const Preprocessed& model, const Result& r, const Resul
         // A static run's steps are load steps: their time (Δt apart) says nothing to the user.
         const bool load_steps = !has_dynamic_stage(model.model);
         if (trial) {
-            std::snprintf(part, sizeof part, " — %s %.4g",
+            std::snprintf(part, sizeof part, " — %s %s",
                           picture_text(QT_TRANSLATE_NOOP("mcdda::view", "strengths divided by")).c_str(),
-                          r.strength_factor);
+                          picture_number("%.4g", r.strength_factor).c_str());
             title += part;
         } else if (r.step >= 0) {
             std::snprintf(part, sizeof part, " — %s %d",
@@ -1033,11 +1031,12 @@ std::string result_title(const Preprocessed& model, const Result& r, const Resul
             title += ", " + picture_text(QT_TRANSLATE_NOOP("mcdda::view", "stage")) + " \"" +
                      model.model.stages[static_cast<std::size_t>(r.stage - 1)].name + "\"";
         if (std::isfinite(r.time) && !trial && !load_steps) {
-            std::snprintf(part, sizeof part, ", t = %g s", r.time);
+            std::snprintf(part, sizeof part, ", t = %s s", picture_number("%g", r.time).c_str());
             title += part;
         }
         if (deform != 0.0) {
-            std::snprintf(part, sizeof part, ", %s ×%.3g", picture_text(QT_TRANSLATE_NOOP("mcdda::view", "deformed")).c_str(), deform);
+            std::snprintf(part, sizeof part, ", %s ×%s", picture_text(QT_TRANSLATE_NOOP("mcdda::view", "deformed")).c_str(),
+                          picture_number("%.3g", deform).c_str());
             title += part;
         }
     }

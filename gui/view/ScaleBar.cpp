@@ -1,4 +1,5 @@
 #include "view/ScaleBar.hpp"
+#include "view/PictureText.hpp"
 
 #include <vtkActor2D.h>
 #include <vtkCamera.h>
@@ -32,9 +33,7 @@ int scaled(double points, double dpi) { return static_cast<int>(std::lround(poin
 std::string number_text(double v, double step)
 {
     if (std::abs(v) < 1e-9 * step) v = 0.0;  // no "-0"
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
+    return picture_number("%g", v);
 }
 
 /// The rulers and the scale bar as a prop: rebuilt from the camera before each render (as VTK's

@@ -9,6 +9,7 @@
 #include <QEvent>
 #include <QGuiApplication>
 #include <QCoreApplication>
+#include <QLocale>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QResizeEvent>
@@ -79,6 +80,9 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent), impl_(std::make_unique<
     view::set_picture_translator([](const char* english) {
         return QCoreApplication::translate("mcdda::view", english).toStdString();
     });
+    // Numbers in pictures with the language's decimal separator, as in the forms.
+    const QString point = QLocale().decimalPoint();
+    view::set_picture_decimal_point(point.size() == 1 && point.at(0).unicode() < 128 ? point.at(0).toLatin1() : '.');
     // Native-child-window route (docs/architecture.md, platform facts): our own X window that VTK draws into; Qt must not paint it.
     setAttribute(Qt::WA_NativeWindow);
     setAttribute(Qt::WA_PaintOnScreen);

@@ -3,7 +3,9 @@
 
 #include "TunnelModel.hpp"
 #include "view/ModelScene.hpp"
+#include "view/LocalisedScalarBar.hpp"
 #include "view/OffscreenRender.hpp"
+#include "view/PictureText.hpp"
 #include "view/Palette.hpp"
 #include "view/ResultProbe.hpp"
 #include "view/ResultScene.hpp"
@@ -17,6 +19,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vtkActor2D.h>
+#include <vtkActor2DCollection.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -530,12 +534,19 @@ TEST_F(RenderPng, ResultErrors)
     EXPECT_FALSE(fs::exists(path));
 }
 
-// A jointed rock mass under an in-situ stress: every joint carries about the same force. Ticks a
-// fixed share of the model long (6 %: 1.2 m on 2 m blocks) covered most of the picture; a tenth
-// of the median block size leaves the blocks in sight.
-TEST_F(RenderPng, ContactForceTicksLeaveTheBlocksInSight)
+namespace {
+
+/// A square of 2 m blocks (two joint sets) under an in-situ stress, run one step: every joint
+/// carries about the same force.
+struct JointedSquare {
+    Preprocessed model;
+    std::string vtu, vtp;
+};
+
+const JointedSquare& jointed_square()
 {
-    const char* text = R"({
+    static const JointedSquare square = [] {
+        const char* text = R"({
   "format": "mcdda-model", "version": 2, "name": "jointed square",
   "materials": [ { "name": "rock", "young_modulus": 1e10, "poisson_ratio": 0.25, "unit_weight": 26000, "plastic": false } ],
   "joint_materials": [ { "name": "joint", "friction_angle": 35 } ],
@@ -551,18 +562,36 @@ TEST_F(RenderPng, ContactForceTicksLeaveTheBlocksInSight)
   "mesh": { "size": 1.0, "min_angle": 30 },
   "analysis": { "type": "static", "steps": 1, "time_step": 1.0, "output_every": 1 }
 })";
-    const auto read = read_model_text(text, {}, "jointed square");
-    ASSERT_TRUE(read.model);
-    const Preprocessed p = preprocess_model(*read.model);
-    ASSERT_TRUE(p.ok);
-    const fs::path dir = fs::path(MCDDA_TEST_OUTPUT_DIR) / "jointed-square";
-    fs::remove_all(dir);
-    {
-        Simulation simulation(p);
-        RunOutput output(dir.string(), "square");
-        run_steps(simulation, &output, nullptr, nullptr);
-    }
-    const std::string vtu = (dir / "square_000001.vtu").string(), vtp = (dir / "square_contacts_000001.vtp").string();
+        JointedSquare s;
+        const auto read = read_model_text(text, {}, "jointed square");
+        if (!read.model) return s;
+        s.model = preprocess_model(*read.model);
+        if (!s.model.ok) return s;
+        const fs::path dir = fs::path(MCDDA_TEST_OUTPUT_DIR) / "jointed-square";
+        fs::remove_all(dir);
+        {
+            Simulation simulation(s.model);
+            RunOutput output(dir.string(), "square");
+            run_steps(simulation, &output, nullptr, nullptr);
+        }
+        s.vtu = (dir / "square_000001.vtu").string();
+        s.vtp = (dir / "square_contacts_000001.vtp").string();
+        return s;
+    }();
+    return square;
+}
+
+}  // namespace
+
+// Every joint of the jointed square carries about the same force. Ticks a fixed share of the model
+// long (6 %: 0.95 m on 2 m blocks) covered most of the picture; 0.3 of the median block size
+// leaves the blocks in sight.
+TEST_F(RenderPng, ContactForceTicksLeaveTheBlocksInSight)
+{
+    const JointedSquare& square = jointed_square();
+    ASSERT_TRUE(square.model.ok);
+    const Preprocessed& p = square.model;
+    const std::string &vtu = square.vtu, &vtp = square.vtp;
     ASSERT_TRUE(fs::exists(vtu) && fs::exists(vtp));
     auto is_force_blue = [](const Rgb8& c) { return near(c, to_bytes(view::Rgb{0.0, 0.40, 0.75}), 20); };
     view::ResultOptions options;
@@ -595,6 +624,74 @@ TEST_F(RenderPng, ContactForceTicksLeaveTheBlocksInSight)
     const double block_pixels = (x1 - x0) / 10.0;  // 2 m blocks across 20 m
     EXPECT_LT(longest, 0.65 * block_pixels) << "the ticks cover the blocks";
     EXPECT_GT(longest, block_pixels / 6.0) << "the ticks are long enough to read";
+}
+
+// Numbers drawn into a German picture use its decimal comma everywhere: title, legend rows, the
+// colour scale's labels (formatted by VTK), the rulers and what the cursor tells; an English one
+// keeps the point.
+TEST_F(RenderPng, GermanPicturesWriteDecimalCommas)
+{
+    const JointedSquare& square = jointed_square();
+    ASSERT_TRUE(square.model.ok);
+    struct Restore {
+        ~Restore() { view::set_picture_decimal_point('.'); }
+    } restore;
+    auto texts = [&](char point, view::ResultInfo& info, std::vector<std::string>& labels, std::string& told) {
+        view::set_picture_decimal_point(point);
+        view::ResultOptions options;
+        options.contacts = square.vtp;
+        options.field = "displacement";
+        options.deform = 2.5;
+        view::ResultProbe probe;
+        Projection projection([&](vtkRenderer* r) {
+            view::build_result_scene(r, square.model, square.vtu, options, &probe, &info);
+            r->GetRenderWindow()->Render();
+            vtkActor2DCollection* actors = r->GetActors2D();
+            actors->InitTraversal();
+            while (vtkActor2D* a = actors->GetNextActor2D())
+                if (auto* bar = view::LocalisedScalarBar::SafeDownCast(a)) labels = bar->label_texts();
+        });
+        told = probe.describe(5.3, 5.7);
+        options.field = "plastic_state";
+        view::ResultInfo state;
+        Projection legend([&](vtkRenderer* r) { view::build_result_scene(r, square.model, square.vtu, options, nullptr, &state); });
+        info.legend = state.legend;
+    };
+    auto has = [](const std::vector<std::string>& rows, const std::string& part) {
+        for (const std::string& row : rows)
+            if (row.find(part) != std::string::npos) return true;
+        return false;
+    };
+    view::ResultInfo german, english;
+    std::vector<std::string> german_labels, english_labels;
+    std::string german_told, english_told;
+    texts(',', german, german_labels, german_told);
+    texts('.', english, english_labels, english_told);
+
+    EXPECT_NE(german.title.find("×2,5"), std::string::npos) << german.title;
+    EXPECT_NE(english.title.find("×2.5"), std::string::npos) << english.title;
+    // The largest contact force, e.g. "(1,04e+03 kN/m)".
+    ASSERT_TRUE(has(german.legend, "kN/m"));
+    for (const std::string& row : german.legend)
+        if (row.find("kN/m") != std::string::npos) {
+            EXPECT_NE(row.find(','), std::string::npos) << row;
+            EXPECT_EQ(row.find('.'), std::string::npos) << row;
+        }
+    ASSERT_GE(german_labels.size(), 3u);
+    ASSERT_EQ(german_labels.size(), english_labels.size());
+    int commas = 0;
+    for (std::size_t i = 0; i < german_labels.size(); ++i) {
+        EXPECT_EQ(german_labels[i].find('.'), std::string::npos) << german_labels[i];
+        std::string back = german_labels[i];
+        for (char& c : back)
+            if (c == ',') c = '.', ++commas;
+        EXPECT_EQ(back, english_labels[i]);
+    }
+    EXPECT_GT(commas, 0) << "the colour scale's labels";
+    EXPECT_NE(german_told.find(','), std::string::npos) << german_told;
+    EXPECT_NE(english_told.find('.'), std::string::npos) << english_told;
+    view::set_picture_decimal_point(',');
+    EXPECT_EQ(view::with_picture_decimals("x 1.5 m, 2.e-05, file.json, v.1, 3."), "x 1,5 m, 2,e-05, file.json, v.1, 3.");
 }
 
 // A block resting on a base, bolted to it, run for a few steps: the contacts file of its last
