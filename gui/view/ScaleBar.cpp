@@ -72,6 +72,10 @@ private:
         parts_.clear();
         auto* renderer = vtkRenderer::SafeDownCast(viewport);
         if (renderer == nullptr || !box.valid()) return;
+        // The window's resolution when it has one: the desktop view's rulers are made before its
+        // window knows the screen's pixel ratio (they were drawn at 72 dpi on a 144 dpi screen).
+        if (vtkWindow* window = viewport->GetVTKWindow(); window != nullptr && window->GetDPI() > 0)
+            dpi = window->GetDPI();
         const int* size = renderer->GetSize();
         const double w = std::max(1, size[0]), h = std::max(1, size[1]);
         vtkCamera* camera = renderer->GetActiveCamera();

@@ -21,6 +21,7 @@
 
 #include <vtkActor2D.h>
 #include <vtkActor2DCollection.h>
+#include <vtkCamera.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -884,6 +885,29 @@ TEST_F(RenderPng, ResultRulersScaleBarAndTitle)
     // The title: dark text in the top-left corner of both.
     EXPECT_GT(with.count_in(0, height - 22, width / 2, height, is_dark), 40);
     EXPECT_GT(without.count_in(0, height - 22, width / 2, height, is_dark), 40);
+}
+
+// The desktop view makes its rulers before its window knows the screen's pixel ratio (at 72 dpi);
+// drawn into a window of 144 dpi they take that window's resolution: the numbers of the left
+// ruler stand right of x = 60 px (its line is at 100 px), where 72-dpi rulers leave nothing.
+TEST_F(RenderPng, RulersFollowTheWindowsResolution)
+{
+    const int side = 1600;  // render_scene_png gives a 1600-pixel picture 144 dpi
+    ASSERT_EQ(view::png_dpi(side, side), 144);
+    const std::string path = output_path("rulers_144dpi.png");
+    view::render_scene_png(
+        [](vtkRenderer* r) {
+            r->SetBackground(1.0, 1.0, 1.0);
+            r->AddViewProp(view::make_axes_and_scale_bar(view::Box{0.0, 0.0, 10.0, 10.0}, 72.0));
+            vtkCamera* camera = r->GetActiveCamera();
+            camera->ParallelProjectionOn();
+            camera->SetFocalPoint(5.0, 5.0, 0.0);
+            camera->SetPosition(5.0, 5.0, 10.0);
+            camera->SetParallelScale(8.0);
+        },
+        side, side, path);
+    Picture picture(path);
+    EXPECT_GT(picture.count_in(60, side / 4, 95, 3 * side / 4, is_dark), 100) << "the left ruler's numbers";
 }
 
 // Round legend values, a uniform field shown as one value (not −1…1), a range
