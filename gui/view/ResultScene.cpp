@@ -780,10 +780,9 @@ double median_block_size(vtkUnstructuredGrid* grid)
     return sizes[sizes.size() / 2];
 }
 
-/// Contact forces as ticks from each contact's vertex, the largest a tenth of the median block
-/// size long (at most 6 % of the model): where every joint carries about the same force (an
-/// in-situ stress) ticks of a fixed share of the model covered whole blocks. Returns the
-/// largest force.
+/// Contact forces as ticks from each contact's vertex, the largest 0.3 of the median block size
+/// long (at most 6 % of the model): where every joint carries about the same force (an in-situ
+/// stress) ticks of a fixed share of the model covered whole blocks. Returns the largest force.
 double add_force_ticks(vtkRenderer* renderer, vtkPolyData* c, const std::vector<vtkIdType>& at, const Box& box,
                        double block_size, double z_step, double pixel)
 {
