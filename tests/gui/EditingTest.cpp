@@ -241,10 +241,7 @@ void EditingTest::typedPointsHolesAndJointSets()
 {
     MainWindow window;
     window.setAskToSave(false);
-    window.resize(1000, 700);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QVERIFY(guitest::show_new_model(window));
     gui::ModelDocument* doc = window.document();
     auto* edit = window.findChild<QLineEdit*>(QStringLiteral("coordinateEdit"));
     QVERIFY(edit);
@@ -394,10 +391,7 @@ void EditingTest::stagesAndBoltsShownInTheTree()
 void EditingTest::undoFromTheCoordinateField()
 {
     MainWindow window;
-    window.resize(1000, 700);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QVERIFY(guitest::show_new_model(window));
     gui::ModelDocument* doc = window.document();
     window.findChild<QAction*>(QStringLiteral("drawRegionAction"))->trigger();
     auto* field = window.findChild<QLineEdit*>(QStringLiteral("coordinateEdit"));
@@ -499,10 +493,7 @@ void EditingTest::helpShowsTheUserGuide()
 void EditingTest::newModelTalksOfRegionsAndFitsTheFirst()
 {
     MainWindow window;
-    window.resize(1000, 700);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QVERIFY(guitest::show_new_model(window));
     QTRY_VERIFY(!window.isPreprocessing());
     // A hint, not an error (was "error: /regions: at least one region is required").
     QVERIFY2(window.messages().contains(QStringLiteral("Draw a region to start")), qPrintable(window.messages()));
@@ -554,10 +545,7 @@ void EditingTest::typedPointsStayInSightWithRulers()
 {
     MainWindow window;
     window.setAskToSave(false);
-    window.resize(1000, 700);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QVERIFY(guitest::show_new_model(window));
     QTRY_VERIFY(!window.isPreprocessing());
     gui::ModelView* view = window.modelView();
     window.drawRegionTool();

@@ -165,10 +165,7 @@ void EngineerTest::newModelAsksForARegion()
 {
     MainWindow window;
     window.setAskToSave(false);
-    window.resize(1100, 750);
-    window.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&window));
-    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QVERIFY(guitest::show_new_model(window, 1100, 750));
     QTRY_VERIFY_WITH_TIMEOUT(!window.isPreprocessing() && window.modelView()->scene(), 30000);
     const QString messages = window.messages();
     QVERIFY2(messages.contains(QStringLiteral("Draw a region to start")), qPrintable(messages));

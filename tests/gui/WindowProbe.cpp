@@ -49,6 +49,15 @@ bool show_square(gui::MainWindow& window)
     return true;
 }
 
+bool show_new_model(gui::MainWindow& window, int width, int height)
+{
+    window.resize(width, height);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window)) return false;
+    window.findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    return true;
+}
+
 std::unique_ptr<gui::MainWindow> square_window()
 {
     auto window = std::make_unique<gui::MainWindow>();

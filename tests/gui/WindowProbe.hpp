@@ -27,6 +27,9 @@ int count_around(gui::ModelView& view, double x, double y, const view::Rgb& colo
 /// Shows `window` (1100 × 750) and makes it File ▸ New with a 10 m square region and a roller
 /// holding its base (x and y); false when the window could not be shown.
 bool show_square(gui::MainWindow& window);
+/// Shows `window` at `width` × `height` and makes it File ▸ New (an empty model); false when the
+/// window could not be shown.
+bool show_new_model(gui::MainWindow& window, int width = 1000, int height = 700);
 /// Shows `window` at 1100 × 750 with the model file at `path` open; false when it cannot.
 bool show_model(gui::MainWindow& window, const QString& path);
 
