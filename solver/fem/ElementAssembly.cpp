@@ -24,6 +24,16 @@ ElementAssembly::ElementAssembly(const Model& model, const Mesh& mesh)
         has_tangent_ = true;
         symmetric_tangent_ = symmetric_tangent_ && laws_.back()->symmetric_tangent();
     }
+    Eigen::VectorXd share = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(mesh.nodes.size()));
+    const int n = nodes_per_element();
+    for (int e = 0; e < element_count(); ++e) {
+        const auto& t = mesh.triangles[e];
+        const Point2 &p = mesh.nodes[t[0]], &q = mesh.nodes[t[1]], &r = mesh.nodes[t[2]];
+        const double area = 0.5 * std::fabs((q.x - p.x) * (r.y - p.y) - (r.x - p.x) * (q.y - p.y));
+        for (int a = 0; a < n; ++a) share[node(e, a)] += area / n;
+    }
+    dof_length_.resize(2 * share.size());
+    for (Eigen::Index i = 0; i < share.size(); ++i) dof_length_[2 * i] = dof_length_[2 * i + 1] = std::sqrt(share[i]);
 }
 
 Point2 ElementAssembly::point_position(const std::vector<Point2>& nodes, int e, int q) const {
@@ -250,6 +260,8 @@ ElementAssembly::Evaluation ElementAssembly::evaluate_elements(const Eigen::Vect
         }
     }
     result.force_scale = dofs ? magnitude.maxCoeff() : 0.0;
+    for (Eigen::Index dof = 0; dof < dofs; ++dof)
+        if (dof_length_[dof] > 0.0) result.stress_scale = std::max(result.stress_scale, magnitude[dof] / dof_length_[dof]);
     return result;
 }
 

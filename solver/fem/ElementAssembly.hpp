@@ -80,7 +80,16 @@ public:
     struct Evaluation {
         int yielding = 0;          ///< integration points on the yield surface
         double force_scale = 0.0;  ///< largest Σ|element force| at a degree of freedom (N/m)
+        /// Largest Σ|element force| / dof_length() at a degree of freedom: the stress in play
+        /// (Pa), the same on a fine mesh as on a coarse one.
+        double stress_scale = 0.0;
     };
+
+    /// Per degree of freedom, the length its nodal forces act over: √(its node's share of the
+    /// area of the elements around it), on the mesh's own coordinates. A nodal force divided by
+    /// it is a stress, so an out-of-balance force measured that way means the same at a fine
+    /// tunnel wall as in coarse far-field elements (nodal forces shrink with the element size).
+    const Eigen::VectorXd& dof_length() const { return dof_length_; }
 
     /// Stresses of `old` advanced by increments d into `returned` (one result per point),
     /// internal forces into `internal` (resized, zeroed); element matrices into `system`
@@ -125,6 +134,7 @@ private:
     double damping_mass_ = 0.0, damping_stiffness_ = 0.0, damping_rate_ = 0.0;  ///< see set_damping
     Eigen::VectorXd damping_rest_;
     std::vector<char> active_;  ///< see set_active()
+    Eigen::VectorXd dof_length_;  ///< see dof_length()
 };
 
 }  // namespace mcdda

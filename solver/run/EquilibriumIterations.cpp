@@ -62,13 +62,27 @@ Simulation::Balance Simulation::balance_at(const Eigen::VectorXd& d, const Eigen
     const auto t0 = Clock::now();
     b.rhs.resize(bc_.equation_count);
     for (Eigen::Index dof = 0; dof < b.residual.size(); ++dof)
-        if (bc_.equation[dof] >= 0) {
-            b.rhs[bc_.equation[dof]] = b.residual[dof];
-            b.norm = std::max(b.norm, std::fabs(b.residual[dof]));
-            b.norm2 += b.residual[dof] * b.residual[dof];
-        }
+        if (bc_.equation[dof] >= 0) b.rhs[bc_.equation[dof]] = b.residual[dof];
+    static_cast<ResidualNorms&>(b) = residual_norms(b.residual);
     timings_.assembly += seconds_since(t0);
     return b;
+}
+
+Simulation::ResidualNorms Simulation::residual_norms(const Eigen::VectorXd& r) const {
+    ResidualNorms n;
+    for (Eigen::Index dof = 0; dof < r.size(); ++dof) {
+        if (bc_.equation[dof] < 0) continue;
+        const double value = measured(r, dof);
+        n.norm = std::max(n.norm, std::fabs(value));
+        n.norm2 += value * value;
+    }
+    return n;
+}
+
+double Simulation::load_scale(const Eigen::VectorXd& loads) const {
+    double scale = 0.0;
+    for (Eigen::Index dof = 0; dof < loads.size(); ++dof) scale = std::max(scale, std::fabs(measured(loads, dof)));
+    return scale;
 }
 
 bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, const std::vector<BoltLink>& bolts) {
@@ -110,15 +124,10 @@ double Simulation::line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& 
     // (perfectly plastic) tangent overshoots and can spread yield over the whole model.
     double step = 1.0;
     for (int cut = 0; cut < line_search_cuts; ++cut) {
-        const Eigen::VectorXd r = residual(d + step * delta, loads, contacts, bolts, returned_, ElementMatrix::None);
-        double norm = 0.0, norm2 = 0.0;
-        for (Eigen::Index dof = 0; dof < r.size(); ++dof)
-            if (bc_.equation[dof] >= 0) {
-                norm = std::max(norm, std::fabs(r[dof]));
-                norm2 += r[dof] * r[dof];
-            }
-        if (norm <= tolerance * scale) break;
-        if (least_squares ? norm2 <= at.norm2 : norm <= at.norm) break;
+        const ResidualNorms n =
+            residual_norms(residual(d + step * delta, loads, contacts, bolts, returned_, ElementMatrix::None));
+        if (n.norm <= tolerance * scale) break;
+        if (least_squares ? n.norm2 <= at.norm2 : n.norm <= at.norm) break;
         step *= 0.5;
     }
     return step;
@@ -129,7 +138,8 @@ ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, 
     ConvergenceMonitor::Iteration it;
     it.k = k;
     it.norm = b.norm;
-    it.scale = std::max({b.evaluation.force_scale, load_scale, 1e-30});
+    it.scale = std::max({out_of_balance_as_stress() ? b.evaluation.stress_scale : b.evaluation.force_scale, load_scale,
+                         1e-30});
     it.last_correction = last_correction;
     // Not below a hundredth of the displacement so far: in a step that only re-equilibrates, the
     // increment is round-off and would never settle.
@@ -144,7 +154,7 @@ ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, 
 bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
                              const std::vector<BoltLink>& bolts, bool& factor_valid, Attempt& attempt) {
     const double tolerance = model_.analysis.plastic_tolerance;
-    const double load_scale = loads.cwiseAbs().maxCoeff();
+    const double loads_in_play = load_scale(loads);
     ConvergenceMonitor monitor(tolerance, model_.analysis.max_plastic_iterations,
                                mechanism_displacements * displacement_limit_);
     AndersonMixing anderson(anderson_depth);
@@ -160,7 +170,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
             factor_valid ? ElementMatrix::None : (newton ? ElementMatrix::Tangent : ElementMatrix::Elastic);
         const Balance b = balance_at(d, loads, contacts, bolts, matrix);
         attempt.yielding = b.evaluation.yielding;
-        const ConvergenceMonitor::Iteration it = iteration_of(k, b, d, load_scale, last_correction, newton);
+        const ConvergenceMonitor::Iteration it = iteration_of(k, b, d, loads_in_play, last_correction, newton);
         if (monitor.converged(it, elastic_matrix)) {
             attempt.residual = b.residual;
             return true;

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace mcdda;
@@ -101,18 +102,41 @@ TEST(HoekBrownTunnel, RockMassMatchesTheRadialIntegration) {
     EXPECT_NEAR(fe.wall_displacement, reference.wall_displacement, 0.02 * reference.wall_displacement);
 }
 
+// GSI = 50 (a = 0.5057), σci = 20 MPa: a weak rock mass whose plastic zone reaches about four
+// radii, against the radial integration within 2 %. The wall elements are 1/60 of the far-field
+// ones, so this needs an out-of-balance force measured as a stress (per length of the node):
+// measured against the largest nodal force, far out, the iterations stopped at 22.0 mm with a
+// ring of wall elements at the criterion's apex, out of balance by the apex's tension.
+TEST(HoekBrownTunnel, WeakRockMassMatchesTheRadialIntegration) {
+    const auto spec = spec_of(50, 20e6);
+    ASSERT_GT(spec.a, 0.505);
+    const auto reference = mcdda::test::hoek_brown_tunnel_integration(spec);
+    const TunnelResult fe = run_tunnel(50, 20e6);
+    std::cout << "Hoek–Brown tunnel, GSI 50: plastic radius " << fe.plastic_radius << " m (integration "
+              << reference.plastic_radius << "), wall displacement " << fe.wall_displacement * 1e3 << " mm (integration "
+              << reference.wall_displacement * 1e3 << ")\n";
+    EXPECT_NEAR(fe.plastic_radius, reference.plastic_radius, 0.02 * reference.plastic_radius);
+    EXPECT_NEAR(fe.wall_displacement, reference.wall_displacement, 0.02 * reference.wall_displacement);
+}
+
 // The excavation released gradually through a falling wall pressure, over 10 and over 20 steps,
 // ends where the single increment does (a curved surface makes plasticity path-dependent in
-// general; here the unloading is monotonic and the result must not depend on the step count).
+// general; here the unloading is monotonic and the result must not depend on the step count):
+// the shipped rock mass (GSI 80) and the weak one (GSI 50, which released over 20 steps used to
+// stop at a wall pressure of 0.23 MPa as a false collapse).
 TEST(HoekBrownTunnel, GradualReleaseEndsWhereTheSingleIncrementDoes) {
-    const auto reference = mcdda::test::hoek_brown_tunnel_integration(spec_of(80, 6e6));
-    const TunnelResult at_once = run_tunnel(80, 6e6);
-    for (int steps : {10, 20}) {
-        const TunnelResult gradual = run_tunnel(80, 6e6, gradual_release(steps));
-        std::cout << "Hoek–Brown tunnel, GSI 80, released over " << steps << " steps: wall displacement "
-                  << gradual.wall_displacement * 1e3 << " mm (at once " << at_once.wall_displacement * 1e3
-                  << ", integration " << reference.wall_displacement * 1e3 << ")\n";
-        EXPECT_NEAR(gradual.wall_displacement, at_once.wall_displacement, 0.005 * at_once.wall_displacement) << steps;
-        EXPECT_NEAR(gradual.wall_displacement, reference.wall_displacement, 0.02 * reference.wall_displacement) << steps;
+    for (const auto& [gsi, sigma_ci] : {std::pair{80.0, 6e6}, std::pair{50.0, 20e6}}) {
+        const auto reference = mcdda::test::hoek_brown_tunnel_integration(spec_of(gsi, sigma_ci));
+        const TunnelResult at_once = run_tunnel(gsi, sigma_ci);
+        for (int steps : {10, 20}) {
+            const TunnelResult gradual = run_tunnel(gsi, sigma_ci, gradual_release(steps));
+            std::cout << "Hoek–Brown tunnel, GSI " << gsi << ", released over " << steps << " steps: wall displacement "
+                      << gradual.wall_displacement * 1e3 << " mm (at once " << at_once.wall_displacement * 1e3
+                      << ", integration " << reference.wall_displacement * 1e3 << ")\n";
+            EXPECT_NEAR(gradual.wall_displacement, at_once.wall_displacement, 0.005 * at_once.wall_displacement)
+                << "GSI " << gsi << ", " << steps << " steps";
+            EXPECT_NEAR(gradual.wall_displacement, reference.wall_displacement, 0.02 * reference.wall_displacement)
+                << "GSI " << gsi << ", " << steps << " steps";
+        }
     }
 }
