@@ -3,6 +3,7 @@
 // the area, and a uniform stress reads the same on a mesh twice as fine, where nodal forces and
 // the largest of them halve.
 
+#include "TestModels.hpp"
 #include "fem/ElementAssembly.hpp"
 #include "mesh/QuadraticMesh.hpp"
 
@@ -35,18 +36,6 @@ Mesh grid(int n, bool quadratic) {
     return m;
 }
 
-Model elastic_model() {
-    Model model;
-    Material rock;
-    rock.name = "rock";
-    rock.young_modulus = 2e9;
-    rock.poisson_ratio = 0.3;
-    rock.law = "elastic";
-    model.materials.push_back(rock);
-    model.analysis.plasticity = false;
-    return model;
-}
-
 /// The largest nodal force and the stress scale of a uniform strain on grid(n).
 ElementAssembly::Evaluation uniform_strain(const Model& model, int n, bool quadratic, double* area = nullptr) {
     const Mesh mesh = grid(n, quadratic);
@@ -66,7 +55,7 @@ ElementAssembly::Evaluation uniform_strain(const Model& model, int n, bool quadr
 }
 
 void check(bool quadratic) {
-    const Model model = elastic_model();
+    const Model model = test::elastic_model();
     double area = 0.0;
     const ElementAssembly::Evaluation coarse = uniform_strain(model, 4, quadratic, &area);
     const ElementAssembly::Evaluation fine = uniform_strain(model, 8, quadratic);

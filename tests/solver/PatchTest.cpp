@@ -3,6 +3,7 @@
 // every integration point and no out-of-balance force at its interior nodes. An element that
 // passes converges to the exact solution as the mesh is refined; one that fails does not.
 
+#include "TestModels.hpp"
 #include "fem/ElementAssembly.hpp"
 #include "fem/PlaneStrain.hpp"
 #include "mesh/QuadraticMesh.hpp"
@@ -30,22 +31,9 @@ Mesh patch(bool quadratic)
     return m;
 }
 
-Model elastic_model()
-{
-    Model model;
-    Material rock;
-    rock.name = "rock";
-    rock.young_modulus = 2e9;
-    rock.poisson_ratio = 0.3;
-    rock.law = "elastic";
-    model.materials.push_back(rock);
-    model.analysis.plasticity = false;
-    return model;
-}
-
 void check_patch(bool quadratic)
 {
-    const Model model = elastic_model();
+    const Model model = test::elastic_model();
     const Mesh mesh = patch(quadratic);
     ASSERT_EQ(mesh.quadratic(), quadratic);
     ElementAssembly assembly(model, mesh);

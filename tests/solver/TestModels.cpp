@@ -7,6 +7,18 @@
 
 namespace mcdda::test {
 
+Model elastic_model() {
+    Model model;
+    Material rock;
+    rock.name = "rock";
+    rock.young_modulus = 2e9;
+    rock.poisson_ratio = 0.3;
+    rock.law = "elastic";
+    model.materials.push_back(rock);
+    model.analysis.plasticity = false;
+    return model;
+}
+
 std::string square_model_json() {
     return R"({
   "format": "mcdda-model", "version": 1, "name": "square",

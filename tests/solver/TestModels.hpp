@@ -11,6 +11,10 @@ namespace mcdda::test {
 /// A valid 10 m x 10 m square of one material, fixed along its base, no joints.
 std::string square_model_json();
 
+/// A model of one elastic material "rock" (E = 2 GPa, ν = 0.3) and no plasticity, for tests of
+/// element assembly on hand-made meshes.
+Model elastic_model();
+
 /// Preprocesses JSON text (with overrides) up to `last`.
 Preprocessed preprocess_text(const std::string& json, const std::vector<std::string>& overrides = {},
                              PreprocessStage last = PreprocessStage::Mesh);
