@@ -186,19 +186,18 @@ void RunOutput::save_state(const Simulation& sim, const SimulationState& s, int 
     save_contacts(sim, s, number, time);
 }
 
-void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, int number, double time) {
-    const MeshTopology& topology = sim.topology();
-    PolyData data;
+namespace {
+
+/// The point data of the contacts file, one value per point (contact vertex or bolt end).
+struct ContactFields {
+    bool water = false;  ///< with water: its pressure and the effective normal force too
     VtuField normal_force{"normal_force", 1, {}}, shear_force{"shear_force", 1, {}}, force{"force", 3, {}},
         normal{"normal", 3, {}}, opening{"opening", 1, {}}, slip{"slip", 1, {}}, state{"state", 1, {}},
         vertex_block{"vertex_block", 1, {}}, edge_block{"edge_block", 1, {}}, joint{"joint", 1, {}},
         water_pressure{"water_pressure", 1, {}}, effective_normal_force{"effective_normal_force", 1, {}};
-    // The contact springs carry the effective normal force: the water pressure acts on the
-    // joint's faces besides (fem/PorePressure.hpp).
-    const bool water = has_water(sim.full_model());
-    const double water_factor = water ? load_factor(sim.model(), sim.model().gravity_table, s.step, s.time) : 0.0;
-    auto point_values = [&](double n, double t, Point2 f, Point2 dir, double open, double slid, int st, int vb, int eb,
-                            int j, double u) {
+
+    void add(double n, double t, Point2 f, Point2 dir, double open, double slid, int st, int vb, int eb, int j,
+             double u) {
         if (water) {
             water_pressure.values.push_back(u);
             effective_normal_force.values.push_back(n);
@@ -213,7 +212,32 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         vertex_block.values.push_back(vb);
         edge_block.values.push_back(eb);
         joint.values.push_back(j);
-    };
+    }
+
+    std::vector<VtuField> take() {
+        std::vector<VtuField> fields{std::move(normal_force), std::move(shear_force), std::move(force),
+                                     std::move(normal),       std::move(opening),     std::move(slip),
+                                     std::move(state),        std::move(vertex_block), std::move(edge_block),
+                                     std::move(joint)};
+        if (water) {
+            fields.push_back(std::move(water_pressure));
+            fields.push_back(std::move(effective_normal_force));
+        }
+        return fields;
+    }
+};
+
+}  // namespace
+
+void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, int number, double time) {
+    const MeshTopology& topology = sim.topology();
+    PolyData data;
+    ContactFields fields;
+    // The contact springs carry the effective normal force: the water pressure acts on the
+    // joint's faces besides (fem/PorePressure.hpp).
+    fields.water = has_water(sim.full_model());
+    const double water_factor =
+        fields.water ? load_factor(sim.model(), sim.model().gravity_table, s.step, s.time) : 0.0;
     for (const Contact& c : s.contacts) {
         const ContactKinematics k = contact_kinematics(c, s.nodes, topology);
         const Point2 n{k.normal[0], k.normal[1]}, t{k.shear[0], k.shear[1]};
@@ -223,10 +247,10 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         const double fn = closed ? c.normal_force : 0.0, ft = closed ? c.shear_force : 0.0;
         data.vertices.push_back(static_cast<int>(data.points.size()));
         data.points.push_back(s.nodes[c.node]);
-        point_values(fn, ft, {fn * n.x - ft * t.x, fn * n.y - ft * t.y}, n, closed ? 0.0 : std::max(0.0, k.gap - c.gap_found),
-                     c.slip_total, c.state == ContactState::Open ? 0 : c.state == ContactState::Sliding ? 1 : 2,
-                     sim.mesh().node_block[c.node], c.edge_block, topology.edges[c.edge].joint,
-                     water ? water_factor * sim.model().water.pore_pressure(s.nodes[c.node]) : 0.0);
+        fields.add(fn, ft, {fn * n.x - ft * t.x, fn * n.y - ft * t.y}, n, closed ? 0.0 : std::max(0.0, k.gap - c.gap_found),
+                   c.slip_total, c.state == ContactState::Open ? 0 : c.state == ContactState::Sliding ? 1 : 2,
+                   sim.mesh().node_block[c.node], c.edge_block, topology.edges[c.edge].joint,
+                   fields.water ? water_factor * sim.model().water.pore_pressure(s.nodes[c.node]) : 0.0);
     }
     // Bolts: a line between their anchors, each end a point with no contact values.
     const Model& model = sim.full_model();
@@ -235,18 +259,12 @@ void RunOutput::save_contacts(const Simulation& sim, const SimulationState& s, i
         const int first = static_cast<int>(data.points.size());
         for (const Point2 p : sim.bolt_ends(static_cast<int>(i))) {
             data.points.push_back(p);
-            point_values(0.0, 0.0, {0.0, 0.0}, {0.0, 0.0}, 0.0, 0.0, 0, -1, -1, -1, 0.0);
+            fields.add(0.0, 0.0, {0.0, 0.0}, {0.0, 0.0}, 0.0, 0.0, 0, -1, -1, -1, 0.0);
         }
         data.lines.push_back({first, first + 1});
         bolt_force.values.push_back(s.bolt_force[i]);
     }
-    data.fields.point_data = {std::move(normal_force), std::move(shear_force), std::move(force), std::move(normal),
-                              std::move(opening),      std::move(slip),        std::move(state), std::move(vertex_block),
-                              std::move(edge_block),   std::move(joint)};
-    if (water) {
-        data.fields.point_data.push_back(std::move(water_pressure));
-        data.fields.point_data.push_back(std::move(effective_normal_force));
-    }
+    data.fields.point_data = fields.take();
     data.fields.cell_data = {std::move(bolt_force)};
     data.fields.field_data = {{"step", 1, {static_cast<double>(s.step)}},
                               {"stage", 1, {static_cast<double>(s.stage + 1)}},
