@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <atomic>
 #include <csignal>
@@ -28,13 +29,23 @@ std::atomic<bool> stop_requested{false};
 
 extern "C" void request_stop(int) { stop_requested = true; }
 
+std::string flops_text(double flops) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", flops);
+    return text;
+}
+
 void print_timings(const RunTimings& t, int steps) {
     std::cout << "timing (s): assembly " << t.assembly << ", factorization " << t.factorization << ", solve "
               << t.solve << ", contact " << t.contact << ", plasticity " << t.plasticity << ", total " << t.total
               << "\n"
               << "factorizations " << t.factorizations << " (" << t.symbolic_analyses << " symbolic analyses) in "
               << steps << " steps; " << t.reused_factors << " matrices solved with a held factor ("
-              << t.refinement_iterations << " conjugate-gradient iterations)\n"
+              << t.refinement_iterations << " conjugate-gradient iterations)"
+              << (t.ordering.empty() ? std::string()
+                                     : "; ordering " + t.ordering + ", " + flops_text(t.factorization_flops) +
+                                           " flops per Cholesky factorization")
+              << "\n"
               << "equilibrium iterations " << t.iterations << " (at most " << t.max_iterations << " in a step), "
               << t.load_cuts << " load increments halved\n"
               << "threads " << thread_count() << " (element loops and contact search)\n"

@@ -96,6 +96,10 @@ public:
 
     int factorizations() const { return factorizations_; }
     int symbolic_analyses() const { return analyses_; }
+    /// The fill-reducing ordering the last symbolic analysis of the Cholesky factor chose ("AMD"
+    /// or "METIS"; empty before one), and the flops of one factorisation with it.
+    const char* ordering() const;
+    double factorization_flops() const;
     /// factorize(true) calls that kept the held factor, and the iterations their solves took.
     int reused_factors() const { return reused_factors_; }
     int refinement_iterations() const { return refinement_iterations_; }

@@ -372,6 +372,8 @@ void Simulation::record_solver_counts() {
     timings_.symbolic_analyses = system_.symbolic_analyses();
     timings_.reused_factors = system_.reused_factors();
     timings_.refinement_iterations = system_.refinement_iterations();
+    timings_.ordering = system_.ordering();
+    timings_.factorization_flops = system_.factorization_flops();
 }
 
 std::vector<BoltLink> Simulation::bolt_links() const {

@@ -62,6 +62,8 @@ struct RunTimings {
     int iterations = 0;        ///< equilibrium iterations of all accepted steps
     int max_iterations = 0;    ///< the most in one accepted step
     int load_cuts = 0;         ///< load increments halved (static)
+    std::string ordering;             ///< of the Cholesky factor (SymmetricSystem::ordering)
+    double factorization_flops = 0.0;  ///< of one Cholesky factorisation with it
 };
 
 /// The evolving state of a run: coordinates, displacements, velocities, stresses, contacts.

@@ -42,6 +42,8 @@ RunTimings difference(const RunTimings& t, const RunTimings& before) {
     d.iterations = t.iterations - before.iterations;
     d.max_iterations = t.max_iterations;
     d.load_cuts = t.load_cuts - before.load_cuts;
+    d.ordering = t.ordering;
+    d.factorization_flops = t.factorization_flops;
     return d;
 }
 
@@ -88,6 +90,8 @@ void StrengthReductionSearch::add_timings(const RunTimings& t) {
     timings_.iterations += t.iterations;
     timings_.max_iterations = std::max(timings_.max_iterations, t.max_iterations);
     timings_.load_cuts += t.load_cuts;
+    timings_.ordering = t.ordering;
+    timings_.factorization_flops = t.factorization_flops;
 }
 
 StrengthReductionSearch::Trial StrengthReductionSearch::run_trial(double factor, const Callbacks& callbacks) {

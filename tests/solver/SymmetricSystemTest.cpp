@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <vector>
 
 namespace mcdda {
@@ -108,6 +109,45 @@ TEST(SymmetricSystem, SolvesTheAssembledMatrixDirectly) {
     EXPECT_LT((chain.dense(k, 2.0) * x - b).norm(), 1e-10 * b.norm());
     EXPECT_EQ(s.factorizations(), 1);
     EXPECT_EQ(s.symbolic_analyses(), 1);
+}
+
+// A square grid of m × m nodes, two unknowns each, coupled by its cells (a 2-D mesh's pattern):
+// on a mesh this large nested dissection gives a smaller factor than minimum degree (3.15M
+// entries and 5.0e8 flops against 3.21M and 6.1e8 here), so the analysis, trying both, keeps
+// METIS's ordering. (On grids of 60 × 60 nodes
+// AMD still wins.)
+TEST(SymmetricSystem, ALargeTwoDimensionalMeshIsOrderedByNestedDissection) {
+    const int m = 150, n = 2 * m * m;
+    std::vector<CouplingGroup> cells;
+    for (int i = 0; i + 1 < m; ++i)
+        for (int j = 0; j + 1 < m; ++j) {
+            CouplingGroup g;
+            g.size = 8;
+            const int corner = i * m + j;
+            const int nodes[4] = {corner, corner + 1, corner + m, corner + m + 1};
+            for (int a = 0; a < 4; ++a)
+                for (int c = 0; c < 2; ++c) g.equation[2 * a + c] = 2 * nodes[a] + c;
+            cells.push_back(g);
+        }
+    SymmetricSystem s;
+    EXPECT_STREQ(s.ordering(), "");
+    s.set_pattern(n, cells);
+    s.clear_values();
+    // Each cell: the 4-node Laplacian stencil for each component (−1 to the other nodes), the
+    // components coupled weakly, a diagonal that keeps the block positive definite.
+    double block[64];
+    for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < 8; ++b) block[8 * a + b] = a == b ? 3.5 : (a % 2 == b % 2 ? -1.0 : 0.1);
+    for (int g = 0; g < static_cast<int>(cells.size()); ++g) s.add(g, block);
+    for (int e = 0; e < n; ++e) s.add_diagonal(e, 1.0);
+    s.factorize();
+    EXPECT_STREQ(s.ordering(), "METIS");
+    EXPECT_GT(s.factorization_flops(), 0.0);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+    const Eigen::VectorXd x = s.solve(b);
+    const Eigen::SparseMatrix<double> lower = s.matrix();
+    const Eigen::VectorXd residual = b - lower.selfadjointView<Eigen::Lower>() * x;
+    EXPECT_LT(residual.norm(), 1e-9 * b.norm());
 }
 
 TEST(SymmetricSystem, AHeldFactorSolvesASlightlyChangedMatrixToTheSameAccuracy) {
