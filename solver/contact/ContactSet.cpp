@@ -5,6 +5,11 @@
 
 namespace mcdda {
 
+namespace {
+/// A state change by a force below this share of the largest contact force is marginal.
+constexpr double marginal_force_share = 1e-3;
+}  // namespace
+
 ContactSet::ContactSet(std::vector<Contact> contacts,
                        const std::function<ContactKinematics(const Contact&)>& kinematics_of, const Model& model,
                        const MeshTopology& topology, double penalty)
@@ -59,27 +64,17 @@ ContactSet::Update ContactSet::update_states(const Eigen::VectorXd& d, bool equi
     Update u;
     marginal_.clear();
     for (const Contact& c : contacts_) u.largest_force = std::max(u.largest_force, std::fabs(c.normal_force));
-    const double force_tolerance = 1e-3 * u.largest_force;
+    const double force_tolerance = marginal_force_share * u.largest_force;
     for (std::size_t i = 0; i < contacts_.size(); ++i) {
         const Contact before = contacts_[i];
         const double normal_used = std::max(0.0, before.normal_force);
         double change_force = 0.0;
-        StateChange change =
+        const StateChange found =
             update_contact_state(contacts_[i], kinematics_[i], properties_[i], local(i, d), force_tolerance, &change_force);
-        // Cycling (stick–slip or open–close at its limit): its last change is kept only if the
-        // try ends without other changes.
-        if (change == StateChange::Significant && ++flips_[i] > 2) {
-            const bool stick_slip = before.state != ContactState::Open && contacts_[i].state != ContactState::Open;
-            if (equilibrium_only && stick_slip && contacts_[i].state == ContactState::Locked) {
-                contacts_[i].state = ContactState::Sliding;
-                contacts_[i].slip = before.slip;
-                contacts_[i].shear_spring = before.shear_spring;
-                change = StateChange::None;
-            } else if (!(equilibrium_only && stick_slip)) {
-                change = StateChange::Marginal;
-                u.cycling_force = std::max(u.cycling_force, change_force);
-            }
-        }
+        const int flips = found == StateChange::Significant ? ++flips_[i] : flips_[i];
+        const StateChange change = cycling_rule(before, contacts_[i], found, flips, equilibrium_only);
+        if (found == StateChange::Significant && change == StateChange::Marginal)
+            u.cycling_force = std::max(u.cycling_force, change_force);
         if (change == StateChange::Significant) ++u.changes;
         if (change == StateChange::Marginal) marginal_.emplace_back(i, before);
         if (before.state == ContactState::Sliding && contacts_[i].state == ContactState::Sliding) {
@@ -89,6 +84,34 @@ ContactSet::Update ContactSet::update_states(const Eigen::VectorXd& d, bool equi
         }
     }
     return u;
+}
+
+StateChange ContactSet::cycling_rule(const Contact& before, Contact& after, StateChange change, int flips,
+                                     bool equilibrium_only) const {
+    // Cycling (stick–slip or open–close at its limit): its last change is kept only if the
+    // try ends without other changes.
+    if (change != StateChange::Significant || flips <= 2) return change;
+    const bool stick_slip = before.state != ContactState::Open && after.state != ContactState::Open;
+    if (equilibrium_only && stick_slip && after.state == ContactState::Locked) {
+        after.state = ContactState::Sliding;
+        after.slip = before.slip;
+        after.shear_spring = before.shear_spring;
+        return StateChange::None;
+    }
+    return equilibrium_only && stick_slip ? change : StateChange::Marginal;
+}
+
+bool ContactSet::would_change(const Eigen::VectorXd& d, bool equilibrium_only) const {
+    double largest = 0.0;
+    for (const Contact& c : contacts_) largest = std::max(largest, std::fabs(c.normal_force));
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+        Contact after = contacts_[i];
+        const StateChange found =
+            update_contact_state(after, kinematics_[i], properties_[i], local(i, d), marginal_force_share * largest);
+        const int flips = flips_[i] + (found == StateChange::Significant ? 1 : 0);
+        if (cycling_rule(contacts_[i], after, found, flips, equilibrium_only) == StateChange::Significant) return true;
+    }
+    return false;
 }
 
 void ContactSet::undo_marginal() {

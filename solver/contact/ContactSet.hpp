@@ -50,9 +50,16 @@ public:
     Update update_states(const Eigen::VectorXd& d, bool equilibrium_only);
     /// Returns the marginal changes of the last update to the states before it.
     void undo_marginal();
+    /// Whether update_states(d) would make a significant change, without making it: an
+    /// equilibrium iteration need not settle a displacement whose contact states change anyway.
+    bool would_change(const Eigen::VectorXd& d, bool equilibrium_only) const;
 
 private:
     Vector6 local(std::size_t i, const Eigen::VectorXd& d) const;
+    /// The state change of contact i from `before` to `after` (its `flips`-th significant one in
+    /// the try) under the cycling rule of update_states; `after` may be set to sliding.
+    StateChange cycling_rule(const Contact& before, Contact& after, StateChange change, int flips,
+                             bool equilibrium_only) const;
 
     std::vector<Contact> contacts_;
     std::vector<ContactKinematics> kinematics_;

@@ -32,6 +32,9 @@ public:
     /// displacement), or the iteration is linear and its one correction solved it exactly.
     /// `elastic_matrix`: the matrix in force is the elastic one of the current contact states.
     bool converged(const Iteration& it, bool elastic_matrix);
+    /// The force alone is small (after a correction): enough for a round of the open–close loop
+    /// whose contact states are about to change anyway.
+    bool balanced(const Iteration& it) const { return it.k > 0 && it.norm <= tolerance_ * it.scale; }
 
     enum class Verdict { Continue, Diverging, Stalled, Mechanism, Capped };
     /// Records the iteration and judges it (see the rules in the .cpp).

@@ -155,8 +155,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
                              const std::vector<BoltLink>& bolts, bool& factor_valid, Attempt& attempt) {
     const double tolerance = model_.analysis.plastic_tolerance;
     const double loads_in_play = load_scale(loads);
-    ConvergenceMonitor monitor(tolerance, model_.analysis.max_plastic_iterations,
-                               mechanism_displacements * displacement_limit_);
+    ConvergenceMonitor monitor(tolerance, model_.analysis.max_plastic_iterations, mechanism_displacements * displacement_limit_);
     AndersonMixing anderson(anderson_depth);
     double previous = std::numeric_limits<double>::infinity(), last_correction = 0.0;
     bool newton = uses_newton();
@@ -171,7 +170,8 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         const Balance b = balance_at(d, loads, contacts, bolts, matrix);
         attempt.yielding = b.evaluation.yielding;
         const ConvergenceMonitor::Iteration it = iteration_of(k, b, d, loads_in_play, last_correction, newton);
-        if (monitor.converged(it, elastic_matrix)) {
+        if (monitor.converged(it, elastic_matrix) ||
+            (attempt.may_stop_unsettled && monitor.balanced(it) && contacts.would_change(d, is_equilibrium_only()))) {
             attempt.residual = b.residual;
             return true;
         }

@@ -273,6 +273,9 @@ private:
         int iterations = 0;  ///< equilibrium iterations
         int yielding = 0;
         std::string why;     ///< for failures
+        /// In: equilibrate may return once the force balances, before the displacement settles,
+        /// when the contact states would then change (the open–close loop goes on from there).
+        bool may_stop_unsettled = false;
         Eigen::VectorXd residual;  ///< out-of-balance force at d (converged: the support reactions, negated)
         std::vector<Contact> contacts;  ///< with the states the try ended with
         std::vector<BoltLink> bolts;  ///< the bolts that held (those that broke in the try left out)

@@ -98,3 +98,22 @@ TEST(ContactSet, PullingTheBlocksApartOpensEveryContactAndUndoKeepsNothingMargin
     set.add_forces(upper_block_moves(t, 0.0, -1e-4), force);
     EXPECT_EQ(force.cwiseAbs().maxCoeff(), 0.0);  // open contacts add nothing
 }
+
+TEST(ContactSet, WouldChangeForeseesTheUpdateWithoutMakingIt) {
+    const TwoBlocks t = two_blocks();
+    ContactSet set = contact_set_of(t);
+    // Pressed together a little: every contact stays closed, nothing to change.
+    const Eigen::VectorXd pressed = upper_block_moves(t, 0.0, -1e-6);
+    EXPECT_FALSE(set.would_change(pressed, false));
+    EXPECT_EQ(set.update_states(pressed, false).changes, 0);
+    // Pulled apart: they would all open, and asking leaves them closed.
+    const Eigen::VectorXd pulled = upper_block_moves(t, 0.0, 1e-2);
+    EXPECT_TRUE(set.would_change(pulled, false));
+    EXPECT_TRUE(set.would_change(pulled, true));
+    EXPECT_EQ(set.count(ContactState::Open), 0);
+    EXPECT_GT(set.update_states(pulled, false).changes, 0);
+    EXPECT_EQ(set.count(ContactState::Open), static_cast<int>(t.contacts.size()));
+    // Open and still apart: no change foreseen, none made.
+    EXPECT_FALSE(set.would_change(pulled, false));
+    EXPECT_EQ(set.update_states(pulled, false).changes, 0);
+}

@@ -35,6 +35,13 @@ TEST(ConvergenceMonitor, ConvergedNeedsSmallForceAndSmallCorrectionAfterTheFirst
     EXPECT_FALSE(m.converged(at(1, 1e-2, 1e-6), false));
 }
 
+TEST(ConvergenceMonitor, BalancedNeedsOnlyTheForceAfterTheFirstIteration) {
+    const ConvergenceMonitor m(1e-4, 200, 1.0);
+    EXPECT_FALSE(m.balanced(at(0, 1e-6, 1e-6)));      // nothing solved yet
+    EXPECT_TRUE(m.balanced(at(1, 1e-6, 1e-2)));       // the displacement may still move
+    EXPECT_FALSE(m.balanced(at(1, 1e-2, 1e-6)));
+}
+
 TEST(ConvergenceMonitor, ALinearIterationHasConvergedAfterOneSolve) {
     ConvergenceMonitor m(1e-4, 200, 1.0);
     EXPECT_FALSE(m.converged(at(0, 1.0, 0.0, false, 0), true));
