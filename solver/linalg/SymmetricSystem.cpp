@@ -34,15 +34,20 @@ SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()),
     // reference BLAS and on OpenBLAS alike; from about 20k six-node equations on both switches
     // pick the supernodal method (docs/plasticity.md).
     factor_->llt.cholmod().supernodal_switch = 300;
+    set_try_nested_dissection(true);
+}
+
+void SymmetricSystem::set_try_nested_dissection(bool on) {
     // Fill-reducing ordering: the symbolic analysis tries AMD and METIS's nested dissection and
     // keeps the one whose factor has fewer entries. On the default example's 31k equations
     // nested dissection gives 1.84M entries and 2.2e8 flops per factorisation against AMD's
     // 1.98M and 3.1e8 (a quarter less CPU in the whole run, docs/benchmarks.md); the price is one
-    // METIS call per pattern (about 0.2 s there).
+    // METIS call per pattern (about 0.2 s there). Off: CHOLMOD's default strategy (AMD here).
     cholmod_common& c = factor_->llt.cholmod();
-    c.nmethods = 2;
-    c.method[0].ordering = CHOLMOD_AMD;
-    c.method[1].ordering = CHOLMOD_METIS;
+    c.nmethods = on ? 2 : 0;
+    c.method[0].ordering = on ? CHOLMOD_AMD : CHOLMOD_GIVEN;
+    c.method[1].ordering = on ? CHOLMOD_METIS : CHOLMOD_AMD;
+    analysed_ = false;
 }
 SymmetricSystem::~SymmetricSystem() = default;
 
