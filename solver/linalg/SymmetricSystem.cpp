@@ -41,8 +41,9 @@ void SymmetricSystem::set_try_nested_dissection(bool on) {
     // Fill-reducing ordering: the symbolic analysis tries AMD and METIS's nested dissection and
     // keeps the one whose factor has fewer entries. On the default example's 31k equations
     // nested dissection gives 1.84M entries and 2.2e8 flops per factorisation against AMD's
-    // 1.98M and 3.1e8 (a quarter less CPU in the whole run, docs/benchmarks.md); the price is one
-    // METIS call per pattern (about 0.2 s there). Off: CHOLMOD's default strategy (AMD here).
+    // 1.98M and 3.1e8; the Hoek–Brown tunnel's run takes a fifth less CPU with it
+    // (docs/benchmarks.md). The price is one METIS call per pattern (about 0.2 s at 31k
+    // equations). Off: CHOLMOD's default strategy (AMD on these matrices).
     cholmod_common& c = factor_->llt.cholmod();
     c.nmethods = on ? 2 : 0;
     c.method[0].ordering = on ? CHOLMOD_AMD : CHOLMOD_GIVEN;
