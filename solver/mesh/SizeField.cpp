@@ -11,11 +11,47 @@ namespace {
 constexpr std::size_t binned_from = 32;
 /// Cells per side of the grid at most (a few features far apart).
 constexpr long long max_cells_per_side = 4096;
+/// Kept features a feature is compared with before it is kept too (see keep_undominated).
+constexpr std::size_t dominance_candidates = 64;
+
+/// Does feature `a` ask for a size no larger than `b` everywhere? Within δ, the largest distance
+/// from b's segment to a's, d_a(p) ≤ d_b(p) + δ at every p, so a's size
+/// s_a + g·max(0, d_a − r_a) is at most s_b + g·max(0, d_b − r_b) wherever
+/// s_a + g·max(0, δ + r_b − r_a) ≤ s_b. A margin of 1e-9 keeps rounding on the safe side: then the
+/// field is the same, bit for bit, without b.
+bool dominates(const LocalSize& a, const LocalSize& b, double grading) {
+    if (a.from.x == b.from.x && a.from.y == b.from.y && a.to.x == b.to.x && a.to.y == b.to.y && a.size == b.size &&
+        a.radius == b.radius)
+        return true;
+    const double apart = std::max(distance_to_segment(b.from, a.from, a.to), distance_to_segment(b.to, a.from, a.to));
+    return a.size + grading * std::max(0.0, apart + b.radius - a.radius) <= b.size * (1.0 - 1e-9);
+}
+
+/// The features that can make the field finer somewhere: none asking for the global size or
+/// more, none another one overrules everywhere. Copies of one refinement (80,000 of them took a
+/// minute to mesh, every point looking at all) become one. Each feature, smallest size first,
+/// is compared with the first few kept, so this stays linear in their number.
+std::vector<LocalSize> keep_undominated(const std::vector<LocalSize>& features, double global, double grading) {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < features.size(); ++i)
+        if (features[i].size < global) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return features[a].size < features[b].size; });
+    std::vector<LocalSize> kept;
+    for (std::size_t i : order) {
+        const std::size_t compared = std::min(kept.size(), dominance_candidates);
+        bool overruled = false;
+        for (std::size_t k = 0; k < compared && !overruled; ++k) overruled = dominates(kept[k], features[i], grading);
+        if (!overruled) kept.push_back(features[i]);
+    }
+    return kept;
+}
 
 }  // namespace
 
 SizeField::SizeField(const MeshControls& controls, double global_size)
-    : global_(global_size), grading_(controls.grading), local_(controls.local) {
+    : global_(global_size), grading_(controls.grading),
+      local_(keep_undominated(controls.local, global_size, controls.grading)) {
     if (local_.size() < binned_from || !(grading_ > 0.0)) {
         for (std::size_t i = 0; i < local_.size(); ++i) everywhere_.push_back(static_cast<int>(i));
         return;

@@ -18,6 +18,9 @@ public:
     double operator()(Point2 p) const;
 
     double global_size() const { return global_; }
+    /// The local refinement features the field looks at: those that make it finer somewhere and
+    /// that no other one overrules everywhere (copies count once).
+    std::size_t feature_count() const { return local_.size(); }
 
 private:
     double global_;

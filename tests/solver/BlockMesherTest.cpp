@@ -168,6 +168,32 @@ TEST(SizeField, BinnedFeaturesGiveTheSameSizeAsAllOfThem) {
     }
 }
 
+// Copies of one refinement (80,000 of them made every point of the mesher look at all: a minute
+// of meshing) count once, and so does a refinement another one overrules everywhere (coarser
+// and nearby, or reaching less far); the field is the minimum over all of them, bit for bit.
+TEST(SizeField, CopiesAndOverruledRefinementsCountOnce) {
+    MeshControls controls;
+    controls.grading = 0.25;
+    const LocalSize tunnel{{0, 0}, {0, 0}, 0.3, 3.5};
+    for (int i = 0; i < 80000; ++i) controls.local.push_back(tunnel);
+    controls.local.push_back({{5e-324, 0}, {5e-324, 0}, 0.3000001, 3.5});  // a hair off, coarser
+    controls.local.push_back({{1, 1}, {1, 2}, 0.5, 0.5});                  // within the first's reach
+    controls.local.push_back({{0, 0}, {0, 0}, 1.2, 100.0});                // the global size: no say
+    const LocalSize far_line{{30, 0}, {40, 0}, 0.2, 0.0};                   // its own: kept
+    controls.local.push_back(far_line);
+    const SizeField field(controls, 1.2);
+    EXPECT_EQ(field.feature_count(), 2u);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> coordinate(-20.0, 50.0);
+    for (int k = 0; k < 2000; ++k) {
+        const Point2 p{coordinate(rng), 0.5 * coordinate(rng)};
+        double expected = 1.2;
+        for (const LocalSize& l : {tunnel, far_line})
+            expected = std::min(expected, l.size + 0.25 * std::max(0.0, distance_to_segment(p, l.from, l.to) - l.radius));
+        ASSERT_EQ(field(p), expected) << "at (" << p.x << ", " << p.y << ")";
+    }
+}
+
 // With a gentle grading every crack tip reaches over the whole model: the field must still be
 // the minimum over all of them, inside the features' box and outside it.
 TEST(SizeField, FarReachingFeaturesGiveTheSameSizeAsAllOfThem) {
