@@ -192,11 +192,17 @@ TEST(ModelValidation, AbsurdMagnitudesAreRefused) {
                  "/initial_stress/surface_y", "in-situ vertical stress at the model's base");
     expect_error({R"(/initial_stress={"type": "uniform", "sxx": 1e13, "syy": 1e6})"}, "/initial_stress/sxx",
                  "beyond any physical value");
-    // Large but physical values pass: 200 g, a 10 km overburden, a "rigid" plate.
+    // A contact spring a thousand times stiffer than the stiffest rock (E = 1 GPa here) adds
+    // nothing but ill-conditioning (1.8e19 N/m on the jointed tunnel: 230 s for one step).
+    expect_error({"/joint_materials/0/shear_stiffness=18446744073709551617"}, "/joint_materials/0/shear_stiffness",
+                 "more than 1000 times the stiffest material's Young's modulus (1e+09 Pa): use at most 1e+12 N/m");
+    expect_error({"/joint_materials/0/normal_stiffness=2e12"}, "/joint_materials/0/normal_stiffness", "use at most 1e+12 N/m");
+    expect_error({R"(/analysis={"type": "static", "penalty": 5e12})"}, "/analysis/penalty", "or 0 (automatic: 4e+09 N/m)");
+    // Large but physical values pass: 200 g, a 10 km overburden, a "rigid" plate, stiff springs.
     const Preprocessed p = preprocess_text(
         square_model_json(),
         {"/gravity=[0, -1962]", R"(/initial_stress={"type": "gravity", "surface_y": 10000, "k0": 0.5})",
-         "/materials/0/young_modulus=1e13"},
+         "/materials/0/young_modulus=1e13", "/joint_materials/0/normal_stiffness=1e16", R"(/analysis={"type": "static", "penalty": 1e16})"},
         PreprocessStage::Cut);
     EXPECT_TRUE(p.ok) << all_messages(p.diagnostics);
 }
