@@ -401,10 +401,6 @@ private:
     }
 };
 
-}  // namespace
-
-namespace {
-
 /// Triangles between cracks closer together than the size asked for there: the mesh between
 /// them is as fine as their gap (the minimum angle forbids long thin triangles), as in a block
 /// narrower than the size. A crack piece of length L whose nearest near-parallel neighbour lies
@@ -430,12 +426,21 @@ double crack_gap_triangles(const Block& b, const SizeAt& size_at, double global_
     const long long ny = static_cast<long long>((box[3] - box[1]) / cell) + 1;
     const auto column = [&](double x) { return std::clamp(static_cast<long long>((x - box[0]) / cell), 0LL, nx - 1); };
     const auto row = [&](double y) { return std::clamp(static_cast<long long>((y - box[1]) / cell), 0LL, ny - 1); };
+    // Each piece is binned where it passes (points half a cell apart, not its box: a long
+    // diagonal crack would fill millions of cells); a search one cell wider than the size then
+    // meets every piece passing within the size.
     std::unordered_map<long long, std::vector<int>> cells;
     for (std::size_t i = 0; i < cracks.size(); ++i) {
         const Block::Crack& c = cracks[i];
-        for (long long x = column(std::min(c.from.x, c.to.x)); x <= column(std::max(c.from.x, c.to.x)); ++x)
-            for (long long y = row(std::min(c.from.y, c.to.y)); y <= row(std::max(c.from.y, c.to.y)); ++y)
-                cells[y * nx + x].push_back(static_cast<int>(i));
+        const double length = std::hypot(c.to.x - c.from.x, c.to.y - c.from.y);
+        const long long samples = static_cast<long long>(2.0 * length / cell) + 1;
+        long long last = -1;
+        for (long long k = 0; k <= samples; ++k) {
+            const double t = static_cast<double>(k) / static_cast<double>(samples);
+            const long long at = row(c.from.y + t * (c.to.y - c.from.y)) * nx + column(c.from.x + t * (c.to.x - c.from.x));
+            if (at != last) cells[at].push_back(static_cast<int>(i));
+            last = at;
+        }
     }
     const auto same = [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; };
     constexpr double near_parallel_sine = 0.5;  // within 30°
@@ -448,13 +453,14 @@ double crack_gap_triangles(const Block& b, const SizeAt& size_at, double global_
         const double ux = (c.to.x - c.from.x) / length, uy = (c.to.y - c.from.y) / length;
         const double h = size_at(mid);
         double gap = h;
-        for (long long x = column(mid.x - h); x <= column(mid.x + h); ++x)
-            for (long long y = row(mid.y - h); y <= row(mid.y + h); ++y) {
+        std::set<int> seen;
+        for (long long x = column(mid.x - h - cell); x <= column(mid.x + h + cell); ++x)
+            for (long long y = row(mid.y - h - cell); y <= row(mid.y + h + cell); ++y) {
                 const auto found = cells.find(y * nx + x);
                 if (found == cells.end()) continue;
                 for (int j : found->second) {
                     const Block::Crack& o = cracks[j];
-                    if (j == static_cast<int>(i) || same(o.from, c.from) || same(o.from, c.to) || same(o.to, c.from) ||
+                    if (!seen.insert(j).second || j == static_cast<int>(i) || same(o.from, c.from) || same(o.from, c.to) || same(o.to, c.from) ||
                         same(o.to, c.to))
                         continue;
                     const double olength = std::hypot(o.to.x - o.from.x, o.to.y - o.from.y);
