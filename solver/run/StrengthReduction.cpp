@@ -64,6 +64,10 @@ struct StrengthReductionSearch::Trial {
     StrengthTrial record;
     SimulationState state;
     bool cancelled = false;
+    bool collapsed = false;  ///< stopped short of its load: `state` is the last load it carried
+    /// Collapsed: the share of the analysis's load it carried. (The middle of the collapse
+    /// bracket, as a guess of what it could carry, chose worse factors to try.)
+    double carried = 0.0;
 };
 
 StrengthReductionSearch::StrengthReductionSearch(const Preprocessed& p) : model_(p) {
@@ -111,6 +115,8 @@ StrengthReductionSearch::Trial StrengthReductionSearch::run_trial(double factor,
 
     Trial trial;
     trial.cancelled = end.status == RunStatus::Cancelled;
+    trial.collapsed = end.status == RunStatus::Collapsed;
+    if (trial.collapsed) trial.carried = end.collapse_carried / std::max(1, simulation_->analysis().steps);
     trial.state = simulation_->state();
     StrengthTrial& r = trial.record;
     r.number = static_cast<int>(factor_.table.size()) + 1;
@@ -134,6 +140,7 @@ struct StrengthReductionSearch::Bracket {
 
 RunEnd StrengthReductionSearch::run(RunOutput* output, const Callbacks& callbacks) {
     factor_ = FactorOfSafety{};
+    collapses_.clear();
     double last_time = 0.0;
     if (safety_stage_ > 0) {
         // The construction stages, once, with their own strengths; the history keeps the trials.
@@ -169,6 +176,7 @@ bool StrengthReductionSearch::try_factor(double f, Bracket& bracket, RunOutput* 
     factor_.table.push_back(t.record);
     if (output) output->record_trial(*simulation_, t.record, t.state);
     if (callbacks.on_trial) callbacks.on_trial(t.record);
+    if (t.collapsed && safety_stage_ < 0) collapses_.push_back({f, t.carried});
     if (t.record.stands) {
         if (!bracket.stood || f > bracket.stood->record.factor) {
             if (bracket.stood) bracket.below = std::move(bracket.stood);
@@ -191,10 +199,14 @@ void StrengthReductionSearch::search(Bracket& b, const AnalysisSettings& setting
         const double next = b.stood ? b.stood->record.factor * bracket_growth : b.fell->record.factor / bracket_growth;
         b.cancelled = !try_factor(next, b, output, callbacks);
     }
-    // Bisect.
+    // Narrow the bracket.
+    Pick last = Pick::Middle;
     while (!b.cancelled && b.stood && b.fell && trials_left() &&
-           b.fell->record.factor - b.stood->record.factor > settings.factor_tolerance * b.stood->record.factor)
-        b.cancelled = !try_factor(0.5 * (b.stood->record.factor + b.fell->record.factor), b, output, callbacks);
+           b.fell->record.factor - b.stood->record.factor > settings.factor_tolerance * b.stood->record.factor) {
+        const auto [f, pick] = next_inside(b, settings.factor_tolerance, last == Pick::Guess && factor_.table.back().stands);
+        b.cancelled = !try_factor(f, b, output, callbacks);
+        last = pick;
+    }
 
     factor_.trials = static_cast<int>(factor_.table.size());
     if (b.stood) factor_.value = factor_.converged = b.stood->record.factor;
@@ -202,6 +214,40 @@ void StrengthReductionSearch::search(Bracket& b, const AnalysisSettings& setting
     factor_.found = b.stood && b.fell &&
                     b.fell->record.factor - b.stood->record.factor <=
                         settings.factor_tolerance * b.stood->record.factor * (1 + 1e-12);
+}
+
+std::optional<double> StrengthReductionSearch::estimated_factor() const {
+    // The two collapses at the lowest factors, nearest the factor of safety.
+    std::vector<std::pair<double, double>> c;
+    for (const auto& [factor, carried] : collapses_)
+        if (carried > 0.0 && carried < 1.0) c.push_back({factor, carried});
+    if (c.size() < 2) return std::nullopt;
+    std::partial_sort(c.begin(), c.begin() + 2, c.end());
+    // The line through (x1, y1) and (x2, y2) meets the diagonal x = y at s = 1/F.
+    const double x1 = 1.0 / (c[0].second * c[0].first), y1 = 1.0 / c[0].first;
+    const double x2 = 1.0 / (c[1].second * c[1].first), y2 = 1.0 / c[1].first;
+    const double denominator = (x2 - x1) - (y2 - y1);
+    if (std::fabs(denominator) < 1e-12 * std::max(std::fabs(x1), std::fabs(y1))) return std::nullopt;
+    const double u = (y1 - x1) / denominator;
+    const double s = y1 + u * (y2 - y1);
+    if (!(s > 0.0) || !std::isfinite(s)) return std::nullopt;
+    return 1.0 / s;
+}
+
+std::pair<double, StrengthReductionSearch::Pick> StrengthReductionSearch::next_inside(const Bracket& b, double tolerance,
+                                                                                    bool guess_stood) const {
+    const double low = b.stood->record.factor, high = b.fell->record.factor;
+    // A trial this far inside either end, when it lands on the far side, closes the bracket.
+    const double margin = 0.9 * tolerance * low;
+    if (high - low > 2.0 * margin) {
+        // The guess moves only with a new collapse: after a trial at it stood, one just above
+        // (which closes the bracket when the guess was good); a guess the bracket has left
+        // behind gives way to the middle.
+        if (guess_stood) return {low + margin, Pick::AboveGuess};
+        const std::optional<double> guess = estimated_factor();
+        if (guess && *guess > low && *guess < high) return {std::clamp(*guess, low + margin, high - margin), Pick::Guess};
+    }
+    return {0.5 * (low + high), Pick::Middle};
 }
 
 // The critical pair: the last state that stood and the first that did not. The latter carries

@@ -4,8 +4,10 @@
 /// compute it): the model's strengths are divided by trial factors F (material/StrengthReduction.hpp)
 /// and the model is solved again for each; the largest F at which it stands is its factor of
 /// safety. The search brackets the factor (×1.5 or ÷1.5 from 1 until one trial stands and one
-/// does not; factors below 1 too) and bisects the bracket until it is narrower than
-/// analysis.factor_tolerance of the factor.
+/// does not; factors below 1 too) and narrows the bracket until it is narrower than
+/// analysis.factor_tolerance of the factor: at its middle, or — once two trials collapsed —
+/// where the limit curve through their collapse loads meets the whole load (estimated_factor).
+/// Only the trials' verdicts decide the factor; the guess chooses where to look.
 ///
 /// A trial stands when every step of it reaches equilibrium (the static solver's verdict, with
 /// its load bisection: docs/plasticity.md); it does not when a step collapses, when it ends out
@@ -19,6 +21,9 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace mcdda {
 
@@ -57,8 +62,22 @@ private:
     Trial run_trial(double factor, const Callbacks& callbacks);
     /// Runs a trial and places it in the bracket; false when it was cancelled.
     bool try_factor(double factor, Bracket& bracket, RunOutput* output, const Callbacks& callbacks);
-    /// Brackets the factor, then bisects the bracket to the tolerance.
+    /// Brackets the factor, then narrows the bracket to the tolerance.
     void search(Bracket& bracket, const AnalysisSettings& settings, RunOutput* output, const Callbacks& callbacks);
+    /// How a trial inside the bracket was chosen.
+    enum class Pick { Middle, Guess, AboveGuess };
+    /// The next factor to try inside the bracket: the guess of estimated_factor, kept off the
+    /// bracket's ends, or just above it after a trial at the guess stood (`guess_stood`), or the
+    /// middle.
+    std::pair<double, Pick> next_inside(const Bracket& bracket, double tolerance, bool guess_stood) const;
+    /// A guess of the factor from the two collapses at the lowest factors. A trial that collapsed
+    /// at F after carrying a share λ of its load is a point (1/(λF), 1/F) of the limit curve in
+    /// the plane (cohesion divided by, tan φ divided by): a load λ times larger acts on
+    /// Mohr–Coulomb strength as a cohesion λ times smaller would (stresses grow with the load, and
+    /// friction's strength with them). The factor is where the curve — here the line through the
+    /// two points — meets the diagonal: both divided alike, under the whole load. None without two
+    /// collapses that carried part of their load.
+    std::optional<double> estimated_factor() const;
     void save_critical_pair(const Bracket& bracket, RunOutput* output, double last_time);
     RunEnd ending(const Bracket& bracket, const AnalysisSettings& settings) const;
     void add_timings(const RunTimings& t);
@@ -67,6 +86,8 @@ private:
     int safety_stage_ = -1;  ///< index of the strength reduction stage; −1: the model's analysis
     std::unique_ptr<Simulation> simulation_;
     std::unique_ptr<SimulationCheckpoint> start_;  ///< where every trial of a safety stage starts
+    /// Per trial that collapsed (not in a safety stage): its factor and the share of the load it carried.
+    std::vector<std::pair<double, double>> collapses_;
     FactorOfSafety factor_;
     RunTimings timings_;
 };
