@@ -28,8 +28,9 @@ HANG (still running after --timeout seconds; a study whose runs have started is 
 running many runs is not a hang), UNCLEAR (a library's text in the output: json.exception,
 std::, what(), terminate called, unexpected failure, bad_alloc, VTK or CGAL messages; or an error
 exit with no message). The counts go to stdout and OUT/summary.json — also when the run is
-stopped early by Ctrl-C or SIGTERM (kill, a batch system's time limit, or SIGINT to a run started in
-the background, where the shell ignores it otherwise); every CRASH, HANG and UNCLEAR input is kept in OUT/findings/<name>/ with repro.sh (the command line) and output.txt.
+stopped early by Ctrl-C or SIGTERM (kill, a batch system's time limit, or SIGINT to a run started
+in the background, where the shell ignores it otherwise); every CRASH, HANG and UNCLEAR input is
+kept in OUT/findings/<name>/ with repro.sh (the command line) and output.txt.
 The exit status is 1 when there is any finding, 0 otherwise, 2 on a usage or set-up problem.
 
 Sanitized builds (scripts/sanitize.sh, or a CLI built with -fsanitize=address,undefined) work
