@@ -117,9 +117,10 @@ bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, con
     return true;
 }
 
-double Simulation::line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta, const Eigen::VectorXd& loads,
-                               const ContactSet& contacts, const std::vector<BoltLink>& bolts, const Balance& at,
-                               double tolerance, double scale, bool least_squares) {
+Simulation::LineSearch Simulation::line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta,
+                                               const Eigen::VectorXd& loads, const ContactSet& contacts,
+                                               const std::vector<BoltLink>& bolts, const Balance& at,
+                                               double tolerance, double scale, bool least_squares) {
     // Backtracking on the out-of-balance force: a full Newton correction through a softening
     // (perfectly plastic) tangent overshoots and can spread yield over the whole model. The sum
     // of squares (least_squares) accepts a correction that lowers the force overall while one
@@ -129,15 +130,16 @@ double Simulation::line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& 
     // Across closed contacts, whose friction makes the verdict depend on the path, it moved the
     // rock-bridge slope's factor of safety by −1.1 % (a trial that stood stalled), and static
     // DDA's staged-tunnel verdicts were validated with the largest force: both keep it.
-    double step = 1.0;
+    LineSearch search;
     for (int cut = 0; cut < line_search_cuts; ++cut) {
         const ResidualNorms n =
-            residual_norms(residual(d + step * delta, loads, contacts, bolts, returned_, ElementMatrix::None));
-        if (n.norm <= tolerance * scale) break;
-        if (least_squares ? n.norm2 <= at.norm2 : n.norm <= at.norm) break;
-        step *= 0.5;
+            residual_norms(residual(d + search.step * delta, loads, contacts, bolts, returned_, ElementMatrix::None));
+        if (n.norm <= tolerance * scale) return search;
+        if (least_squares ? n.norm2 <= at.norm2 : n.norm <= at.norm) return search;
+        search.step *= 0.5;
     }
-    return step;
+    search.lowered = false;
+    return search;
 }
 
 ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, const Eigen::VectorXd& d,
@@ -210,10 +212,20 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         // No line search with the elastic matrix (the initial-stress iteration): its full steps
         // converge while the largest nodal force may rise on the way.
         const bool search = newton && (it.yielding > 0 || matrix == ElementMatrix::Tangent);
-        const double step =
+        const bool plain_newton = is_equilibrium_only() && !contacts.any_closed() && !monitor.polishing();
+        const LineSearch searched =
             search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale,
-                                 monitor.polishing() || (is_equilibrium_only() && !contacts.any_closed()))
-                   : 1.0;
+                                 monitor.polishing() || plain_newton)
+                   : LineSearch{};
+        // Newton's correction from a force already within tolerance that no share of it lowers:
+        // it runs along the nearly singular tangent of a forming mechanism (its length measures
+        // that, not a distance to equilibrium), and iterating on raised the force back above the
+        // tolerance until the try stalled, an increment in equilibrium declared not carried.
+        if (plain_newton && !searched.lowered && b.norm <= tolerance * it.scale) {
+            attempt.residual = b.residual;
+            return true;
+        }
+        const double step = searched.step;
         d += step * delta;
         last_correction = step * delta.cwiseAbs().maxCoeff();
         // The factor is kept while it contracts the out-of-balance force well enough.

@@ -418,10 +418,15 @@ private:
     /// The correction of an iteration: K⁻¹R, Anderson-mixed for the elastic iteration.
     Eigen::VectorXd correction(const Eigen::VectorXd& d, const Balance& b, bool newton, double force_tolerance,
                                bool any_closed, AndersonMixing& anderson);
-    /// The share of a Newton correction to take (backtracking).
-    double line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta, const Eigen::VectorXd& loads,
-                       const ContactSet& contacts, const std::vector<BoltLink>& bolts, const Balance& at,
-                       double tolerance, double scale, bool least_squares);
+    /// The share of a Newton correction to take (backtracking), and whether any share tried
+    /// lowered the out-of-balance force (else the smallest share is returned untested).
+    struct LineSearch {
+        double step = 1.0;
+        bool lowered = true;
+    };
+    LineSearch line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta, const Eigen::VectorXd& loads,
+                           const ContactSet& contacts, const std::vector<BoltLink>& bolts, const Balance& at,
+                           double tolerance, double scale, bool least_squares);
     void observe_iteration(double out_of_balance, double tolerance, int yielding);
     Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs);  ///< back-substitution, full-size result
 
