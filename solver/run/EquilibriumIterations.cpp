@@ -217,11 +217,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
             search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale,
                                  monitor.polishing() || plain_newton)
                    : LineSearch{};
-        // Newton's correction from a force already within tolerance that no share of it lowers:
-        // it runs along the nearly singular tangent of a forming mechanism (its length measures
-        // that, not a distance to equilibrium), and iterating on raised the force back above the
-        // tolerance until the try stalled, an increment in equilibrium declared not carried.
-        if (plain_newton && !searched.lowered && b.norm <= tolerance * it.scale) {
+        if (plain_newton && monitor.beyond_improvement(it, searched.lowered)) {
             attempt.residual = b.residual;
             return true;
         }

@@ -42,6 +42,13 @@ TEST(ConvergenceMonitor, BalancedNeedsOnlyTheForceAfterTheFirstIteration) {
     EXPECT_FALSE(m.balanced(at(1, 1e-2, 1e-6)));
 }
 
+TEST(ConvergenceMonitor, AnIncrementInEquilibriumThatNewtonCannotImproveStands) {
+    const ConvergenceMonitor m(1e-4, 200, 1.0);
+    EXPECT_TRUE(m.beyond_improvement(at(3, 5e-5, 0.7, true), false));   // no share of the correction lowers it
+    EXPECT_FALSE(m.beyond_improvement(at(3, 5e-5, 0.7, true), true));   // a share does: iterate on
+    EXPECT_FALSE(m.beyond_improvement(at(3, 2e-4, 0.7, true), false));  // out of balance: not in equilibrium
+}
+
 TEST(ConvergenceMonitor, ALinearIterationHasConvergedAfterOneSolve) {
     ConvergenceMonitor m(1e-4, 200, 1.0);
     EXPECT_FALSE(m.converged(at(0, 1.0, 0.0, false, 0), true));
