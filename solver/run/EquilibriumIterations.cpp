@@ -26,6 +26,12 @@ constexpr int anderson_depth = 5;
 constexpr double mechanism_displacements = 20.0;
 /// Halvings of a Newton correction the line search may try.
 constexpr int line_search_cuts = 6;
+/// The energy line search stops where the slope of the energy along the correction is within
+/// this share of its slope at the start (0.25–0.5 measured alike on the homogeneous slope; 0.8,
+/// the customary looser value, took 10 trials against 6 to find its factor of safety), or after
+/// this many shares.
+constexpr double energy_line_search_slack = 0.5;
+constexpr int energy_line_search_shares = 8;
 
 }  // namespace
 
@@ -120,25 +126,91 @@ bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, con
 Simulation::LineSearch Simulation::line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta,
                                                const Eigen::VectorXd& loads, const ContactSet& contacts,
                                                const std::vector<BoltLink>& bolts, const Balance& at,
-                                               double tolerance, double scale, bool least_squares) {
-    // Backtracking on the out-of-balance force: a full Newton correction through a softening
-    // (perfectly plastic) tangent overshoots and can spread yield over the whole model. The sum
-    // of squares (least_squares) accepts a correction that lowers the force overall while one
-    // node's force rises; the largest nodal force alone accepts only 1/16–1/8 of each correction
-    // near a limit load, so Newton creeps and stalls above the tolerance (a false collapse). Used
-    // in small-strain static analyses without closed contacts (and the unsymmetric polish).
-    // Across closed contacts, whose friction makes the verdict depend on the path, it moved the
-    // rock-bridge slope's factor of safety by −1.1 % (a trial that stood stalled), and static
-    // DDA's staged-tunnel verdicts were validated with the largest force: both keep it.
+                                               double tolerance, double scale, Merit merit) {
+    // A full Newton correction through a softening (perfectly plastic) tangent overshoots and
+    // can spread yield over the whole model: a share of it is taken.
+    //  - Energy (strength reduction trials without closed contacts, symmetric tangent): the
+    //    share that minimises the potential energy along the correction (energy_line_search).
+    //    Only there: it lets Newton converge where the potential is flat, so at a limit load an
+    //    increment may flow metres along the mechanism with the force within its tolerance. A
+    //    trial's verdict, resolved to the search's tolerance (0.5 %), does not notice; the
+    //    flexible footing's collapse load did: bisected it rose to 5.1736 cu (5.1700 at a
+    //    tolerance of 1e-6) while whole 1 kPa steps stopped at 5.17.
+    //  - SumOfSquares (other small-strain static analyses without closed contacts, and the
+    //    unsymmetric polish, which has no potential): halving until the sum of squares of the
+    //    out-of-balance force does not rise, which a Newton direction always lowers at first.
+    //  - LargestForce (across closed contacts and in static DDA): halving until the largest nodal
+    //    force does not rise. Coulomb friction makes the verdict depend on the path there: the
+    //    sum of squares moved the rock-bridge slope's factor of safety by −1.1 % (a trial that
+    //    stood stalled), and static DDA's staged-tunnel verdicts were validated with this merit.
+    if (merit == Merit::Energy)
+        if (const std::optional<LineSearch> s = energy_line_search(d, delta, loads, contacts, bolts, at, tolerance, scale))
+            return *s;
     LineSearch search;
     for (int cut = 0; cut < line_search_cuts; ++cut) {
         const ResidualNorms n =
             residual_norms(residual(d + search.step * delta, loads, contacts, bolts, returned_, ElementMatrix::None));
         if (n.norm <= tolerance * scale) return search;
-        if (least_squares ? n.norm2 <= at.norm2 : n.norm <= at.norm) return search;
+        if (merit == Merit::LargestForce ? n.norm <= at.norm : n.norm2 <= at.norm2) return search;
         search.step *= 0.5;
     }
     search.lowered = false;
+    return search;
+}
+
+std::optional<Simulation::LineSearch> Simulation::energy_line_search(const Eigen::VectorXd& d,
+                                                                     const Eigen::VectorXd& delta,
+                                                                     const Eigen::VectorXd& loads,
+                                                                     const ContactSet& contacts,
+                                                                     const std::vector<BoltLink>& bolts,
+                                                                     const Balance& at, double tolerance,
+                                                                     double scale) {
+    // With a symmetric tangent the flow is associated: the closest-point return is the gradient
+    // of a convex function of the strain increment (Simo & Hughes, Computational Inelasticity,
+    // 1998), so the increment minimises a convex potential Π whose slope along the correction δ
+    // at a share s is −g(s), g(s) = δᵀR(d + sδ). g falls from g(0) = RᵀK⁻¹R > 0 through zero at
+    // the minimum of Π along δ; regula falsi (Illinois) finds a share with |g(s)| ≤ η g(0), the
+    // line search of Crisfield (Non-linear Finite Element Analysis of Solids and Structures,
+    // vol. 1, 1991). Halving on the sum of squares instead accepted 1/16 of each correction
+    // while the active yield planes settled: the homogeneous slope's factor-of-safety search
+    // took 575 equilibrium iterations against about 310 (docs/benchmarks.md).
+    auto slope = [&](const Eigen::VectorXd& r) {
+        double g = 0.0;
+        for (Eigen::Index dof = 0; dof < r.size(); ++dof)
+            if (bc_.equation[dof] >= 0) g += delta[dof] * r[dof];
+        return g;
+    };
+    const double g0 = slope(at.residual);
+    if (!(g0 > 0.0)) return std::nullopt;  // not a descent direction of Π (a tangent not positive definite)
+    LineSearch search;
+    auto settle = [&](double s, const Eigen::VectorXd& r) {
+        const ResidualNorms n = residual_norms(r);
+        search.step = s;
+        search.lowered = n.norm2 <= at.norm2;
+        return n.norm <= tolerance * scale;
+    };
+    Eigen::VectorXd r = residual(d + delta, loads, contacts, bolts, returned_, ElementMatrix::None);
+    double lo = 0.0, g_lo = g0, hi = 1.0, g_hi = slope(r);
+    // Π still falling at the whole correction (or balanced there): the whole correction.
+    if (settle(1.0, r) || g_hi >= -energy_line_search_slack * g0) return search;
+    int kept = 0;  // the end kept by the last two shares: + low, − high (Illinois halves its g)
+    for (int k = 0; k < energy_line_search_shares; ++k) {
+        const double s = lo + g_lo * (hi - lo) / (g_lo - g_hi);
+        r = residual(d + s * delta, loads, contacts, bolts, returned_, ElementMatrix::None);
+        const double g = slope(r);
+        if (settle(s, r) || std::fabs(g) <= energy_line_search_slack * g0) break;
+        if (g > 0.0) {
+            lo = s;
+            g_lo = g;
+            if (kept > 0) g_hi *= 0.5;
+            kept = 1;
+        } else {
+            hi = s;
+            g_hi = g;
+            if (kept < 0) g_lo *= 0.5;
+            kept = -1;
+        }
+    }
     return search;
 }
 
@@ -213,10 +285,12 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         // converge while the largest nodal force may rise on the way.
         const bool search = newton && (it.yielding > 0 || matrix == ElementMatrix::Tangent);
         const bool plain_newton = is_equilibrium_only() && !contacts.any_closed() && !monitor.polishing();
+        const Merit merit = plain_newton && elements_.symmetric_tangent() && model_.analysis.strength_reduction
+                                ? Merit::Energy
+                            : plain_newton || monitor.polishing()           ? Merit::SumOfSquares
+                                                                            : Merit::LargestForce;
         const LineSearch searched =
-            search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale,
-                                 monitor.polishing() || plain_newton)
-                   : LineSearch{};
+            search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale, merit) : LineSearch{};
         if (plain_newton && monitor.beyond_improvement(it, searched.lowered)) {
             attempt.residual = b.residual;
             return true;

@@ -418,15 +418,23 @@ private:
     /// The correction of an iteration: K⁻¹R, Anderson-mixed for the elastic iteration.
     Eigen::VectorXd correction(const Eigen::VectorXd& d, const Balance& b, bool newton, double force_tolerance,
                                bool any_closed, AndersonMixing& anderson);
-    /// The share of a Newton correction to take (backtracking), and whether any share tried
-    /// lowered the out-of-balance force (else the smallest share is returned untested).
+    /// The share of a Newton correction to take, and whether it lowered the sum of squares of the
+    /// out-of-balance force (backtracking: whether any share tried did; else the smallest share
+    /// is returned untested).
     struct LineSearch {
         double step = 1.0;
         bool lowered = true;
     };
+    /// What the line search asks of a share of the correction (see line_search).
+    enum class Merit { LargestForce, SumOfSquares, Energy };
     LineSearch line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta, const Eigen::VectorXd& loads,
                            const ContactSet& contacts, const std::vector<BoltLink>& bolts, const Balance& at,
-                           double tolerance, double scale, bool least_squares);
+                           double tolerance, double scale, Merit merit);
+    /// The energy line search (see line_search); nothing when δ does not descend the energy.
+    std::optional<LineSearch> energy_line_search(const Eigen::VectorXd& d, const Eigen::VectorXd& delta,
+                                                 const Eigen::VectorXd& loads, const ContactSet& contacts,
+                                                 const std::vector<BoltLink>& bolts, const Balance& at,
+                                                 double tolerance, double scale);
     void observe_iteration(double out_of_balance, double tolerance, int yielding);
     Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs);  ///< back-substitution, full-size result
 
