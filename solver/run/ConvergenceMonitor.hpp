@@ -36,8 +36,9 @@ public:
     /// whose contact states are about to change anyway.
     bool balanced(const Iteration& it) const { return it.k > 0 && it.norm <= tolerance_ * it.scale; }
     /// Newton's correction from a force already within tolerance that no share of it lowers
-    /// (`lowered`: the line search found a share that does) runs along the nearly singular
-    /// tangent of a forming mechanism: its length measures that, not a distance to equilibrium.
+    /// (`lowered`: the share the line search took lowers it, Simulation::LineSearch) runs along
+    /// the nearly singular tangent of a forming mechanism: its length measures that, not a
+    /// distance to equilibrium.
     /// Iterating on raised the force back above the tolerance until the try stalled, an increment
     /// in equilibrium declared not carried; so it is accepted as it stands. For plain Newton only
     /// (small-strain, static, no closed contacts): the caller decides that.
