@@ -285,10 +285,11 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         // converge while the largest nodal force may rise on the way.
         const bool search = newton && (it.yielding > 0 || matrix == ElementMatrix::Tangent);
         const bool plain_newton = is_equilibrium_only() && !contacts.any_closed() && !monitor.polishing();
-        const Merit merit = plain_newton && elements_.symmetric_tangent() && model_.analysis.strength_reduction
-                                ? Merit::Energy
-                            : plain_newton || monitor.polishing()           ? Merit::SumOfSquares
-                                                                            : Merit::LargestForce;
+        Merit merit = Merit::LargestForce;
+        if (plain_newton && elements_.symmetric_tangent() && model_.analysis.strength_reduction)
+            merit = Merit::Energy;
+        else if (plain_newton || monitor.polishing())
+            merit = Merit::SumOfSquares;
         const LineSearch searched =
             search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale, merit) : LineSearch{};
         if (plain_newton && monitor.beyond_improvement(it, searched.lowered)) {
