@@ -38,10 +38,10 @@ public:
     /// Newton's correction from a force already within tolerance that no share of it lowers
     /// (`lowered`: the share the line search took lowers it, Simulation::LineSearch) runs along
     /// the nearly singular tangent of a forming mechanism: its length measures that, not a
-    /// distance to equilibrium.
-    /// Iterating on raised the force back above the tolerance until the try stalled, an increment
-    /// in equilibrium declared not carried; so it is accepted as it stands. For plain Newton only
-    /// (small-strain, static, no closed contacts): the caller decides that.
+    /// distance to equilibrium. Iterating on raised the force back above the tolerance until the
+    /// try stalled, an increment in equilibrium declared not carried; so it is accepted as it
+    /// stands. For plain Newton only (small-strain, static, no closed contacts): the caller
+    /// decides that.
     bool beyond_improvement(const Iteration& it, bool lowered) const {
         return !lowered && it.norm <= tolerance_ * it.scale;
     }
