@@ -166,9 +166,6 @@ void SymmetricSystem::add(int g, const double* k) {
 void SymmetricSystem::add_diagonal(int e, double value) { matrix_.valuePtr()[diagonal_slot_[e]] += value; }
 
 namespace {
-/// Conjugate gradients stop at this residual, relative to the right-hand side (the equilibrium
-/// iterations check every solution against their own, much coarser, force tolerance).
-constexpr double refinement_tolerance = 1e-10;
 /// More iterations than this in one solve: the held factor no longer fits the matrix.
 constexpr int max_refinement_iterations = 40;
 /// A triangular solve or a product with the matrix runs at a lower flop rate than the
@@ -276,7 +273,7 @@ void SymmetricSystem::factorize_lu() {
                              "no more, or a block is free to move)");
 }
 
-Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs) {
+Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs, double tolerance) {
     if (lu_current_) return lu_->lu.solve(rhs);
     const cholmod_common& c = factor_->llt.cholmod();
     // CHOLMOD chooses the supernodal method from the flops per factor entry (supernodal_switch).
@@ -290,7 +287,7 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs) {
     if (!stale_) return factor_->llt.solve(rhs);
     // Conjugate gradients on the current matrix, preconditioned by the held factor.
     const auto A = matrix_.selfadjointView<Eigen::Lower>();
-    const double target = refinement_tolerance * rhs.norm();
+    const double target = tolerance * rhs.norm();
     Eigen::VectorXd x = Eigen::VectorXd::Zero(rhs.size()), r = rhs, z, p, Ap;
     double rz = 0.0;
     for (int k = 0; k < max_refinement_iterations; ++k) {

@@ -86,9 +86,13 @@ public:
     /// flops as a factorisation (CHOLMOD's count), or when they do not converge.
     void factorize(bool may_reuse = false);
 
-    /// Solves with the current matrix: directly with its factor, or iterating with a held one.
-    /// The matrix values must not change between factorize() and solve().
-    Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+    /// Solves with the current matrix: directly with its factor, or iterating with a held one
+    /// until the residual is within `tolerance` of the right-hand side. The default, `exact`, is
+    /// far below any force tolerance of the equilibrium iterations, which check every solution
+    /// against their own; an inexact Newton correction asks for much less. The matrix values must
+    /// not change between factorize() and solve().
+    static constexpr double exact = 1e-10;
+    Eigen::VectorXd solve(const Eigen::VectorXd& rhs, double tolerance = exact);
 
     /// True when a factorisation succeeded since the pattern was last set: solve() may be used
     /// (set_groups and add do not change it).

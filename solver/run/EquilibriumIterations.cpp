@@ -24,6 +24,12 @@ constexpr int anderson_depth = 5;
 /// A displacement increment this many times the per-step limit, with material yielding, is a
 /// mechanism (ConvergenceMonitor).
 constexpr double mechanism_displacements = 20.0;
+/// A Newton correction solved iteratively (a held tangent factor preconditioning conjugate
+/// gradients) stops at this residual, relative to the out-of-balance force: inexact Newton
+/// (Dembo, Eisenstat & Steihaug, SIAM J. Numer. Anal. 19, 1982), each iteration then contracting
+/// the force by about this much more than the exact correction would. The flexible footing's
+/// collapse load is the same at 1e-1, 1e-2 and exact solves; measured in docs/benchmarks.md.
+constexpr double newton_solve_tolerance = 1e-2;
 /// Halvings of a Newton correction the line search may try.
 constexpr int line_search_cuts = 6;
 /// The energy line search stops where the slope of the energy along the correction is within
@@ -107,11 +113,14 @@ bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, con
         }
     }
     timings_.assembly += seconds_since(t0);
-    // An elastic matrix may keep a held elastic factor (of the last step's geometry, or of other
-    // contact states) while iterating against the new matrix costs less than a factorisation
-    // (SymmetricSystem::factorize); a tangent changes too much for that.
+    // A matrix may keep a held factor of its own kind (the elastic one of the last step's
+    // geometry or of other contact states; the tangent of an earlier iterate) while iterating
+    // against the new matrix costs less than a factorisation (SymmetricSystem::factorize). From
+    // one Newton iterate to the next the tangent changes only where points start or stop
+    // yielding, and its correction is solved inexactly (newton_solve_tolerance). An elastic
+    // factor is no preconditioner for a tangent: near a collapse the tangent is far softer.
     try {
-        system_.factorize(matrix == ElementMatrix::Elastic && !held_.tangent);
+        system_.factorize(matrix == ElementMatrix::Elastic ? !held_.tangent : held_.tangent);
     } catch (const SingularSystem&) {
         // A tangent that is not positive definite (a mechanism forming): the caller goes on with
         // the elastic matrix.
@@ -279,7 +288,18 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
             factor_valid = true;
             elastic_matrix = matrix == ElementMatrix::Elastic || it.yielding == 0;
         }
-        const Eigen::VectorXd delta = correction(d, b, newton, tolerance * it.scale, contacts.any_closed(), anderson);
+        Eigen::VectorXd delta;
+        try {
+            delta = correction(d, b, newton, tolerance * it.scale, contacts.any_closed(), anderson);
+        } catch (const SingularSystem&) {
+            // A held tangent factor did not fit and the tangent it fell back to factorising is
+            // not positive definite: on with the elastic matrix, as factorize() does.
+            if (!newton || !held_.tangent) throw;
+            newton = false;
+            factor_valid = false;
+            --k;
+            continue;
+        }
         ++attempt.iterations;
         // No line search with the elastic matrix (the initial-stress iteration): its full steps
         // converge while the largest nodal force may rise on the way.
@@ -307,7 +327,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
 
 Eigen::VectorXd Simulation::correction(const Eigen::VectorXd& d, const Balance& b, bool newton, double force_tolerance,
                                        bool any_closed, AndersonMixing& anderson) {
-    Eigen::VectorXd delta = solve_reduced(b.rhs);
+    Eigen::VectorXd delta = solve_reduced(b.rhs, newton ? newton_solve_tolerance : SymmetricSystem::exact);
     // With the elastic matrix (non-associated flow, or a tangent that is not positive definite)
     // the iteration is a fixed point d ← d + K⁻¹R(d) that contracts slowly once much of the
     // model yields: Anderson acceleration (Walker & Ni 2011) mixes the last corrections; it
@@ -332,10 +352,10 @@ void Simulation::observe_iteration(double out_of_balance, double tolerance, int 
     iteration_observer_(iterating_);
 }
 
-Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs) {
+Eigen::VectorXd Simulation::solve_reduced(const Eigen::VectorXd& rhs, double tolerance) {
     const auto start = Clock::now();
     const double factorizing = system_.factorization_seconds();
-    const Eigen::VectorXd solution = system_.solve(rhs);
+    const Eigen::VectorXd solution = system_.solve(rhs, tolerance);
     Eigen::VectorXd d(state_.displacement.size());
     for (Eigen::Index dof = 0; dof < d.size(); ++dof) d[dof] = bc_.equation[dof] >= 0 ? solution[bc_.equation[dof]] : 0.0;
     // (less a factorisation the solve fell back to: it counts as one)

@@ -436,7 +436,8 @@ private:
                                                  const std::vector<BoltLink>& bolts, const Balance& at,
                                                  double tolerance, double scale);
     void observe_iteration(double out_of_balance, double tolerance, int yielding);
-    Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs);  ///< back-substitution, full-size result
+    /// K⁻¹rhs, full size; an iterative solve with a held factor stops at `tolerance` (relative).
+    Eigen::VectorXd solve_reduced(const Eigen::VectorXd& rhs, double tolerance);
 
     // Loads, supports, matrices, commits (Simulation.cpp).
     /// Increments of the degrees of freedom held by moving rollers that take them to their

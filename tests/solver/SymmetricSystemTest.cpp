@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace mcdda {
@@ -171,6 +172,33 @@ TEST(SymmetricSystem, AHeldFactorSolvesASlightlyChangedMatrixToTheSameAccuracy) 
     s.factorize();
     EXPECT_EQ(s.factorizations(), 2);
     EXPECT_LT((s.solve(b) - exact).norm(), 1e-10 * exact.norm());
+}
+
+TEST(SymmetricSystem, AnInexactSolveWithAHeldFactorStopsAtTheToleranceAsked) {
+    // An inexact Newton correction: conjugate gradients stop once the residual is within the
+    // tolerance asked, in fewer iterations than an exact solve takes.
+    const Chain chain(300);
+    std::vector<double> k(chain.n - 1, 1.0);
+    std::vector<double> changed = k;
+    for (int i = 0; i < chain.n - 1; i += 12) changed[i] *= 0.01 + 0.2 * (1.0 + std::sin(1.3 * i));  // softened here and there (yielding)
+    Eigen::VectorXd b(chain.n);
+    for (int i = 0; i < chain.n; ++i) b[i] = std::sin(0.37 * i * i + 1.0);  // loads at every node
+    const Eigen::SparseMatrix<double> full = chain.dense(changed, 1.0).sparseView();
+    int iterations[2] = {0, 0};
+    for (int exact = 0; exact < 2; ++exact) {
+        SymmetricSystem s;
+        chain.factorise_first(s, k, 1.0);
+        chain.assemble(s, changed, 1.0);
+        s.factorize(true);
+        const double tolerance = exact ? SymmetricSystem::exact : 1e-2;
+        const Eigen::VectorXd x = s.solve(b, tolerance);
+        EXPECT_EQ(s.factorizations(), 1);  // solved with the held factor
+        EXPECT_LE((full * x - b).norm(), tolerance * b.norm());
+        if (!exact) EXPECT_GT((full * x - b).norm(), SymmetricSystem::exact * b.norm());  // it stopped early
+        iterations[exact] = s.refinement_iterations();
+    }
+    EXPECT_GT(iterations[0], 0);
+    EXPECT_LT(iterations[0], iterations[1]);
 }
 
 TEST(SymmetricSystem, AMatrixSolvedAgainAfterManyIterationsIsFactorised) {
