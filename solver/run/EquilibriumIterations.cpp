@@ -69,9 +69,16 @@ Simulation::Balance Simulation::balance_at(const Eigen::VectorXd& d, const Eigen
         system_.set_unsymmetric(matrix == ElementMatrix::Tangent && !elements_.symmetric_tangent());
         system_.clear_values();
     }
-    Balance b;
-    b.residual = residual(d, loads, contacts, bolts, returned_, matrix, &b.evaluation);
+    ElementAssembly::Evaluation evaluation;
+    Eigen::VectorXd r = residual(d, loads, contacts, bolts, returned_, matrix, &evaluation);
+    return balance_of(std::move(r), evaluation);
+}
+
+Simulation::Balance Simulation::balance_of(Eigen::VectorXd residual, const ElementAssembly::Evaluation& evaluation) {
     const auto t0 = Clock::now();
+    Balance b;
+    b.residual = std::move(residual);
+    b.evaluation = evaluation;
     b.rhs.resize(bc_.equation_count);
     for (Eigen::Index dof = 0; dof < b.residual.size(); ++dof)
         if (bc_.equation[dof] >= 0) b.rhs[bc_.equation[dof]] = b.residual[dof];
@@ -116,11 +123,18 @@ bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, con
     // A matrix may keep a held factor of its own kind (the elastic one of the last step's
     // geometry or of other contact states; the tangent of an earlier iterate) while iterating
     // against the new matrix costs less than a factorisation (SymmetricSystem::factorize). From
-    // one Newton iterate to the next the tangent changes only where points start or stop
-    // yielding, and its correction is solved inexactly (newton_solve_tolerance). An elastic
-    // factor is no preconditioner for a tangent: near a collapse the tangent is far softer.
+    // one Newton iterate to the next of a load-controlled analysis the tangent changes mostly
+    // where points start or stop yielding, and its correction is solved inexactly
+    // (newton_solve_tolerance). Not in strength reduction trials, whose plastic zone forms anew
+    // in each trial's few increments: there a third of the held-factor solves of the homogeneous
+    // slope's search did not converge in 40 iterations and the rest took 19 on average, and the
+    // search took 10–40 % more CPU (docs/benchmarks.md). An elastic factor is no preconditioner
+    // for a tangent: near a collapse the tangent is far softer.
+    const bool held_fits = matrix == ElementMatrix::Elastic
+                               ? !held_.tangent
+                               : held_.tangent && !model_.analysis.strength_reduction;
     try {
-        system_.factorize(matrix == ElementMatrix::Elastic ? !held_.tangent : held_.tangent);
+        system_.factorize(held_fits);
     } catch (const SingularSystem&) {
         // A tangent that is not positive definite (a mechanism forming): the caller goes on with
         // the elastic matrix.
@@ -157,10 +171,14 @@ Simulation::LineSearch Simulation::line_search(const Eigen::VectorXd& d, const E
             return *s;
     LineSearch search;
     for (int cut = 0; cut < line_search_cuts; ++cut) {
-        const ResidualNorms n =
-            residual_norms(residual(d + search.step * delta, loads, contacts, bolts, returned_, ElementMatrix::None));
-        if (n.norm <= tolerance * scale) return search;
-        if (merit == Merit::LargestForce ? n.norm <= at.norm : n.norm2 <= at.norm2) return search;
+        ElementAssembly::Evaluation evaluation;
+        Eigen::VectorXd r =
+            residual(d + search.step * delta, loads, contacts, bolts, returned_, ElementMatrix::None, &evaluation);
+        const ResidualNorms n = residual_norms(r);
+        if (n.norm <= tolerance * scale || (merit == Merit::LargestForce ? n.norm <= at.norm : n.norm2 <= at.norm2)) {
+            search.balance = balance_of(std::move(r), evaluation);
+            return search;
+        }
         search.step *= 0.5;
     }
     search.lowered = false;
@@ -192,20 +210,24 @@ std::optional<Simulation::LineSearch> Simulation::energy_line_search(const Eigen
     const double g0 = slope(at.residual);
     if (!(g0 > 0.0)) return std::nullopt;  // not a descent direction of Π (a tangent not positive definite)
     LineSearch search;
+    ElementAssembly::Evaluation evaluation;  // of the last share tried, which is the one taken
     auto settle = [&](double s, const Eigen::VectorXd& r) {
         const ResidualNorms n = residual_norms(r);
         search.step = s;
         search.lowered = n.norm2 <= at.norm2;
         return n.norm <= tolerance * scale;
     };
-    Eigen::VectorXd r = residual(d + delta, loads, contacts, bolts, returned_, ElementMatrix::None);
+    Eigen::VectorXd r = residual(d + delta, loads, contacts, bolts, returned_, ElementMatrix::None, &evaluation);
     double lo = 0.0, g_lo = g0, hi = 1.0, g_hi = slope(r);
     // Π still falling at the whole correction (or balanced there): the whole correction.
-    if (settle(1.0, r) || g_hi >= -energy_line_search_slack * g0) return search;
+    if (settle(1.0, r) || g_hi >= -energy_line_search_slack * g0) {
+        search.balance = balance_of(std::move(r), evaluation);
+        return search;
+    }
     int kept = 0;  // the end kept by the last two shares: + low, − high (Illinois halves its g)
     for (int k = 0; k < energy_line_search_shares; ++k) {
         const double s = lo + g_lo * (hi - lo) / (g_lo - g_hi);
-        r = residual(d + s * delta, loads, contacts, bolts, returned_, ElementMatrix::None);
+        r = residual(d + s * delta, loads, contacts, bolts, returned_, ElementMatrix::None, &evaluation);
         const double g = slope(r);
         if (settle(s, r) || std::fabs(g) <= energy_line_search_slack * g0) break;
         if (g > 0.0) {
@@ -220,6 +242,7 @@ std::optional<Simulation::LineSearch> Simulation::energy_line_search(const Eigen
             kept = -1;
         }
     }
+    search.balance = balance_of(std::move(r), evaluation);
     return search;
 }
 
@@ -252,12 +275,16 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
     // The matrix in force is the elastic one (a tangent where nothing yields is one too); a held
     // tangent factor is not.
     bool elastic_matrix = factor_valid && !held_.tangent;
+    std::optional<Balance> searched_balance;  // the line search's, at the iterate it moved to
     for (int k = 0;; ++k) {
         if (stop_check_ && stop_check_()) throw StepInterrupted();
         // Refactorise when K is stale: contacts changed, or the last iteration contracted slowly.
         const ElementMatrix matrix =
             factor_valid ? ElementMatrix::None : (newton ? ElementMatrix::Tangent : ElementMatrix::Elastic);
-        const Balance b = balance_at(d, loads, contacts, bolts, matrix);
+        const Balance b = matrix == ElementMatrix::None && searched_balance
+                              ? std::move(*searched_balance)
+                              : balance_at(d, loads, contacts, bolts, matrix);
+        searched_balance.reset();
         attempt.yielding = b.evaluation.yielding;
         const ConvergenceMonitor::Iteration it = iteration_of(k, b, d, loads_in_play, last_correction, newton);
         if (monitor.converged(it, elastic_matrix) ||
@@ -310,7 +337,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
             merit = Merit::Energy;
         else if (plain_newton || monitor.polishing())
             merit = Merit::SumOfSquares;
-        const LineSearch searched =
+        LineSearch searched =
             search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale, merit) : LineSearch{};
         if (plain_newton && monitor.beyond_improvement(it, searched.lowered)) {
             attempt.residual = b.residual;
@@ -318,6 +345,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         }
         const double step = searched.step;
         d += step * delta;
+        searched_balance = std::move(searched.balance);
         last_correction = step * delta.cwiseAbs().maxCoeff();
         // The factor is kept while it contracts the out-of-balance force well enough.
         if (k > 0 && newton && b.norm > keep_factor_contraction * previous) factor_valid = false;

@@ -405,6 +405,7 @@ private:
     };
     Balance balance_at(const Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
                        const std::vector<BoltLink>& bolts, ElementMatrix matrix);
+    Balance balance_of(Eigen::VectorXd residual, const ElementAssembly::Evaluation& evaluation);
     /// An iteration's numbers for the ConvergenceMonitor.
     ConvergenceMonitor::Iteration iteration_of(int k, const Balance& b, const Eigen::VectorXd& d, double load_scale,
                                                double last_correction, bool newton) const;
@@ -424,6 +425,9 @@ private:
     struct LineSearch {
         double step = 1.0;
         bool lowered = true;
+        /// The balance at the share taken when the search evaluated it there: the next iteration
+        /// starts from it unless it needs a new matrix (one return mapping of every point saved).
+        std::optional<Balance> balance;
     };
     /// What the line search asks of a share of the correction (see line_search).
     enum class Merit { LargestForce, SumOfSquares, Energy };
