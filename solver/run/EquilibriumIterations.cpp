@@ -128,7 +128,7 @@ bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, con
     // (newton_solve_tolerance). Not in strength reduction trials, whose plastic zone forms anew
     // in each trial's few increments: there a third of the held-factor solves of the homogeneous
     // slope's search did not converge in 40 iterations and the rest took 19 on average, and the
-    // search took 10–40 % more CPU (docs/benchmarks.md). An elastic factor is no preconditioner
+    // search took about a quarter more CPU (docs/benchmarks.md). An elastic factor is no preconditioner
     // for a tangent: near a collapse the tangent is far softer.
     const bool held_fits = matrix == ElementMatrix::Elastic
                                ? !held_.tangent
