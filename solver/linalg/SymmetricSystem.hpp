@@ -80,10 +80,11 @@ public:
     /// (unsymmetric mode: when LU finds it singular).
     ///
     /// With `may_reuse` the factor held (of an earlier matrix of the same kind: the elastic
-    /// matrix on a slightly moved geometry, a few contacts changed) is kept while that pays:
-    /// solve() then iterates against the current matrix — conjugate gradients preconditioned by
-    /// the held factor — and the matrix is factorised once those iterations have cost as many
-    /// flops as a factorisation (CHOLMOD's count), or when they do not converge.
+    /// matrix on a slightly moved geometry, a few contacts changed; the tangent of an earlier
+    /// Newton iterate) is kept while that pays: solve() then iterates against the current matrix
+    /// — conjugate gradients preconditioned by the held factor — and the matrix is factorised
+    /// once those iterations have cost as many flops as a factorisation (CHOLMOD's count), or
+    /// when they do not converge.
     void factorize(bool may_reuse = false);
 
     /// Solves with the current matrix: directly with its factor, or iterating with a held one

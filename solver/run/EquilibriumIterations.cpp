@@ -26,9 +26,10 @@ constexpr int anderson_depth = 5;
 constexpr double mechanism_displacements = 20.0;
 /// A Newton correction solved iteratively (a held tangent factor preconditioning conjugate
 /// gradients) stops at this residual, relative to the out-of-balance force: inexact Newton
-/// (Dembo, Eisenstat & Steihaug, SIAM J. Numer. Anal. 19, 1982), each iteration then contracting
-/// the force by about this much more than the exact correction would. The flexible footing's
-/// collapse load is the same at 1e-1, 1e-2 and exact solves; measured in docs/benchmarks.md.
+/// (Dembo, Eisenstat & Steihaug, SIAM J. Numer. Anal. 19, 1982). Near the solution the force then
+/// falls about a hundredfold per iteration instead of quadratically, which a force tolerance of
+/// 1e-4 hardly notices. The flexible footing's collapse load is the same at 1e-1, 1e-2 and exact
+/// solves (docs/benchmarks.md).
 constexpr double newton_solve_tolerance = 1e-2;
 /// Halvings of a Newton correction the line search may try.
 constexpr int line_search_cuts = 6;
@@ -128,8 +129,8 @@ bool Simulation::factorize(ElementMatrix matrix, const ContactSet& contacts, con
     // (newton_solve_tolerance). Not in strength reduction trials, whose plastic zone forms anew
     // in each trial's few increments: there a third of the held-factor solves of the homogeneous
     // slope's search did not converge in 40 iterations and the rest took 19 on average, and the
-    // search took about a quarter more CPU (docs/benchmarks.md). An elastic factor is no preconditioner
-    // for a tangent: near a collapse the tangent is far softer.
+    // search took about a quarter more CPU (docs/benchmarks.md). An elastic factor is no
+    // preconditioner for a tangent: near a collapse the tangent is far softer.
     const bool held_fits = matrix == ElementMatrix::Elastic
                                ? !held_.tangent
                                : held_.tangent && !model_.analysis.strength_reduction;

@@ -180,7 +180,8 @@ TEST(SymmetricSystem, AnInexactSolveWithAHeldFactorStopsAtTheToleranceAsked) {
     const Chain chain(300);
     std::vector<double> k(chain.n - 1, 1.0);
     std::vector<double> changed = k;
-    for (int i = 0; i < chain.n - 1; i += 12) changed[i] *= 0.01 + 0.2 * (1.0 + std::sin(1.3 * i));  // softened here and there (yielding)
+    // Softened here and there, each by its own factor (points starting to yield).
+    for (int i = 0; i < chain.n - 1; i += 12) changed[i] *= 0.01 + 0.2 * (1.0 + std::sin(1.3 * i));
     Eigen::VectorXd b(chain.n);
     for (int i = 0; i < chain.n; ++i) b[i] = std::sin(0.37 * i * i + 1.0);  // loads at every node
     const Eigen::SparseMatrix<double> full = chain.dense(changed, 1.0).sparseView();
