@@ -181,8 +181,16 @@ void SymmetricSystem::factorize(bool may_reuse) {
         factorize_lu();
         return;
     }
-    // Keep the held factor while iterating with it has cost less than a factorisation.
-    if (may_reuse && llt_valid_ && analysed_ && refinement_flops_ < factor_->llt.cholmod().fl) {
+    // Keep the held factor while iterating with it has cost less than a factorisation. After a
+    // held factor that did not fit (its iterations did not converge) the next 3 matrices that
+    // could keep one are factorised at once, after two misfits in a row the next 15, after
+    // three the next 63: where every matrix is far from the last (open–close rounds that change
+    // hundreds of contacts each on a finely jointed slope) the 40 iterations were spent in vain
+    // on each; where held factors fit this changes nothing.
+    const bool may_hold = may_reuse && llt_valid_ && analysed_ && refinement_flops_ < factor_->llt.cholmod().fl;
+    if (may_hold && held_skips_left_ > 0) {
+        --held_skips_left_;
+    } else if (may_hold) {
         stale_ = true;
         lu_current_ = false;
         has_factor_ = true;
@@ -293,6 +301,7 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs, double tolera
     for (int k = 0; k < max_refinement_iterations; ++k) {
         if (r.norm() <= target) {
             last_refinement_iterations_ = k;
+            held_misfits_ = 0;
             return x;
         }
         z = factor_->llt.solve(r);
@@ -311,8 +320,11 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs, double tolera
     }
     if (r.norm() <= target) {
         last_refinement_iterations_ = max_refinement_iterations;
+        held_misfits_ = 0;
         return x;
     }
+    held_misfits_ = std::min(held_misfits_ + 1, 3);
+    held_skips_left_ = (1 << (2 * held_misfits_)) - 1;  // 3, 15, 63
     factorize_now();  // the held factor no longer fits (throws when the matrix is singular)
     return factor_->llt.solve(rhs);
 }

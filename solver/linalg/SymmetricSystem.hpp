@@ -84,7 +84,8 @@ public:
     /// Newton iterate) is kept while that pays: solve() then iterates against the current matrix
     /// — conjugate gradients preconditioned by the held factor — and the matrix is factorised
     /// once those iterations have cost as many flops as a factorisation (CHOLMOD's count), or
-    /// when they do not converge.
+    /// when they do not converge; after such a misfit the next few matrices (3, then 15 and 63
+    /// after misfits in a row) are factorised at once.
     void factorize(bool may_reuse = false);
 
     /// Solves with the current matrix: directly with its factor, or iterating with a held one
@@ -137,6 +138,8 @@ private:
     int analyses_ = 0;
     int reused_factors_ = 0;
     int refinement_iterations_ = 0;
+    int held_misfits_ = 0;     ///< held factors in a row whose iterations did not converge
+    int held_skips_left_ = 0;  ///< matrices still to factorise at once after the last misfit
     double factorization_seconds_ = 0.0;
     void factorize_now();
 

@@ -326,6 +326,17 @@ private:
     /// Contacts for the step from the deformed shape, the last step's carried over (`predicted`:
     /// the displacement expected over the step, dynamic).
     std::vector<Contact> detect_step_contacts(const Eigen::VectorXd& predicted);
+    /// The last contact detection's inputs and what it found: a try after a cut Δt or a smaller
+    /// load increment, and the relaxation's tries, start from the state the last one did.
+    struct DetectionMemo {
+        std::vector<Point2> nodes;
+        std::vector<Contact> previous;
+        Eigen::VectorXd predicted;
+        double search_distance = -1.0;
+        double tolerance = -1.0;
+        std::vector<Contact> found;
+    };
+    DetectionMemo detection_;
     /// The factor Δt is cut by after a try that failed (`singular_factor` for a singular matrix)
     /// or moved too far.
     double time_step_cut(const Attempt& attempt, double largest, double singular_factor) const;
@@ -364,6 +375,9 @@ private:
                              bool& factor_valid, Attempt& attempt);
     /// Bolts pulled beyond their strength break (true: some did; attempt.bolts without them).
     bool break_overloaded_bolts(const Eigen::VectorXd& d, Attempt& attempt);
+    /// Whether an open–close round with `changes` contact changes ends its try as not settling;
+    /// keeps the fewest changes of the try's rounds after the first.
+    bool gives_up_unsettled(int changes, std::size_t contacts, int round, int& fewest_changes) const;
     /// The end of a try whose contacts settled.
     void settle_try(const ContactSet::Update& update, bool equilibrium_only, Attempt& attempt);
 

@@ -219,6 +219,38 @@ TEST(SymmetricSystem, AMatrixSolvedAgainAfterManyIterationsIsFactorised) {
     EXPECT_EQ(s.factorizations(), 2);
 }
 
+TEST(SymmetricSystem, AfterAHeldFactorThatDidNotFitTheNextMatricesAreFactorisedAtOnce) {
+    // A factor of a matrix far from the current one (springs up to a hundred times stiffer or
+    // softer, as after an open–close round that changed hundreds of contacts) spends its 40
+    // iterations in vain. The next 3 matrices are then factorised at once, after a second misfit
+    // in a row the next 15; then a factor is held again.
+    const Chain chain(400);
+    SymmetricSystem s;
+    std::vector<double> k(chain.n - 1, 1.0);
+    chain.factorise_first(s, k, 1.0);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(chain.n, 1.0, 2.0);
+    int matrix = 0;
+    enum class Way { Factorised, Held, Misfit };
+    const auto solve = [&](bool far) {
+        ++matrix;
+        for (int i = 0; i < chain.n - 1; ++i)
+            k[i] = far ? std::pow(10.0, 2.0 * std::sin(1.7 * i + matrix)) : k[i] * (1.0 + 1e-3 * std::sin(0.3 * i));
+        chain.assemble(s, k, 1.0);
+        const int factorizations = s.factorizations(), held = s.reused_factors();
+        s.factorize(true);
+        const Eigen::VectorXd x = s.solve(b);
+        const Eigen::VectorXd exact = chain.dense(k, 1.0).ldlt().solve(b);
+        EXPECT_LT((x - exact).norm(), 1e-6 * exact.norm()) << "matrix " << matrix;
+        if (s.reused_factors() == held) return Way::Factorised;
+        return s.factorizations() == factorizations ? Way::Held : Way::Misfit;
+    };
+    EXPECT_EQ(solve(true), Way::Misfit);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(solve(false), Way::Factorised) << "matrix " << matrix;
+    EXPECT_EQ(solve(true), Way::Misfit);
+    for (int i = 0; i < 15; ++i) EXPECT_EQ(solve(false), Way::Factorised) << "matrix " << matrix;
+    EXPECT_EQ(solve(false), Way::Held);
+}
+
 TEST(SymmetricSystem, ASingularMatrixIsReportedAlsoWhenAFactorIsHeld) {
     const Chain chain(30);
     SymmetricSystem s;
