@@ -38,10 +38,6 @@ std::string describe_position(double position) {
            " % of its load increment";
 }
 
-}  // namespace
-
-namespace {
-
 /// Byte for byte: equal bytes are equal values (a difference in padding only costs a detection).
 template <class T>
 bool same_bytes(const T* a, const T* b, std::size_t n) {
@@ -58,7 +54,8 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
 std::vector<Contact> Simulation::detect_step_contacts(const Eigen::VectorXd& predicted) {
     const auto t0 = Clock::now();
     // Contact detection is a pure function of the geometry, the contacts carried over and these
-    // settings; on a slope cut by a 10,000-vertex joint it cost a second per try.
+    // settings; on a slope cut by a 10,000-vertex joint it cost 0.35 s per try, 14 tries of one
+    // step from two states.
     const double search_distance = 2.5 * displacement_limit_;
     DetectionMemo& memo = detection_;
     const bool same = memo.search_distance == search_distance && memo.tolerance == contact_tolerance_ &&
