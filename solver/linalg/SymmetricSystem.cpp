@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 
 namespace mcdda {
@@ -181,6 +182,14 @@ void SymmetricSystem::factorize(bool may_reuse) {
         factorize_lu();
         return;
     }
+    // The very matrix the held factor is of (the elastic matrix again after a tangent that could
+    // not be factorised): solved directly, neither iterated nor factorised again.
+    if (llt_valid_ && analysed_ && values_digest() == factored_digest_) {
+        stale_ = false;
+        lu_current_ = false;
+        has_factor_ = true;
+        return;
+    }
     // Keep the held factor while iterating with it has cost less than a factorisation. After a
     // held factor that did not fit (its iterations did not converge) the next 3 matrices that
     // could keep one are factorised at once, after two misfits in a row the next 15, after
@@ -199,6 +208,19 @@ void SymmetricSystem::factorize(bool may_reuse) {
         return;
     }
     factorize_now();
+}
+
+std::uint64_t SymmetricSystem::values_digest() const {
+    // FNV-1a over the bytes of the values, a word at a time: equal matrices, equal digests; a
+    // different matrix shares one with a chance of 2⁻⁶⁴.
+    std::uint64_t h = 1469598103934665603ULL;
+    const double* v = matrix_.valuePtr();
+    for (Eigen::Index i = 0; i < matrix_.nonZeros(); ++i) {
+        std::uint64_t bits;
+        std::memcpy(&bits, v + i, sizeof bits);
+        h = (h ^ bits) * 1099511628211ULL;
+    }
+    return h;
 }
 
 const char* SymmetricSystem::ordering() const {
@@ -220,6 +242,7 @@ void SymmetricSystem::factorize_now() {
     lu_current_ = false;
     stale_ = false;
     refinement_flops_ = 0.0;
+    factored_digest_ = values_digest();
     factor_->llt.factorize(matrix_);
     ++factorizations_;
     factorization_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

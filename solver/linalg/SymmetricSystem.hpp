@@ -14,6 +14,7 @@
 
 #include <Eigen/Sparse>
 
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -85,7 +86,8 @@ public:
     /// — conjugate gradients preconditioned by the held factor — and the matrix is factorised
     /// once those iterations have cost as many flops as a factorisation (CHOLMOD's count), or
     /// when they do not converge; after such a misfit the next few matrices (3, then 15 and 63
-    /// after misfits in a row) are factorised at once.
+    /// after misfits in a row) are factorised at once. A matrix equal, bit for bit, to the one
+    /// the Cholesky factor held is of is solved directly with it, with or without `may_reuse`.
     void factorize(bool may_reuse = false);
 
     /// Solves with the current matrix: directly with its factor, or iterating with a held one
@@ -141,6 +143,8 @@ private:
     int held_misfits_ = 0;     ///< held factors in a row whose iterations did not converge
     int held_skips_left_ = 0;  ///< matrices still to factorise at once after the last misfit
     double factorization_seconds_ = 0.0;
+    std::uint64_t factored_digest_ = 0;  ///< values_digest() of the matrix the Cholesky factor is of
+    std::uint64_t values_digest() const;
     void factorize_now();
 
     bool unsymmetric_ = false;

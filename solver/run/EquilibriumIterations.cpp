@@ -277,6 +277,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
     // tangent factor is not.
     bool elastic_matrix = factor_valid && !held_.tangent;
     std::optional<Balance> searched_balance;  // the line search's, at the iterate it moved to
+    ConvergenceMonitor::Verdict handed_over = ConvergenceMonitor::Verdict::Stalled;  // to the polish
     for (int k = 0;; ++k) {
         if (stop_check_ && stop_check_()) throw StepInterrupted();
         // Refactorise when K is stale: contacts changed, or the last iteration contracted slowly.
@@ -296,6 +297,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         observe_iteration(it.norm / it.scale, tolerance, it.yielding);
         const ConvergenceMonitor::Verdict verdict = monitor.assess(it);
         if (uses_unsymmetric_newton() && monitor.hands_over_to_newton(verdict, it)) {
+            handed_over = verdict;
             monitor.start_polishing(it);
             newton = true;
             factor_valid = false;
@@ -309,6 +311,14 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         }
         if (matrix != ElementMatrix::None) {
             if (!factorize(matrix, contacts, bolts)) {
+                // The polish's tangent is singular where the elastic iteration stalled: Newton
+                // cannot start, and the elastic iteration has already shown it gets no further
+                // (on Salençon's excavation at 53k elements it went on 30 more iterations at
+                // the same force before the load was halved anyway).
+                if (monitor.polishing()) {
+                    attempt.why = monitor.why(handed_over, it);
+                    return false;
+                }
                 newton = false;  // on with the elastic matrix, from the same iterate
                 --k;
                 continue;

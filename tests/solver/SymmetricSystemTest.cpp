@@ -174,6 +174,37 @@ TEST(SymmetricSystem, AHeldFactorSolvesASlightlyChangedMatrixToTheSameAccuracy) 
     EXPECT_LT((s.solve(b) - exact).norm(), 1e-10 * exact.norm());
 }
 
+TEST(SymmetricSystem, TheMatrixOfTheHeldFactorIsSolvedDirectlyHoweverOftenItComesBack) {
+    // The elastic matrix assembled again after another matrix (a tangent that could not be
+    // factorised, a changed one solved with the held factor): its own factor solves it, with no
+    // iterations and, however many solves follow, no factorisation (iterating, as with any
+    // held factor, charged each solve to the factorisation's budget until it was spent).
+    const Chain chain(200);
+    SymmetricSystem s;
+    std::vector<double> k(chain.n - 1, 1.0);
+    chain.factorise_first(s, k, 1.0);
+    std::vector<double> other = k;
+    for (int i : {3, 70, 150}) other[i] *= 1.3;
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(chain.n, 1.0, 2.0);
+    const Eigen::VectorXd exact = chain.dense(k, 1.0).ldlt().solve(b);
+    chain.assemble(s, other, 1.0);
+    s.factorize(true);  // held: the solve iterates
+    s.solve(b);
+    const int iterations = s.refinement_iterations();
+    EXPECT_GT(iterations, 0);
+    chain.assemble(s, k, 1.0);
+    s.factorize(true);
+    for (int repeat = 0; repeat < 20; ++repeat) EXPECT_LT((s.solve(b) - exact).norm(), 1e-12 * exact.norm());
+    EXPECT_EQ(s.refinement_iterations(), iterations);
+    EXPECT_EQ(s.factorizations(), 1);
+    // A matrix that differs in one entry's last bit is not taken for it.
+    k[100] = std::nextafter(k[100], 2.0);
+    chain.assemble(s, k, 1.0);
+    const int before = s.reused_factors() + s.factorizations();
+    s.factorize(true);  // held (iterating) or factorised, by the budget: not solved as the old matrix
+    EXPECT_EQ(s.reused_factors() + s.factorizations(), before + 1);
+}
+
 TEST(SymmetricSystem, AnInexactSolveWithAHeldFactorStopsAtTheToleranceAsked) {
     // An inexact Newton correction: conjugate gradients stop once the residual is within the
     // tolerance asked, in fewer iterations than an exact solve takes.
