@@ -76,7 +76,7 @@ ContactSet::Update ContactSet::update_states(const Eigen::VectorXd& d, bool equi
         if (found == StateChange::Significant && change == StateChange::Marginal)
             u.cycling_force = std::max(u.cycling_force, change_force);
         if (change == StateChange::Significant) ++u.changes;
-        if (change == StateChange::Marginal) marginal_.emplace_back(i, before);
+        if (change == StateChange::Marginal) marginal_.push_back({i, before, found == StateChange::Significant});
         if (before.state == ContactState::Sliding && contacts_[i].state == ContactState::Sliding) {
             u.friction_used += normal_used * properties_[i].tan_friction;
             u.friction_change +=
@@ -114,11 +114,13 @@ bool ContactSet::would_change(const Eigen::VectorXd& d, bool equilibrium_only) c
     return false;
 }
 
-void ContactSet::undo_marginal() {
-    for (const auto& [i, before] : marginal_) {
-        contacts_[i].state = before.state;
-        contacts_[i].slip = before.slip;
-        contacts_[i].shear_spring = before.shear_spring;
+void ContactSet::undo_marginal(bool cycling_too) {
+    for (const MarginalChange& m : marginal_) {
+        if (m.cycling && !cycling_too) continue;
+        Contact& c = contacts_[m.index];
+        c.state = m.before.state;
+        c.slip = m.before.slip;
+        c.shear_spring = m.before.shear_spring;
     }
 }
 

@@ -48,8 +48,9 @@ public:
     /// sliding: that state is statically admissible, while one held locked would carry more
     /// shear than friction can (a wedge that must slide would stand on such contacts).
     Update update_states(const Eigen::VectorXd& d, bool equilibrium_only);
-    /// Returns the marginal changes of the last update to the states before it.
-    void undo_marginal();
+    /// Returns the marginal changes of the last update to the states before it. With
+    /// `cycling_too` false, the changes of cycling contacts that were let pass stay.
+    void undo_marginal(bool cycling_too = true);
     /// Whether update_states(d) would make a significant change, without making it: an
     /// equilibrium iteration need not settle a displacement whose contact states change anyway.
     bool would_change(const Eigen::VectorXd& d, bool equilibrium_only) const;
@@ -65,7 +66,12 @@ private:
     std::vector<ContactKinematics> kinematics_;
     std::vector<ContactProperties> properties_;
     std::vector<int> flips_;  ///< significant changes of each contact in this try
-    std::vector<std::pair<std::size_t, Contact>> marginal_;  ///< index, state before
+    struct MarginalChange {
+        std::size_t index;
+        Contact before;
+        bool cycling;  ///< a significant change of a cycling contact, let pass
+    };
+    std::vector<MarginalChange> marginal_;
 };
 
 }  // namespace mcdda

@@ -179,6 +179,14 @@ void Simulation::open_close(Eigen::VectorXd& d, const Eigen::VectorXd& loads, co
         // Friction of sliding contacts was taken from the normal forces of the previous solve;
         // repeat until they agree (with the same factor).
         if (update.friction_change <= 1e-3 * update.friction_used || ++friction_rounds > max_friction_rounds) {
+            // A relaxation increment leaves its contacts as it solved them. The marginal changes
+            // this last update made (each by less than a thousandth of the largest contact
+            // force) are kept at the end of other tries, so that states follow a moving model;
+            // kept here they unbalance the state the relaxation is to bring into balance, which
+            // is judged block by block: on ten thousand blocks 2–4·10⁴ N against the solve's
+            // 10⁻⁷ N, and the relaxation chased its own changes through all its increments
+            // (docs/benchmarks.md, "Ten thousand blocks").
+            if (relaxing_) contacts.undo_marginal(/*cycling_too=*/false);
             settle_try(update, equilibrium_only, attempt);
             return;
         }

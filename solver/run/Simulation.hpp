@@ -543,6 +543,7 @@ private:
     Eigen::VectorXd shaking_start_displacement_;  ///< the displacements then
     ViscousBoundary dashpots_;
     bool viscous_try_ = false;          ///< a dynamic try in progress: the dashpots act
+    bool relaxing_ = false;             ///< a relaxation increment in progress (StaticStep.cpp, relax)
     double velocity_rate_ = 0.0;        ///< see prepare_damping
     Eigen::VectorXd velocity_rest_;
     Eigen::Vector2d incident_ = Eigen::Vector2d::Zero();

@@ -232,9 +232,17 @@ void Simulation::relax(StepReport& report) {
         } else if (k - best_at >= relaxation_window) {
             break;
         }
-        const Attempt attempt = solve_increments(applied_forces(state_.step, state_.time), nullptr, 1.0, dt,
-                                                 detect_step_contacts(Eigen::VectorXd()),
-                                                 prescribed_increments(state_.step, state_.time));
+        relaxing_ = true;
+        Attempt attempt;
+        try {
+            attempt = solve_increments(applied_forces(state_.step, state_.time), nullptr, 1.0, dt,
+                                       detect_step_contacts(Eigen::VectorXd()),
+                                       prescribed_increments(state_.step, state_.time));
+        } catch (...) {
+            relaxing_ = false;
+            throw;
+        }
+        relaxing_ = false;
         report.plastic_iterations += attempt.iterations;
         const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
         if (attempt.outcome != Outcome::Converged || largest > displacement_limit_) {

@@ -176,15 +176,17 @@ TEST(Equilibrium, KirschReachesARatioBelow1e5AndTheSlidingWedgeIsReportedUnbalan
 // is released or on the mesh (static DDA relaxes every step to equilibrium). Label: slow.
 namespace {
 
-void expect_staged_tunnel_stands(const std::vector<std::string>& overrides) {
-    auto run = test::run_example("jointed-tunnel-staged.json", overrides);
-    ASSERT_TRUE(run.simulation);
+/// The run, for further checks.
+test::Run expect_staged_tunnel_stands(const std::vector<std::string>& overrides) {
+    test::Run run = test::run_example("jointed-tunnel-staged.json", overrides);
+    if (!run.simulation) return run;
     const Simulation& s = *run.simulation;
     EXPECT_TRUE(s.finished());
     for (const StageRecord& r : s.stages()) EXPECT_TRUE(r.finished) << r.name;
     std::cout << "staged tunnel: unbalanced-force ratio " << s.state().unbalanced_ratio << " after step "
-              << s.state().step << "\n";
+              << s.state().step << ", " << s.timings().iterations << " equilibrium iterations\n";
     EXPECT_LT(s.state().unbalanced_ratio, s.analysis().equilibrium_ratio);
+    return run;
 }
 
 }  // namespace
@@ -193,5 +195,10 @@ TEST(StagedTunnel, StandsWithItsReleaseOver10Steps) { expect_staged_tunnel_stand
 TEST(StagedTunnel, StandsWithItsReleaseOver5Steps) { expect_staged_tunnel_stands({"/stages/1/release/steps=5"}); }
 TEST(StagedTunnel, StandsWithItsReleaseOver2Steps) { expect_staged_tunnel_stands({"/stages/1/release/steps=2"}); }
 TEST(StagedTunnel, StandsOnAMeshTwiceAsCoarse) {
-    expect_staged_tunnel_stands({"/mesh/size=2.4", "/mesh/local/0/size=0.6"});
+    const test::Run run = expect_staged_tunnel_stands({"/mesh/size=2.4", "/mesh/local/0/size=0.6"});
+    ASSERT_TRUE(run.simulation);
+    // Its relaxations settle: 683 equilibrium iterations in all, where relaxation increments that
+    // kept their last marginal contact changes chased them for 23,748 (docs/benchmarks.md, "Ten
+    // thousand blocks").
+    EXPECT_LT(run.simulation->timings().iterations, 2000);
 }
