@@ -10,18 +10,24 @@ namespace {
 
 /// The end of a run at a collapse: the state is the last one carried; the collapse load lies
 /// between its loads and those of the smallest increment beyond it that could not be carried.
+/// Only the loads that differ between the two are named: a load a step does not change (the
+/// far field of an excavation, gravity already applied) brackets nothing, and naming it as
+/// "between 1e7 and 1e7" reads as a fault.
 RunEnd collapse_end(const Simulation& simulation, const PlasticCollapse& e) {
-    auto loads = [&](double position) {
-        std::string text;
-        for (const auto& [name, value] : simulation.load_magnitudes_at(position))
-            text += (text.empty() ? "" : ", ") + name + " = " + std::to_string(value);
-        return text;
-    };
-    const std::string carried = loads(e.carried), not_carried = loads(e.not_carried);
+    const auto carried = simulation.load_magnitudes_at(e.carried);
+    const auto not_carried = simulation.load_magnitudes_at(e.not_carried);
+    std::string below, beyond;
+    for (const auto& [name, value] : carried) {
+        const auto other = std::find_if(not_carried.begin(), not_carried.end(),
+                                        [&name = name](const auto& load) { return load.first == name; });
+        if (other == not_carried.end() || other->second == value) continue;
+        below += (below.empty() ? "" : ", ") + name + " = " + std::to_string(value);
+        beyond += (beyond.empty() ? "" : ", ") + name + " = " + std::to_string(other->second);
+    }
     return {RunStatus::Collapsed,
             "collapse: " + std::string(e.what()) +
-                (carried.empty() ? std::string()
-                                 : "; collapse load between " + carried + " (carried) and " + not_carried + " (not carried)"),
+                (below.empty() ? std::string()
+                               : "; collapse load between " + below + " (carried) and " + beyond + " (not carried)"),
             e.carried, e.not_carried};
 }
 
