@@ -359,12 +359,16 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         searched_balance = std::move(searched.balance);
         last_correction = step * delta.cwiseAbs().maxCoeff();
         // The factor is kept while it contracts the out-of-balance force well enough. In the
-        // polish, also when it was factorised for this very correction and no share of that
-        // correction lowered the force: the line search then moved the iterate by a sliver, and
-        // the tangent there is the one just factorised (a failing polish refactorised at every
-        // one of its iterations: 72 LU factorisations in one step of Salençon's tunnel cut by a
-        // joint, 58 with this, the same iterations; docs/benchmarks.md).
-        const bool fresh_and_futile = monitor.polishing() && matrix != ElementMatrix::None && !searched.lowered;
+        // polish of a small-strain static analysis, also when it was factorised for this very
+        // correction and no share of that correction lowered the force: the line search then
+        // moved the iterate by a sliver, and the tangent there is the one just factorised (a
+        // failing polish refactorised at every one of its iterations: 72 LU factorisations in
+        // one step of Salençon's tunnel cut by a joint, 58 with this, the same iterations). Not
+        // in static DDA: there the staged tunnel released over 5 steps, whose verdict hangs on
+        // its polishes' paths, then ended at the time step's floor (docs/benchmarks.md, "A
+        // futile polish keeps its factor").
+        const bool fresh_and_futile = is_equilibrium_only() && monitor.polishing() && matrix != ElementMatrix::None &&
+                                      !searched.lowered;
         if (k > 0 && newton && b.norm > keep_factor_contraction * previous && !fresh_and_futile) factor_valid = false;
         previous = b.norm;
     }
