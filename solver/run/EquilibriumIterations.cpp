@@ -362,8 +362,8 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         // polish of a small-strain static analysis, also when it was factorised for this very
         // correction and no share of that correction lowered the force: the line search then
         // moved the iterate by a sliver, and the tangent there is the one just factorised (a
-        // failing polish refactorised at every one of its iterations: 72 LU factorisations in
-        // one step of Salençon's tunnel cut by a joint, 58 with this, the same iterations). Not
+        // failing polish refactorised at every one of its iterations: 72 factorisations in one
+        // step of Salençon's tunnel cut by a joint, 58 with this, the same iterations). Not
         // in static DDA: there the staged tunnel released over 5 steps, whose verdict hangs on
         // its polishes' paths, then ended at the time step's floor (docs/benchmarks.md, "A
         // futile polish keeps its factor").

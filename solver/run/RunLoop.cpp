@@ -10,9 +10,9 @@ namespace {
 
 /// The end of a run at a collapse: the state is the last one carried; the collapse load lies
 /// between its loads and those of the smallest increment beyond it that could not be carried.
-/// Only the loads that differ between the two are named: a load a step does not change (the
-/// far field of an excavation, gravity already applied) brackets nothing, and naming it as
-/// "between 1e7 and 1e7" reads as a fault.
+/// Only the loads that differ between the two are named: a load the step does not change (the
+/// far-field pressure of an excavation, a pressure whose table is constant) brackets nothing,
+/// and "between 1e7 (carried) and 1e7 (not carried)" reads as a fault.
 RunEnd collapse_end(const Simulation& simulation, const PlasticCollapse& e) {
     const auto carried = simulation.load_magnitudes_at(e.carried);
     const auto not_carried = simulation.load_magnitudes_at(e.not_carried);
