@@ -22,6 +22,9 @@ public:
         has_last_ = false;
     }
 
+    /// Whether the last correction went through next() (since the last reset).
+    bool mixing() const { return has_last_; }
+
     /// Given the iterate x and its plain correction f, the accelerated correction.
     Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& f) {
         if (has_last_) {

@@ -22,14 +22,17 @@ public:
         int k = 0;
         double norm = 0.0, scale = 1.0;
         double last_correction = 0.0, yardstick = 1.0;
+        double displacement = 0.0;  ///< the largest displacement so far, with the increment
         double largest = 0.0;
         int yielding = 0;
         bool newton = false;  ///< the tangent is in use (Newton), not the elastic matrix
+        bool plain = false;   ///< the last correction was a whole, unmixed one with the elastic matrix
     };
 
     /// Converged: the force is small against the forces in play, and so is the last correction
     /// against the increment (a slow iteration leaves a small force but a large remaining
-    /// displacement), or the iteration is linear and its one correction solved it exactly.
+    /// displacement), or — plain elastic corrections — what is left to move against the
+    /// displacement so far, or the iteration is linear and its one correction solved it exactly.
     /// `elastic_matrix`: the matrix in force is the elastic one of the current contact states.
     bool converged(const Iteration& it, bool elastic_matrix);
     /// The force alone is small (after a correction): enough for a round of the open–close loop
@@ -67,6 +70,10 @@ public:
     std::string why(Verdict v, const Iteration& it) const;
 
 private:
+    /// Plain elastic corrections whose geometric tail is within the tolerance of the
+    /// displacement so far (see the .cpp); records the corrections it needs.
+    bool settled(const Iteration& it);
+
     double tolerance_;
     int max_iterations_;
     double mechanism_displacement_;
@@ -75,6 +82,8 @@ private:
     int best_at_ = 0, best_correction_at_ = 0;
     bool polishing_ = false;
     bool first_linear_ = false;  ///< nothing yielded at the first iteration
+    double plain_before_ = 0.0;  ///< the plain correction before the last one (0: none)
+    double ratio_before_ = 0.0;  ///< the contraction between the two before (0: none)
     int polish_from_ = 0;
 };
 

@@ -248,7 +248,8 @@ std::optional<Simulation::LineSearch> Simulation::energy_line_search(const Eigen
 }
 
 ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, const Eigen::VectorXd& d,
-                                                        double load_scale, double last_correction, bool newton) const {
+                                                        double load_scale, double last_correction, bool newton,
+                                                        bool plain) const {
     ConvergenceMonitor::Iteration it;
     it.k = k;
     it.norm = b.norm;
@@ -257,9 +258,11 @@ ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, 
     it.last_correction = last_correction;
     // Not below a hundredth of the displacement so far: in a step that only re-equilibrates, the
     // increment is round-off and would never settle.
-    it.yardstick = std::max({d.cwiseAbs().maxCoeff(), 0.01 * state_.displacement.cwiseAbs().maxCoeff(),
-                             1e-12 * topology_.model_size});
-    it.largest = d.cwiseAbs().maxCoeff();
+    const double increment = d.cwiseAbs().maxCoeff(), so_far = state_.displacement.cwiseAbs().maxCoeff();
+    it.yardstick = std::max({increment, 0.01 * so_far, 1e-12 * topology_.model_size});
+    it.displacement = std::max({increment, so_far, 1e-12 * topology_.model_size});
+    it.plain = plain;
+    it.largest = increment;
     it.yielding = b.evaluation.yielding;
     it.newton = newton;
     return it;
@@ -272,6 +275,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
     ConvergenceMonitor monitor(tolerance, model_.analysis.max_plastic_iterations, mechanism_displacements * displacement_limit_);
     AndersonMixing anderson(anderson_depth);
     double previous = std::numeric_limits<double>::infinity(), last_correction = 0.0;
+    bool last_plain = false;  // the last correction: whole, unmixed, with the elastic matrix
     bool newton = uses_newton();
     // The matrix in force is the elastic one (a tangent where nothing yields is one too); a held
     // tangent factor is not.
@@ -288,7 +292,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
                               : balance_at(d, loads, contacts, bolts, matrix);
         searched_balance.reset();
         attempt.yielding = b.evaluation.yielding;
-        const ConvergenceMonitor::Iteration it = iteration_of(k, b, d, loads_in_play, last_correction, newton);
+        const ConvergenceMonitor::Iteration it = iteration_of(k, b, d, loads_in_play, last_correction, newton, last_plain);
         if (monitor.converged(it, elastic_matrix) ||
             (attempt.may_stop_unsettled && monitor.balanced(it) && contacts.would_change(d, is_equilibrium_only()))) {
             attempt.residual = b.residual;
@@ -358,6 +362,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         d += step * delta;
         searched_balance = std::move(searched.balance);
         last_correction = step * delta.cwiseAbs().maxCoeff();
+        last_plain = !newton && step == 1.0 && !anderson.mixing();
         // The factor is kept while it contracts the out-of-balance force well enough. In the
         // polish of a small-strain static analysis, also when it was factorised for this very
         // correction and no share of that correction lowered the force: the line search then
@@ -376,7 +381,13 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
 
 Eigen::VectorXd Simulation::correction(const Eigen::VectorXd& d, const Balance& b, bool newton, double force_tolerance,
                                        bool any_closed, AndersonMixing& anderson) {
-    Eigen::VectorXd delta = solve_reduced(b.rhs, newton ? newton_solve_tolerance : SymmetricSystem::exact);
+    // An elastic correction is solved to the iteration's own tolerance: where a held factor of an
+    // earlier matrix (another step's geometry or contact states) preconditions the solve, more
+    // digits only cost conjugate-gradient iterations that the next correction undoes, and the
+    // one correction of a linear iteration (ConvergenceMonitor::converged) is then as exact as
+    // the tolerance asks.
+    Eigen::VectorXd delta =
+        solve_reduced(b.rhs, newton ? newton_solve_tolerance : model_.analysis.plastic_tolerance);
     // With the elastic matrix (non-associated flow, or a tangent that is not positive definite)
     // the iteration is a fixed point d ← d + K⁻¹R(d) that contracts slowly once much of the
     // model yields: Anderson acceleration (Walker & Ni 2011) mixes the last corrections; it

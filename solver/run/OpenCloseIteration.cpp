@@ -75,6 +75,25 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     }
     open_close(d, loads, shift, set, attempt);
     viscous_try_ = false;
+    // On the deformed shape an increment that turns an element inside out is no solution, however
+    // well it balances: the element's area, and with it its stiffness and mass, would change sign
+    // (a soft block pushed at a finely meshed corner accepted one, and every later matrix failed
+    // as "not positive definite"). Like a try that does not converge, it calls for a smaller
+    // step (docs/penalty-and-time-step.md).
+    if (attempt.outcome == Outcome::Converged) {
+        if (const int e = inverted_element(d); e >= 0) {
+            Point2 centre{0.0, 0.0};
+            for (int a = 0; a < 3; ++a) {
+                centre.x += element_nodes()[mesh_.triangles[e][a]].x / 3.0;
+                centre.y += element_nodes()[mesh_.triangles[e][a]].y / 3.0;
+            }
+            std::ostringstream why;
+            why.precision(4);
+            why << "the increment turns the element at (" << centre.x << ", " << centre.y << ") inside out";
+            attempt.outcome = Outcome::NotConverged;
+            attempt.why = why.str();
+        }
+    }
     attempt.contacts = set.contacts();
     return attempt;
 }

@@ -369,6 +369,26 @@ double Simulation::largest_increment(const Eigen::VectorXd& d) {
     return largest;
 }
 
+int Simulation::inverted_element(const Eigen::VectorXd& d) const {
+    if (model_.analysis.geometry == AnalysisSettings::Geometry::Initial) return -1;
+    const std::vector<Point2>& nodes = element_nodes();
+    auto twice_area = [](const Point2& p, const Point2& q, const Point2& r) {
+        return (q.x - p.x) * (r.y - p.y) - (r.x - p.x) * (q.y - p.y);
+    };
+    for (int e = 0; e < static_cast<int>(mesh_.triangles.size()); ++e) {
+        if (!elements_.active(e)) continue;
+        Point2 before[3], after[3];
+        for (int a = 0; a < 3; ++a) {
+            const int n = mesh_.triangles[e][a];
+            before[a] = nodes[n];
+            after[a] = {nodes[n].x + d[2 * n], nodes[n].y + d[2 * n + 1]};
+        }
+        // (the sign of the area before, not its orientation by convention, is the reference)
+        if (!(twice_area(before[0], before[1], before[2]) * twice_area(after[0], after[1], after[2]) > 0.0)) return e;
+    }
+    return -1;
+}
+
 void Simulation::record_solver_counts() {
     timings_.factorization = system_.factorization_seconds();
     timings_.factorizations = system_.factorizations();

@@ -357,6 +357,9 @@ private:
     void relax(StepReport& report);
     /// Largest nodal displacement of increments d.
     static double largest_increment(const Eigen::VectorXd& d);
+    /// On the deformed shape (analysis.geometry "deformed"): the first active element that the
+    /// increments d turn inside out, or −1.
+    int inverted_element(const Eigen::VectorXd& d) const;
 
     // One try of a load increment (OpenCloseIteration.cpp).
     /// Solves the increments of one try: loads `external`; a static increment applies only the
@@ -422,7 +425,7 @@ private:
     Balance balance_of(Eigen::VectorXd residual, const ElementAssembly::Evaluation& evaluation);
     /// An iteration's numbers for the ConvergenceMonitor.
     ConvergenceMonitor::Iteration iteration_of(int k, const Balance& b, const Eigen::VectorXd& d, double load_scale,
-                                               double last_correction, bool newton) const;
+                                               double last_correction, bool newton, bool plain) const;
     /// Equilibrium iterations for fixed contact states (see the file comment); true when
     /// converged, d updated in place.
     bool equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,

@@ -35,6 +35,38 @@ TEST(ConvergenceMonitor, ConvergedNeedsSmallForceAndSmallCorrectionAfterTheFirst
     EXPECT_FALSE(m.converged(at(1, 1e-2, 1e-6), false));
 }
 
+// Plain elastic corrections shrinking by 0.88 per iteration, of an increment of 1 in a state
+// displaced by 100 so far (a load step of a hundredth): once three in a row show the ratio, the
+// tail c·ρ/(1 − ρ) is measured against the displacement so far.
+TEST(ConvergenceMonitor, PlainCorrectionsSettleAgainstTheDisplacementSoFar) {
+    auto plain = [](int k, double correction, double so_far, bool is_plain = true) {
+        ConvergenceMonitor::Iteration it = at(k, 1e-6, correction);
+        it.displacement = so_far;
+        it.plain = is_plain;
+        return it;
+    };
+    ConvergenceMonitor m(1e-4, 200, 1.0);
+    EXPECT_FALSE(m.converged(plain(1, 1e-3, 100.0), false));
+    EXPECT_FALSE(m.converged(plain(2, 0.88e-3, 100.0), false));  // one ratio is not yet a trend
+    // 0.7744e-3 · 0.88 / 0.12 = 5.7e-3 ≤ 1e-4 · 100; against the increment it needs 1e-4.
+    EXPECT_TRUE(m.converged(plain(3, 0.7744e-3, 100.0), false));
+
+    // The same corrections against a displacement so far no larger than the increment: not yet.
+    ConvergenceMonitor first_step(1e-4, 200, 1.0);
+    for (int k = 1; k <= 3; ++k) EXPECT_FALSE(first_step.converged(plain(k, 1e-3 * std::pow(0.88, k - 1), 1.0), false));
+
+    // Mixed (Anderson) corrections rise and fall: no ratio is read from them.
+    ConvergenceMonitor mixed(1e-4, 200, 1.0);
+    for (int k = 1; k <= 4; ++k) EXPECT_FALSE(mixed.converged(plain(k, 1e-3 * std::pow(0.88, k - 1), 100.0, false), false));
+
+    // A correction that grew again: the larger of the last two ratios (≥ 1) rules the tail out.
+    ConvergenceMonitor bumpy(1e-4, 200, 1.0);
+    EXPECT_FALSE(bumpy.converged(plain(1, 1e-3, 100.0), false));
+    EXPECT_FALSE(bumpy.converged(plain(2, 1.2e-3, 100.0), false));
+    EXPECT_FALSE(bumpy.converged(plain(3, 0.2e-3, 100.0), false));
+    EXPECT_TRUE(bumpy.converged(plain(4, 0.12e-3, 100.0), false));  // 0.17 and 0.6 since
+}
+
 TEST(ConvergenceMonitor, BalancedNeedsOnlyTheForceAfterTheFirstIteration) {
     const ConvergenceMonitor m(1e-4, 200, 1.0);
     EXPECT_FALSE(m.balanced(at(0, 1e-6, 1e-6)));      // nothing solved yet
