@@ -75,7 +75,7 @@ Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external
     }
     open_close(d, loads, shift, set, attempt);
     viscous_try_ = false;
-    // On the deformed shape an increment that turns an element inside out is no solution, however
+    // On the updated shape an increment that turns an element inside out is no solution, however
     // well it balances: the element's area, and with it its stiffness and mass, would change sign
     // (a soft block pushed at a finely meshed corner accepted one, and every later matrix failed
     // as "not positive definite"). Like a try that does not converge, it calls for a smaller

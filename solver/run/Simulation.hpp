@@ -357,7 +357,7 @@ private:
     void relax(StepReport& report);
     /// Largest nodal displacement of increments d.
     static double largest_increment(const Eigen::VectorXd& d);
-    /// On the deformed shape (analysis.geometry "deformed"): the first active element that the
+    /// On the updated shape (`"geometry": "updated"`): the first active element that the
     /// increments d turn inside out, or −1.
     int inverted_element(const Eigen::VectorXd& d) const;
 
