@@ -12,6 +12,8 @@
 /// the whole matrix and factorises it by LU (UMFPACK), keeping UMFPACK's symbolic analysis
 /// while the pattern is unchanged.
 
+#include "linalg/LowRankCorrection.hpp"
+
 #include <Eigen/Sparse>
 
 #include <cstdint>
@@ -86,7 +88,10 @@ public:
     /// — conjugate gradients preconditioned by the held factor — and the matrix is factorised
     /// once those iterations have cost as many flops as a factorisation (CHOLMOD's count), or
     /// when they do not converge; after such a misfit the next few matrices (3, then 15 and 63
-    /// after misfits in a row) are factorised at once. A matrix equal, bit for bit, to the one
+    /// after misfits in a row) are factorised at once. Where the matrix differs from the held
+    /// factor's in a few large entries (contacts that changed state) besides a small drift
+    /// everywhere, the factor is first corrected for those (LowRankCorrection), at one solve per
+    /// direction. A matrix equal, bit for bit, to the one
     /// the Cholesky factor held is of is solved directly with it, with or without `may_reuse`.
     void factorize(bool may_reuse = false);
 
@@ -144,6 +149,11 @@ private:
     int held_skips_left_ = 0;  ///< matrices still to factorise at once after the last misfit
     double factorization_seconds_ = 0.0;
     std::uint64_t factored_digest_ = 0;  ///< values_digest() of the matrix the Cholesky factor is of
+    std::vector<double> factored_values_;  ///< the values of that matrix
+    /// The held factor corrected for the current matrix's few large changes (built by the first
+    /// solve of a held matrix).
+    LowRankCorrection correction_;
+    bool correction_built_ = false;
     std::uint64_t values_digest() const;
     void factorize_now();
 
