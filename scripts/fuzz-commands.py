@@ -1540,7 +1540,8 @@ class Harness:
         for sig, e in self.kinds.items():
             lines.append("  [%d] %s\n       %s/repro.sh" % (e["count"], sig, e["first"]))
         text = "\n".join(lines)
-        data = {"mcdda": self.mcdda, "sanitized": self.sanitized, "seed": self.args.seed, "planned": planned,
+        data = {"mcdda": self.mcdda, "sanitized": self.sanitized, "seed": self.args.seed, "first": self.args.first,
+                "planned": planned,
                 "mutants": n, "wall_seconds": round(wall, 1), "timeout": self.args.timeout, "jobs": self.args.jobs,
                 "counts": {c: dict(self.counts[c]) for c in commands},
                 "exit_codes": {c: dict(self.exit_codes[c]) for c in commands},
@@ -1587,6 +1588,9 @@ def main():
                     help="render: one Xvfb started here for all calls (default), or each call's own xvfb-run")
     ap.add_argument("--findings-log", default="", help="append each new kind of finding to this Markdown file")
     ap.add_argument("--only", default="", help="make and run only these mutant numbers (comma-separated)")
+    ap.add_argument("--first", type=int, default=0,
+                    help="start at this mutant number: continues a long run that was stopped (its summary "
+                         "gave the count done) with the same seed, commands and weights")
     ap.add_argument("--stop-on-finding", action="store_true")
     ap.add_argument("--verbose", action="store_true", help="one line per call")
     ap.add_argument("--keep-going", action="store_true", help="exit 0 even with findings")
@@ -1619,7 +1623,9 @@ def main():
     def command_of(i):
         return random.Random("cmd:%s:%d" % (args.seed, i)).choices(names, weights=cum)[0]
 
-    indices = [int(x) for x in args.only.split(",")] if args.only else range(args.mutants)
+    if not 0 <= args.first <= args.mutants:
+        ap.error("--first %d: not between 0 and --mutants %d" % (args.first, args.mutants))
+    indices = [int(x) for x in args.only.split(",")] if args.only else range(args.first, args.mutants)
     planned = len(indices)
     log("fuzzing %s (%s) with %d mutants, seed %s, %d jobs, timeout %g s; weights %s"
         % (h.mcdda, "sanitized" if h.sanitized else "not sanitized", planned, args.seed, args.jobs, args.timeout,

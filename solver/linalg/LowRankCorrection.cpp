@@ -23,14 +23,15 @@ bool LowRankCorrection::build(const Eigen::SparseMatrix<double>& current, const 
     const double* value = current.valuePtr();
     auto diagonal = [&](int e) { return std::fabs(value[outer[e]]); };
 
-    // The equations the large changes touch, in order.
+    // The equations the large changes touch, in order. Squares compared (no square root per
+    // stored entry); a NaN fails the comparison and counts as a large change.
     std::vector<int> at(n, -1);
     std::vector<int> equations;
     for (int j = 0; j < n; ++j)
         for (auto p = outer[j]; p < outer[j + 1]; ++p) {
             const int i = inner[p];
-            const double change = std::fabs(value[p] - held[p]);
-            if (!(change <= large_change * std::sqrt(diagonal(i) * diagonal(j)))) {
+            const double change = value[p] - held[p];
+            if (!(change * change <= large_change * large_change * (diagonal(i) * diagonal(j)))) {
                 for (int e : {i, j})
                     if (at[e] < 0) {
                         at[e] = 0;
@@ -66,11 +67,15 @@ bool LowRankCorrection::build(const Eigen::SparseMatrix<double>& current, const 
     if (r > max_rank) return false;
     if (r == 0) return true;
 
+    Eigen::MatrixXd q(m, r);  // the kept directions on the block's equations
+    for (int c = 0; c < r; ++c) q.col(c) = eigen.eigenvectors().col(kept[c]);
     Eigen::MatrixXd u = Eigen::MatrixXd::Zero(n, r);
-    for (int c = 0; c < r; ++c)
-        for (int k = 0; k < m; ++k) u(equations[k], c) = eigen.eigenvectors()(k, kept[c]);
+    for (int k = 0; k < m; ++k) u.row(equations[k]) = q.row(k);
     z_ = solve(u);
-    Eigen::MatrixXd capacitance = u.transpose() * z_;
+    // Uᵀ Z from the m rows where U is not zero (the dense product cost n·r² per build).
+    Eigen::MatrixXd z_rows(m, r);
+    for (int k = 0; k < m; ++k) z_rows.row(k) = z_.row(equations[k]);
+    Eigen::MatrixXd capacitance = q.transpose() * z_rows;
     for (int c = 0; c < r; ++c) capacitance(c, c) += 1.0 / lambda[kept[c]];
     capacitance_.compute(capacitance);
     return true;
