@@ -323,7 +323,7 @@ public:
         while (2.0 * half < extent) half *= 2.0;
         std::vector<int> all(segments_.size());
         for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-        visit({0.5 * (box[0] + box[2]), 0.5 * (box[1] + box[3])}, half, 0, 0, all, false);
+        visit({0.5 * (box[0] + box[2]), 0.5 * (box[1] + box[3])}, half, false, all, false);
         return std::move(points_);
     }
 
@@ -357,10 +357,13 @@ private:
         return *best > 0.0 ? sizes[best - weight.begin()] : field_.global_size();
     }
 
-    /// A cell of half-width r at c, column i and row j of its level; `near`: the boundary
-    /// segments that may pass within reach of it; `inside`: the whole cell is known to lie inside
-    /// the block, clear of the boundary.
-    void visit(Point2 c, double r, long long i, long long j, const std::vector<int>& near, bool inside) {
+    /// A cell of half-width r at c; `odd`: whether its column plus row on its level is odd, which
+    /// its position within its parent decides, the parent's doubled column and row being even
+    /// (the indices themselves overflowed 64 bits under a mesh size of 10³⁰⁸ m, a thousand
+    /// levels above a local size: undefined behaviour); `near`: the boundary segments that may
+    /// pass within reach of it; `inside`: the whole cell is known to lie inside the block, clear
+    /// of the boundary.
+    void visit(Point2 c, double r, bool odd, const std::vector<int>& near, bool inside) {
         const double h = field_(c);
         const double allowed = leaf_fraction * h * (1.0 + 1e-9);
         const bool leaf = 2.0 * r <= allowed;
@@ -372,7 +375,7 @@ private:
             const double width = 2.0 * r;
             const bool fits = width >= 0.9 * allowed;
             const bool fits_turned = !fits && std::sqrt(2.0) * width <= allowed && std::sqrt(2.0) * width >= 0.9 * allowed;
-            if (!fits && !(fits_turned && (i + j) % 2 == 0)) return;
+            if (!fits && !(fits_turned && !odd)) return;
         }
         std::vector<int> closer;
         if (!inside) {
@@ -397,7 +400,7 @@ private:
         const double q = 0.5 * r;
         for (int dy = 0; dy < 2; ++dy)
             for (int dx = 0; dx < 2; ++dx)
-                visit({c.x + (dx ? q : -q), c.y + (dy ? q : -q)}, q, 2 * i + dx, 2 * j + dy, closer, inside);
+                visit({c.x + (dx ? q : -q), c.y + (dy ? q : -q)}, q, dx != dy, closer, inside);
     }
 };
 
