@@ -61,6 +61,14 @@ public:
     bool hands_over_to_newton(Verdict v, const Iteration& it) const {
         return (v == Verdict::Stalled || v == Verdict::Capped) && !polishing_ && it.yielding > 0;
     }
+    /// Whether the force is within `polish_reach` times the tolerance, where a polish can close
+    /// the gap. Farther, the tangent is of yield planes that will still change: of the polishes
+    /// traced in the shipped non-associated small-strain examples, 7 of 31 converged from within
+    /// 100 times the tolerance and 1 of 12 from beyond (11 failed, 5 of them on a tangent the LU
+    /// found singular), each LU costing about a Cholesky factorisation (docs/benchmarks.md, "A
+    /// polish only near equilibrium").
+    bool within_polish_reach(const Iteration& it) const { return it.norm <= polish_reach * tolerance_ * it.scale; }
+    static constexpr double polish_reach = 100.0;
     /// Newton with the exact unsymmetric tangent takes over after iteration k (the polish of a
     /// non-associated model): a fresh stall window and a cap of its own.
     void start_polishing(const Iteration& it);

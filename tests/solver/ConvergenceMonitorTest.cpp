@@ -164,3 +164,10 @@ TEST(ConvergenceMonitor, PolishingGetsAFreshWindowAndItsOwnCap) {
     EXPECT_EQ(v, Verdict::Capped);
     EXPECT_EQ(n - 1, 30);
 }
+
+TEST(ConvergenceMonitor, APolishReachesOnlyFromNearEquilibrium) {
+    const ConvergenceMonitor m(1e-4, 40, 1.0);
+    EXPECT_TRUE(m.within_polish_reach(at(10, 50 * 1e-4)));
+    EXPECT_TRUE(m.within_polish_reach(at(10, ConvergenceMonitor::polish_reach * 1e-4)));
+    EXPECT_FALSE(m.within_polish_reach(at(10, 424 * 1e-4)));  // Salençon's excavation at 53k elements
+}
