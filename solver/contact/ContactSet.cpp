@@ -26,6 +26,14 @@ bool ContactSet::any_closed() const {
     return std::any_of(contacts_.begin(), contacts_.end(), [](const Contact& c) { return c.state != ContactState::Open; });
 }
 
+bool ContactSet::any_sliding_with_strength() const {
+    for (std::size_t i = 0; i < contacts_.size(); ++i)
+        if (contacts_[i].state == ContactState::Sliding &&
+            (properties_[i].tan_friction > 0.0 || properties_[i].cohesion_force > 0.0))
+            return true;
+    return false;
+}
+
 int ContactSet::count(ContactState state) const {
     return static_cast<int>(
         std::count_if(contacts_.begin(), contacts_.end(), [state](const Contact& c) { return c.state == state; }));

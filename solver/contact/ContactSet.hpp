@@ -25,6 +25,9 @@ public:
     const std::vector<Contact>& contacts() const { return contacts_; }
     std::size_t size() const { return contacts_.size(); }
     bool any_closed() const;
+    /// Some contact slides against friction or cohesion (its shear force a load from its last
+    /// normal force, not a spring).
+    bool any_sliding_with_strength() const;
     int count(ContactState state) const;
 
     /// Contact forces f − K·d of the closed contacts at increments d, added to `force`.

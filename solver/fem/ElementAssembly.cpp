@@ -165,7 +165,8 @@ int ElementAssembly::evaluate_element(int e, const Eigen::VectorXd& d, const Poi
             // symmetric matrix); for ψ < φ the exact unsymmetric tangent, which keeps Newton's
             // convergence quadratic where collapse is judged (factorised by LU).
             if (law.symmetric_tangent()) {
-                const Eigen::Matrix3d C = 0.5 * (tangent + tangent.transpose());
+                const Eigen::Matrix3d C =
+                    (1.0 - elastic_share_) * 0.5 * (tangent + tangent.transpose()) + elastic_share_ * D;
                 k->noalias() += w * g.B[q].transpose() * C * g.B[q];
             } else {
                 k->noalias() += w * g.B[q].transpose() * tangent * g.B[q];

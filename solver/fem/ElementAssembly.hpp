@@ -77,6 +77,11 @@ public:
     /// matrix is symmetric; otherwise it is not (SymmetricSystem's unsymmetric mode).
     bool symmetric_tangent() const { return symmetric_tangent_; }
 
+    /// The symmetric tangent of a yielding point is taken as (1 − share)·C + share·D (0: the
+    /// consistent tangent C itself): a tangent that is not positive definite made so.
+    void set_elastic_share(double share) { elastic_share_ = share; }
+    double elastic_share() const { return elastic_share_; }
+
     struct Evaluation {
         int yielding = 0;          ///< integration points on the yield surface
         double force_scale = 0.0;  ///< largest Σ|element force| at a degree of freedom (N/m)
@@ -118,6 +123,7 @@ private:
     std::vector<std::unique_ptr<ConstitutiveLaw>> laws_;  ///< per material
     bool has_tangent_ = false;                 ///< see has_tangent()
     bool symmetric_tangent_ = true;            ///< see symmetric_tangent()
+    double elastic_share_ = 0.0;                           ///< see set_elastic_share()
     std::vector<Triangle3::Geometry> linear_;  ///< per element, three-node meshes
     std::vector<Triangle6::Geometry> quadratic_geometry_;  ///< per element, six-node meshes
     /// Per-element results of one chunk of evaluate(), kept between calls: the plastic

@@ -23,7 +23,13 @@ public:
         double norm = 0.0, scale = 1.0;
         double last_correction = 0.0, yardstick = 1.0;
         double displacement = 0.0;  ///< the largest displacement so far, with the increment
+        /// What the mechanism rule weighs: the largest displacement of the increment, or with
+        /// `total` the largest displacement in all (small strain, see assess).
         double largest = 0.0;
+        bool total = false;
+        /// The increment's largest displacement when the last correction minimised the potential
+        /// energy along itself (the energy line search: associated flow); 0 otherwise.
+        double flow = 0.0;
         int yielding = 0;
         bool newton = false;  ///< the tangent is in use (Newton), not the elastic matrix
         bool plain = false;   ///< the last correction was a whole, unmixed one with the elastic matrix
@@ -47,6 +53,12 @@ public:
     /// decides that.
     bool beyond_improvement(const Iteration& it, bool lowered) const {
         return !lowered && it.norm <= tolerance_ * it.scale;
+    }
+
+    /// A small-strain increment (`total`) that converged with a displacement beyond the
+    /// mechanism limit, material yielding: not carried, a mechanism (see assess).
+    bool mechanism_when_converged(const Iteration& it) const {
+        return it.total && it.yielding > 0 && it.largest > mechanism_displacement_;
     }
 
     enum class Verdict { Continue, Diverging, Stalled, Mechanism, Capped };
@@ -87,7 +99,8 @@ private:
     double mechanism_displacement_;
     double first_norm_ = 0.0;
     double best_norm_, best_correction_;
-    int best_at_ = 0, best_correction_at_ = 0;
+    double flow_mark_ = 0.0;  ///< the flow when it last doubled
+    int best_at_ = 0, best_correction_at_ = 0, flow_doubled_at_ = 0;
     bool polishing_ = false;
     bool first_linear_ = false;  ///< nothing yielded at the first iteration
     double plain_before_ = 0.0;  ///< the plain correction before the last one (0: none)

@@ -442,6 +442,7 @@ private:
     struct LineSearch {
         double step = 1.0;
         bool lowered = true;
+        bool minimised_energy = false;  ///< the energy line search chose the share
         /// The balance at the share taken when the search evaluated it there: the next iteration
         /// starts from it unless it needs a new matrix (one return mapping of every point saved).
         std::optional<Balance> balance;
@@ -482,6 +483,12 @@ private:
         return model_.analysis.kind == AnalysisSettings::Kind::Static &&
                model_.analysis.geometry == AnalysisSettings::Geometry::Initial;
     }
+    /// Newton's line search minimises the potential energy along the correction (see
+    /// line_search and the .cpp).
+    bool minimises_energy(const ContactSet& contacts, bool polishing) const;
+    /// Raises the elastic matrix's share in the symmetric tangent after a tangent that was not
+    /// positive definite; false when it is already at its largest.
+    bool stiffen_tangent();
     /// Plasticity somewhere: Newton with the algorithmic tangent (see equilibrate).
     bool uses_newton() const { return may_yield_ && elements_.has_tangent() && elements_.symmetric_tangent(); }
     /// Non-associated plasticity somewhere: the elastic iteration, finished by Newton with the

@@ -108,6 +108,44 @@ TEST(ConvergenceMonitor, StallsWhenTheForceIsNotHalvedWithinTheWindow) {
     for (k = 0; k < 120; ++k) ASSERT_EQ(converging.assess(at(k, std::pow(0.5, k / 5.0))), Verdict::Continue) << k;
 }
 
+TEST(ConvergenceMonitor, NewtonMinimisingTheEnergyProgressesWhileItsFlowDoubles) {
+    // A Newton iteration that minimises the energy and flows along a forming mechanism: its force
+    // and correction do not fall, but its increment doubles every third iteration. It goes on
+    // (until it converges or the mechanism rule ends it) where the same numbers without the flow
+    // stall after Newton's window.
+    ConvergenceMonitor flowing(1e-4, 1000, 1e9);
+    ConvergenceMonitor creeping(1e-4, 1000, 1e9);
+    Verdict flow_verdict = Verdict::Continue, creep_verdict = Verdict::Continue;
+    int k = 0;
+    for (; k < 40; ++k) {
+        auto it = at(k, 1.0, 1.0, true);
+        creep_verdict = creeping.assess(it);
+        it.flow = 0.01 * std::pow(2.0, k / 3);
+        flow_verdict = flowing.assess(it);
+        if (flow_verdict != Verdict::Continue) break;
+    }
+    EXPECT_EQ(k, 40) << "stalled while flowing";
+    EXPECT_EQ(creep_verdict, Verdict::Stalled);
+    // Once the flow stops doubling the window runs again.
+    for (int j = 0; j < 12 && flow_verdict == Verdict::Continue; ++j, ++k) {
+        auto it = at(k, 1.0, 1.0, true);
+        it.flow = 0.01 * std::pow(2.0, 39 / 3) * 1.01;
+        flow_verdict = flowing.assess(it);
+    }
+    EXPECT_EQ(flow_verdict, Verdict::Stalled);
+}
+
+TEST(ConvergenceMonitor, AMechanismOfTheDisplacementInAllSaysSo) {
+    ConvergenceMonitor m(1e-4, 200, 1.0);
+    auto it = at(0, 1.0);
+    it.largest = 2.0;
+    it.total = true;
+    EXPECT_EQ(m.assess(it), Verdict::Mechanism);
+    EXPECT_NE(m.why(Verdict::Mechanism, it).find("the displacement reached 2"), std::string::npos);
+    it.total = false;
+    EXPECT_NE(m.why(Verdict::Mechanism, it).find("the displacement increment reached 2"), std::string::npos);
+}
+
 TEST(ConvergenceMonitor, DivergenceMechanismAndCap) {
     ConvergenceMonitor m(1e-4, 200, 1.0);
     EXPECT_EQ(m.assess(at(0, 1.0)), Verdict::Continue);
