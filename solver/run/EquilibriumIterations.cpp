@@ -163,9 +163,10 @@ Simulation::LineSearch Simulation::line_search(const Eigen::VectorXd& d, const E
     //    across contacts, the largest force) stalled such increments far from any collapse: on
     //    the flexible Prandtl footing refined at the footing's edge, 12 of 48 meshes
     //    "collapsed" at 39–68 % of the collapse load when whole steps were not halved
-    //    (docs/benchmarks.md, "Newton minimising the energy under a load"). Where the potential is flat, near a
-    //    collapse load, an increment flows metres along the mechanism: the mechanism rule on the displacement in all
-    //    ends it (ConvergenceMonitor::assess).
+    //    (docs/benchmarks.md, "Newton minimising the energy under a load"). Where the
+    //    potential is flat, near a collapse load, an increment flows metres along the
+    //    mechanism: the mechanism rule on the displacement in all ends it
+    //    (ConvergenceMonitor::assess).
     //  - SumOfSquares (the unsymmetric polish, which has no potential, and a symmetric tangent
     //    along which the energy does not descend): halving until the sum of squares of the
     //    out-of-balance force does not rise, which a Newton direction always lowers at first.
@@ -376,11 +377,11 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
             --k;
             continue;
         }
-        // A correction of a held tangent factor (the last converged increment's) that alone would
-        // be a mechanism is no sign of one: that tangent is nearly singular along it (on the
-        // rigid Prandtl footing refined at its edge, 1e9 m at 58 % of the collapse load, a
-        // "collapse" when steps were not halved). The elastic matrix gives this correction
-        // instead (the elastic predictor), and a fresh tangent the next.
+        // A correction of a held tangent factor (the last converged increment's, or an earlier
+        // iterate's) that alone would be a mechanism is no sign of one: that tangent is nearly
+        // singular along it (on the rigid Prandtl footing refined at its edge, 1e9 m at 58 % of
+        // the collapse load, a "collapse" when steps were not halved). The elastic matrix gives
+        // this correction instead (the elastic predictor), and a fresh tangent the next.
         if (matrix == ElementMatrix::None && held_.tangent && newton &&
             delta.cwiseAbs().maxCoeff() > mechanism_displacements * displacement_limit_) {
             elastic_once = true;
