@@ -17,8 +17,8 @@ footing=${1:-flexible}
 mcdda=${2:-build/app/mcdda}
 out=${3:-out/bench-prandtl-refined-$footing}
 case "$footing" in
-  flexible) model=examples/prandtl-flexible-footing.json ;;
-  rigid) model=examples/prandtl-footing.json ;;
+  flexible) model=examples/prandtl-flexible-footing.json; along_radius=0.3 ;;
+  rigid) model=examples/prandtl-footing.json; along_radius=0.5 ;;
   *) echo "usage: bash scripts/bench-prandtl-refined.sh [flexible|rigid] [MCDDA_BINARY] [OUT_DIR]" >&2; exit 2 ;;
 esac
 [ -x "$mcdda" ] || bash scripts/build.sh
@@ -37,8 +37,9 @@ for along in 0.4 0.6 0.8; do
             --out "$out/$name" --quiet --threads 1 --set /mesh/size=4 \
             --set /edge_pressures/0/pressure=1000 --set /analysis/steps=80 --set /analysis/output_every=1000 \
             --set '/load_tables/0/points=[[0,0],[1,200],[2,300],[3,350],[4,400],[5,450],[6,480],[7,481]]' \
-            --set /analysis/min_load_fraction=$floor --set /mesh/local/0/size=$along --set /mesh/grading=$grading \
-            --set "/mesh/local/-={\"point\": [2, 0], \"size\": $edge, \"radius\": $radius}" >/dev/null 2>&1 || true
+            --set /analysis/min_load_fraction=$floor --set /mesh/grading=$grading \
+            --set "/mesh/local=[{\"from\": [0, 0], \"to\": [2, 0], \"size\": $along, \"radius\": $along_radius},
+                               {\"point\": [2, 0], \"size\": $edge, \"radius\": $radius}]" >/dev/null 2>&1 || true
           python3 - "$out/$name" "$name" "$(tail -1 "$out/$name.time")" >> "$rows" <<'PY'
 import json, math, sys
 s = json.load(open(sys.argv[1] + "/summary.json"))

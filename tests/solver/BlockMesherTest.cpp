@@ -93,8 +93,8 @@ TEST(BlockMesher, EveryExampleMeshesAtItsRequestedAngle) {
         const double achievable = std::min(requested, p.statistics.min_input_angle_deg);
         EXPECT_GE(p.statistics.min_angle_deg, achievable - 1e-9) << file;
         // Real meshes, not a handful of triangles (the coarsest example, the flexible footing
-        // of the speed benchmark, has 498).
-        EXPECT_GT(p.statistics.elements, 400) << file;
+        // of the speed benchmark, coarse away from its edge, has 330).
+        EXPECT_GT(p.statistics.elements, 300) << file;
     }
 }
 

@@ -21,9 +21,10 @@ const double prandtl = 2.0 + M_PI;
 using mcdda::test::CollapseRun;
 
 /// Halved steps may carry a little more than the whole step that failed: at the collapse load the
-/// load–settlement curve is flat, and plastic flow depends on the path. On the shipped flexible
-/// footing the whole 1 kPa step from 5.16 to 5.17 cu flowed past 19 m (the mechanism limit is
-/// 1.72 m) where 64 smaller ones reached 5.1705 cu within it: 0.01 %.
+/// load–settlement curve is flat, and plastic flow depends on the path. On the flexible footing
+/// meshed uniformly at 0.2 m along it (498 elements, the example's mesh before it was refined at
+/// the footing's edge) the whole 1 kPa step from 5.16 to 5.17 cu flowed past 19 m (the mechanism
+/// limit is 1.72 m) where 64 smaller ones reached 5.1705 cu within it: 0.01 %.
 constexpr double path_slack = 2e-4;
 
 /// A Prandtl example with overrides; loads as q/cu.
@@ -100,10 +101,10 @@ TEST(Prandtl, FlexibleFootingRefinedAtItsEdgeWholeAndHalvedSteps) {
             "/edge_pressures/0/pressure=1000",
             "/analysis/steps=80",
             "/load_tables/0/points=[[0,0],[1,200],[2,300],[3,350],[4,400],[5,450],[6,480],[7,481]]",
-            "/mesh/local/0/size=" + std::to_string(m.along),
             "/mesh/grading=" + std::to_string(m.grading),
-            "/mesh/local/-={\"point\": [2, 0], \"size\": " + std::to_string(m.at_edge) +
-                ", \"radius\": " + std::to_string(m.radius) + "}"};
+            "/mesh/local=[{\"from\": [0, 0], \"to\": [2, 0], \"size\": " + std::to_string(m.along) +
+                ", \"radius\": 0.3}, {\"point\": [2, 0], \"size\": " + std::to_string(m.at_edge) +
+                ", \"radius\": " + std::to_string(m.radius) + "}]"};
         const std::string label = "refined to " + std::to_string(m.at_edge) + " m at the edge";
         const CollapseRun bisected = run_footing(sequence, "prandtl-flexible-footing.json");
         expect_prandtl(bisected, label + ", halved steps");

@@ -3,8 +3,8 @@
 //
 // Weightless undrained clay (cu = 100 kPa, φ = ψ = 0) under a flexible smooth strip footing
 // pressure held at q = 400 kPa: the clay stands while cu/F ≥ q/(2 + π), so
-// F = (2 + π) cu / q = 1.2854 (Prandtl). examples/prandtl-flexible-footing.json, 498 six-node
-// elements near the footing.
+// F = (2 + π) cu / q = 1.2854 (Prandtl). examples/prandtl-flexible-footing.json, 330 six-node
+// elements, refined at the footing's edge.
 
 #include "RunModel.hpp"
 
@@ -200,6 +200,10 @@ TEST(StrengthReduction, HoekBrownDeviatorIsDividedAtEveryConfinement) {
 // With GSI = 100 and mi = 0.001 the Hoek–Brown criterion is Tresca's, σ1 − σ3 = σci, to 0.13 %
 // under the footing's stresses: the Prandtl footing of clay cu = σci/2 under a held 400 kPa then
 // has Prandtl's factor (2 + π) cu/q, as the Mohr–Coulomb clay has (both reductions divide cu by F).
+// Its flow (ψ = 0 on a criterion with a hint of friction) is non-associated: on the example's mesh,
+// refined at the footing's edge, the elastic iteration of trials that stand stalls at 100–250
+// times the tolerance, and the factor came out 8 % low (1.1807) while trials turned Newton with
+// the unsymmetric tangent away from that far.
 TEST(StrengthReduction, HoekBrownTrescaFootingHasPrandtlsFactor) {
     const FactorOfSafety f = test::strength_reduction_of(
         "prandtl-flexible-footing.json",
