@@ -33,10 +33,12 @@ run_with() {
   [ "$footing" = flexible ] && model=examples/prandtl-flexible-footing.json radius=0.3 grading=0.3
   local out="out/bench-prandtl-$build-$footing-$element-$size-$floor"
   # "shipped": the example's own mesh (refined at the footing's edge); a number: a uniform size
-  # along the footing with the refinement radius and grading the examples had before.
+  # along the footing with the refinement radius and grading the examples had before (and the
+  # rigid footing's block following the clay's size field, as it did).
   local mesh=()
   [ "$size" = shipped ] || mesh=(--set "/mesh/local=[{\"from\": [0, 0], \"to\": [2, 0], \"size\": $size, \"radius\": $radius}]"
                                  --set /mesh/grading="$grading" --set /mesh/size="$global")
+  [ "$size" = shipped ] || [ "$footing" = flexible ] || mesh+=(--set /regions/1/mesh_size=0)
   rm -rf "$out"
   /usr/bin/time -f '%U %S' -o "$out.time" "$binary" run "$model" --out "$out" --quiet "${sequence[@]}" \
     --set /mesh/element="\"$element\"" "${mesh[@]}" \

@@ -336,6 +336,9 @@ void check_geometry(Checker& c, const Model& m) {
         const std::string path = "/regions/" + std::to_string(i);
         if (r.boundary.size() < 3)
             c.error(path + "/boundary", "a region boundary needs at least 3 vertices (got " + std::to_string(r.boundary.size()) + ")");
+        if (!(r.mesh_size >= 0.0 && std::isfinite(r.mesh_size)))
+            c.error(path + "/mesh_size", "the region's mesh size must be positive (got " + num(r.mesh_size) +
+                                             " m; 0 or none: the model's size field)");
         for (std::size_t k = 0; k < r.boundary.size(); ++k) c.point(r.boundary[k], path + "/boundary/" + std::to_string(k));
         for (std::size_t h = 0; h < r.holes.size(); ++h) {
             const std::string hpath = path + "/holes/" + std::to_string(h);

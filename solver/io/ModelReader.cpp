@@ -447,7 +447,7 @@ void parse_geometry(Parser& p, const json& root, Model& m, const std::map<std::s
         const json& o = regions[i];
         Region r;
         if (p.is_object(o, path)) {
-            p.check_keys(o, path, {"name", "material", "boundary", "holes"});
+            p.check_keys(o, path, {"name", "material", "boundary", "holes", "mesh_size"});
             r.name = p.string(o, path, "name", "region " + std::to_string(i + 1));
             const std::string material = p.string(o, path, "material", std::nullopt);
             r.material = lookup(p, material_names, material, path + "/material", "material");
@@ -456,6 +456,7 @@ void parse_geometry(Parser& p, const json& root, Model& m, const std::map<std::s
             const json& holes = p.array(o, path, "holes");
             for (std::size_t h = 0; h < holes.size(); ++h)
                 r.holes.push_back(parse_ring(p, holes[h], path + "/holes/" + std::to_string(h)));
+            r.mesh_size = p.number(o, path, "mesh_size", 0.0);
         }
         m.regions.push_back(std::move(r));
     }

@@ -124,6 +124,7 @@ json to_json(const Model& m) {
             for (const Ring& h : r.holes) holes.push_back(ring(h));
             o["holes"] = std::move(holes);
         }
+        if (r.mesh_size > 0.0) o["mesh_size"] = r.mesh_size;
         regions.push_back(std::move(o));
     }
     root["regions"] = std::move(regions);

@@ -275,15 +275,20 @@ CrackTips crack_tips(const Block& block) {
 /// opening's square-root profile near the tip, and a short crack is never one element.
 constexpr double crack_tip_size_fraction = 0.1;
 
-/// The mesh controls of one block: the model's, finer towards the tips of its cracks.
-MeshControls block_controls(const Model& model, const SizeField& model_field, const CrackTips& tips) {
+/// The size field of one block: the model's, or its region's uniform size where the region has
+/// one (a stiff structure need not follow the refinement of the ground it stands on), finer
+/// towards the tips of its cracks.
+SizeField block_size_field(const Model& model, const Block& block, const SizeField& model_field, const CrackTips& tips) {
+    const double region_size =
+        block.region >= 0 && block.region < static_cast<int>(model.regions.size()) ? model.regions[block.region].mesh_size : 0.0;
     MeshControls controls = model.mesh;
+    if (region_size > 0.0) controls.local.clear();
     for (const auto& [at, length] : tips) {
         const Point2 tip{at.first, at.second};
         const double size = crack_tip_size_fraction * length;
-        if (size < model_field(tip)) controls.local.push_back({tip, tip, size, 0.0});
+        if (size < (region_size > 0.0 ? region_size : model_field(tip))) controls.local.push_back({tip, tip, size, 0.0});
     }
-    return controls;
+    return SizeField(controls, region_size > 0.0 ? region_size : model_field.global_size());
 }
 
 /// Blocks that need more triangles than this are seeded before refinement (below).
@@ -511,7 +516,7 @@ double estimate_triangle_count(const Model& model, const std::vector<Block>& blo
         for (const Ring& h : b.holes) add_ring(h);
         const double width = perimeter > 0.0 ? 4.0 * b.area / perimeter : 0.0;
         // Thousands of cracks make the mesh fine at their tips all over the block.
-        const SizeField field(block_controls(model, model_field, crack_tips(b)), model_field.global_size());
+        const SizeField field = block_size_field(model, b, model_field, crack_tips(b));
         const auto size_at = [&](const Point2& c) { return width > 0.0 ? std::min(field(c), width) : field(c); };
         constexpr int n = 24;
         const double dx = (box[2] - box[0]) / n, dy = (box[3] - box[1]) / n;
@@ -526,7 +531,7 @@ double estimate_triangle_count(const Model& model, const std::vector<Block>& blo
             }
         if (inside_cells > 0) count += b.area * sampled / inside_cells;
         else count += b.area / (area_per_h2 * std::pow(size_at(b.outer.front()), 2));
-        count += crack_gap_triangles(b, size_at, model_field.global_size(), area_per_h2);
+        count += crack_gap_triangles(b, size_at, field.global_size(), area_per_h2);
     }
     return count;
 }
@@ -547,13 +552,15 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
     const SizeField model_field(model.mesh, resolved_global_size(model));
     std::vector<double> uniform_sizes{model_field.global_size()};
     for (const LocalSize& l : model.mesh.local) uniform_sizes.push_back(l.size);
+    for (const Region& r : model.regions)
+        if (r.mesh_size > 0.0) uniform_sizes.push_back(r.mesh_size);
     const double smallest_size = *std::min_element(uniform_sizes.begin(), uniform_sizes.end());
 
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
         const Block& block = blocks[bi];
         // The size field of the block: the model's, finer towards the tips of its cracks.
         const CrackTips tips = crack_tips(block);
-        const SizeField field(block_controls(model, model_field, tips), model_field.global_size());
+        const SizeField field = block_size_field(model, block, model_field, tips);
         const SizeFieldCriteria criteria(model.mesh.min_angle, field);
         CDT cdt;
         insert_ring(cdt, block.outer);

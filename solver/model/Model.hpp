@@ -73,6 +73,9 @@ struct Region {
     int material = -1;  ///< index into Model::materials
     Ring boundary;
     std::vector<Ring> holes;
+    /// Element size inside the region (m), uniform: the model's size field (global size, local
+    /// refinements) does not reach into it; 0 = the model's size field.
+    double mesh_size = 0.0;
 };
 
 /// A joint trace: a straight segment or a polyline that cuts regions into blocks.

@@ -82,6 +82,50 @@ TEST(BlockMesher, LocalRefinementIsFinerNearItsPoint) {
     EXPECT_GT(far_area, 0.1);
 }
 
+// A region's own mesh size replaces the model's size field inside it: the rigid Prandtl footing
+// (0.5 m) does not follow the refinement of the clay at its edge (3 cm), and the clay's mesh is
+// the same as without it.
+TEST(BlockMesher, ARegionsMeshSizeReplacesTheModelsSizeFieldInside) {
+    const std::string file = mcdda::test::example_path("prandtl-footing.json");
+    const Preprocessed own = preprocess_file(file, {"/regions/1/mesh_size=0.5"});
+    const Preprocessed model = preprocess_file(file, {"/regions/1/mesh_size=0"});
+    ASSERT_TRUE(own.ok && model.ok) << all_messages(own.diagnostics) << all_messages(model.diagnostics);
+    expect_conforming(own);
+    const auto count = [](const Preprocessed& p, int region, double& shortest, double& longest) {
+        int n = 0;
+        shortest = 1e300;
+        longest = 0.0;
+        for (std::size_t t = 0; t < p.mesh.triangles.size(); ++t) {
+            if (p.blocks[p.mesh.triangle_block[t]].region != region) continue;
+            ++n;
+            for (int k = 0; k < 3; ++k) {
+                const Point2 &a = p.mesh.nodes[p.mesh.triangles[t][k]], &b = p.mesh.nodes[p.mesh.triangles[t][(k + 1) % 3]];
+                shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y));
+                longest = std::max(longest, std::hypot(a.x - b.x, a.y - b.y));
+            }
+        }
+        return n;
+    };
+    double shortest = 0.0, longest = 0.0, model_shortest = 0.0, model_longest = 0.0;
+    const int footing = count(own, 1, shortest, longest);
+    const int footing_before = count(model, 1, model_shortest, model_longest);
+    std::cout << "footing: " << footing << " triangles, edges " << shortest << " to " << longest << " m; with the model's size field "
+              << footing_before << ", edges " << model_shortest << " to " << model_longest << " m\n";
+    EXPECT_LE(longest, 0.5 * (1 + 1e-9));
+    EXPECT_GT(shortest, 0.1);        // not refined towards the footing's edge
+    EXPECT_LT(model_shortest, 0.05);  // as it is with the model's size field
+    EXPECT_LT(footing, footing_before / 2);
+    double clay_shortest = 0.0, clay_longest = 0.0, before_shortest = 0.0, before_longest = 0.0;
+    EXPECT_EQ(count(own, 0, clay_shortest, clay_longest), count(model, 0, before_shortest, before_longest));
+    EXPECT_EQ(clay_shortest, before_shortest);
+    // The estimate the mesher checks against /mesh/max_elements follows the region's size too:
+    // it drops by about the footing's triangles saved.
+    const double saved = estimate_triangle_count(model.model, model.blocks) - estimate_triangle_count(own.model, own.blocks);
+    std::cout << "estimate lower by " << saved << " triangles, the mesh by " << footing_before - footing << "\n";
+    EXPECT_GT(saved, 0.5 * (footing_before - footing));
+    EXPECT_LT(saved, 2.0 * (footing_before - footing));
+}
+
 TEST(BlockMesher, EveryExampleMeshesAtItsRequestedAngle) {
     for (const std::string& file : mcdda::test::example_files()) {
         const Preprocessed p = preprocess_file(file, {});

@@ -58,6 +58,7 @@ public:
             points(p + "/boundary", x.boundary, y.boundary);
             list(p + "/holes", x.holes, y.holes,
                  [this](const std::string& q, const Ring& r, const Ring& s) { points(q, r, s); });
+            eq(p + "/mesh_size", x.mesh_size, y.mesh_size);
         });
         list("/joints", a.joints, b.joints, [this](const std::string& p, const Joint& x, const Joint& y) {
             eq(p + "/name", x.name, y.name);

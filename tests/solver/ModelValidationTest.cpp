@@ -133,6 +133,7 @@ TEST(ModelValidation, JointSetPersistenceTraceLengthAndStagger) {
 TEST(ModelValidation, ControlsOutOfRange) {
     expect_error({"/mesh/min_angle=40"}, "/mesh/min_angle", "34°");
     expect_error({"/mesh/size=-1"}, "/mesh/size", "positive");
+    expect_error({"/regions/0/mesh_size=-0.5"}, "/regions/0/mesh_size", "the region's mesh size must be positive");
     expect_error({"/analysis={\"time_step\": 0}"}, "/analysis/time_step", "must be positive");
     expect_error({"/analysis={\"steps\": 0}"}, "/analysis/steps", "at least one step");
     expect_error({"/analysis={\"type\": \"dynamic\"}", "/materials/0/density=0"}, "/materials/0/density",

@@ -50,7 +50,7 @@ Model everything_model() {
       "regions": [{"name": "ground", "material": "rock",
                    "boundary": [[-10, -10], [10, -10], [10, 10], [-10, 10]],
                    "holes": [{"circle": {"center": [0, 0], "radius": 3, "segments": 32}}]},
-                  {"material": "steel", "boundary": [[10, -10], [12, -10],
+                  {"material": "steel", "mesh_size": 0.25, "boundary": [[10, -10], [12, -10],
                     {"arc": {"center": [11, 10], "radius": 1, "start": 0, "end": 180, "segments": 7}}]}],
       "joints": [{"name": "fault", "points": [[-10, 0.1], [0.3, 5], [10, 7.77]], "joint_material": "smooth"},
                  {"points": [[-5, -10], [-5, 10]]}],

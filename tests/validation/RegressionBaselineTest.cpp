@@ -27,8 +27,9 @@
 // times the tolerance (its excavation's first try, stalled at 259 times, used to converge in a
 // polish of 5 iterations; now its load is halved: the measurement points moved by up to 0.07 %,
 // 9 µm of 12.1 mm, the plastic area not at all); the two Prandtl cases when the rigid footing's
-// example was meshed afresh, refined at the footing's edge where the stress is singular (534
-// triangles instead of 2,667: a new mesh, so every recorded value moved).
+// example was meshed afresh, refined at the footing's edge where the stress is singular, its
+// footing block meshed at 1 m by the region's own mesh size (412 triangles instead of 2,667: a new
+// mesh, so every recorded value moved).
 // After a deliberate change, rerun with MCDDA_RECORD_BASELINE=1 and state the reason in the commit.
 //
 //   MCDDA_RECORD_BASELINE=1 ./mcdda_validation_tests --gtest_filter='*RegressionBaseline*'
