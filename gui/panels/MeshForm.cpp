@@ -82,6 +82,18 @@ MeshForm::MeshForm(ModelDocument* document, QWidget* parent) : QWidget(parent), 
     column->addWidget(new QLabel(tr("Local refinements"), this));
     column->addWidget(local_);
 
+    regions_ = new QTableWidget(0, 2, this);
+    regions_->setObjectName(QStringLiteral("meshRegions"));
+    regions_->setHorizontalHeaderLabels({tr("Region"), tr("Size [m]")});
+    regions_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    regions_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    regions_->setMinimumHeight(80);
+    regions_->setToolTip(tr("A region's own element size, uniform inside it: the element size and the local "
+                            "refinements above do not reach into it (a stiff footing or lining need not follow "
+                            "the refinement of the ground it stands on). Blank: the model's sizes."));
+    column->addWidget(new QLabel(tr("Element size per region"), this));
+    column->addWidget(regions_);
+
     auto* apply = new QPushButton(tr("Apply"), this);
     apply->setObjectName(QStringLiteral("meshApply"));
     connect(apply, &QPushButton::clicked, this, &MeshForm::applyMesh);
@@ -120,6 +132,15 @@ void MeshForm::refresh()
         local_->setItem(row, 1, new QTableWidgetItem(cell_text(l.size)));
         local_->setItem(row, 2, new QTableWidgetItem(cell_text(l.radius)));
     }
+    const std::vector<Region>& regions = document_->model().regions;
+    regions_->setRowCount(static_cast<int>(regions.size()));
+    for (std::size_t i = 0; i < regions.size(); ++i) {
+        auto* name = new QTableWidgetItem(QString::fromStdString(regions[i].name));
+        name->setFlags(name->flags() & ~Qt::ItemIsEditable);  // named in the Model tree
+        regions_->setItem(static_cast<int>(i), 0, name);
+        regions_->setItem(static_cast<int>(i), 1,
+                          new QTableWidgetItem(regions[i].mesh_size > 0.0 ? cell_text(regions[i].mesh_size) : QString()));
+    }
     loading_ = false;
 }
 
@@ -147,16 +168,43 @@ bool MeshForm::applyMesh()
             }
         }
     }
-    if (same(c, old)) return true;
+    std::vector<double> region_sizes;
+    for (int r = 0; r < regions_->rowCount() && static_cast<std::size_t>(r) < m.regions.size(); ++r) {
+        const QTableWidgetItem* item = regions_->item(r, 1);
+        const QString text = item ? item->text().trimmed() : QString();
+        double size = 0.0;  // blank: the model's size field
+        if (!text.isEmpty() && !form::cell_value(text, &size)) {
+            set_status(status_,
+                       tr("Not applied: the element size of %1: \"%2\" is not a number")
+                           .arg(QString::fromStdString(m.regions[static_cast<std::size_t>(r)].name), text),
+                       true);
+            return false;
+        }
+        region_sizes.push_back(size);
+    }
+    std::vector<std::size_t> changed_regions;
+    for (std::size_t r = 0; r < region_sizes.size(); ++r)
+        if (region_sizes[r] != m.regions[r].mesh_size) changed_regions.push_back(r);
+    if (same(c, old) && changed_regions.empty()) return true;
     Model candidate = m;
     candidate.mesh = c;
-    const QString reason = PropertyEditor::refusal(candidate, "/mesh");
+    for (std::size_t r : changed_regions) candidate.regions[r].mesh_size = region_sizes[r];
+    QString reason = PropertyEditor::refusal(candidate, "/mesh");
+    for (std::size_t r = 0; reason.isEmpty() && r < changed_regions.size(); ++r)
+        reason = PropertyEditor::refusal(candidate, "/regions/" + std::to_string(changed_regions[r]) + "/mesh_size");
     if (!reason.isEmpty()) {
         set_status(status_, tr("Not applied: %1").arg(reason), true);
         return false;
     }
-    document_->undoStack()->push(new SetValueCommand<MeshControls>(
-        document_, [](Model& model) -> MeshControls& { return model.mesh; }, c, tr("Change mesh controls")));
+    // One undoable change, however many of the controls it touches.
+    auto* change = new QUndoCommand(tr("Change mesh controls"));
+    if (!same(c, old))
+        new SetValueCommand<MeshControls>(document_, [](Model& model) -> MeshControls& { return model.mesh; }, c,
+                                          tr("Change mesh controls"), change);
+    for (std::size_t r : changed_regions)
+        new SetValueCommand<double>(document_, [r](Model& model) -> double& { return model.regions[r].mesh_size; },
+                                    region_sizes[r], tr("Change the element size of a region"), change);
+    document_->undoStack()->push(change);
     set_status(status_, tr("Applied."), false);
     return true;
 }

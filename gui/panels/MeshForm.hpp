@@ -2,7 +2,8 @@
 /// \file MeshForm.hpp
 /// The Mesh tab of the Properties dock: the global element size (m; 0 = automatic, 1/20 of the
 /// model's diagonal), the minimum angle (shown in degrees, stored in radians), the grading, the
-/// element limit, and the size and radius of each local refinement. Apply checks the changed
+/// element limit, the size and radius of each local refinement, and each region's own element
+/// size (blank: the model's size field). Apply checks the changed
 /// model with validate_model() and either refuses with the validator's reason or applies all
 /// the mesh controls as one undoable command (the model is then meshed again).
 
@@ -25,6 +26,9 @@ public:
 
     /// One row per local refinement: where (read-only), size (m), radius (m).
     QTableWidget* localRefinements() const { return local_; }
+    /// One row per region: its name (read-only) and its own element size (m; blank = the model's
+    /// size field, Region::mesh_size).
+    QTableWidget* regionSizes() const { return regions_; }
     /// The status line: the reason of a refusal, or what was applied.
     QString meshStatus() const;
 
@@ -43,6 +47,7 @@ private:
     QDoubleSpinBox* grading_ = nullptr;
     QDoubleSpinBox* max_elements_ = nullptr;
     QTableWidget* local_ = nullptr;
+    QTableWidget* regions_ = nullptr;
     QLabel* status_ = nullptr;
 };
 

@@ -75,6 +75,7 @@ private slots:
     void deletingTableInUseIsRefused();
     void appliesGravity();
     void meshSizeRemeshes();
+    void regionSizeRemeshesThatRegion();
     void minimumAngleStoredInRadians();
     void editsLocalRefinement();
 };
@@ -357,6 +358,48 @@ void LoadMeshFormTest::meshSizeRemeshes()
     QCOMPARE(doc->model().mesh.size, 0.0);
     QCOMPARE(size->text(), QStringLiteral("automatic"));
     QTRY_VERIFY(settled(*window) && window->modelView()->scene()->model.mesh.size == 0.0);
+    QCOMPARE(window->modelView()->scene()->statistics.elements, automatic);
+}
+
+// A region's own element size, typed in the Mesh tab's region table: applied as one undoable
+// command, the view meshes the region coarser; a negative size or a word is refused with the
+// reason, and nothing changes.
+void LoadMeshFormTest::regionSizeRemeshesThatRegion()
+{
+    auto window = square_window();
+    QVERIFY(window);
+    QTRY_VERIFY2(settled(*window), qPrintable(window->messages()));
+    gui::ModelDocument* doc = window->document();
+    MeshForm* form = window->propertyEditor()->meshForm();
+    QTableWidget* regions = form->regionSizes();
+    QCOMPARE(regions->rowCount(), static_cast<int>(doc->model().regions.size()));
+    QCOMPARE(regions->item(0, 0)->text(), QString::fromStdString(doc->model().regions[0].name));
+    QVERIFY(regions->item(0, 1)->text().isEmpty());  // the model's size field
+    const int automatic = window->modelView()->scene()->statistics.elements;
+    const int commands = doc->undoStack()->count();
+
+    regions->item(0, 1)->setText(QStringLiteral("-1"));
+    QVERIFY(!form->applyMesh());
+    QVERIFY2(form->meshStatus().contains(QStringLiteral("mesh size must be positive")), qPrintable(form->meshStatus()));
+    regions->item(0, 1)->setText(QStringLiteral("coarse"));
+    QVERIFY(!form->applyMesh());
+    QVERIFY2(form->meshStatus().contains(QStringLiteral("is not a number")), qPrintable(form->meshStatus()));
+    QCOMPARE(doc->model().regions[0].mesh_size, 0.0);
+    QCOMPARE(doc->undoStack()->count(), commands);
+
+    regions->item(0, 1)->setText(QStringLiteral("2.5"));
+    QVERIFY2(form->applyMesh(), qPrintable(form->meshStatus()));
+    QCOMPARE(doc->model().regions[0].mesh_size, 2.5);
+    QCOMPARE(doc->undoStack()->count(), commands + 1);
+    QTRY_VERIFY2(settled(*window) && window->modelView()->scene()->model.regions[0].mesh_size == 2.5,
+                 qPrintable(window->messages()));
+    const int coarse = window->modelView()->scene()->statistics.elements;
+    QVERIFY2(coarse < automatic, qPrintable(QStringLiteral("%1 vs %2").arg(coarse).arg(automatic)));
+
+    doc->undoStack()->undo();
+    QCOMPARE(doc->model().regions[0].mesh_size, 0.0);
+    QVERIFY(regions->item(0, 1)->text().isEmpty());
+    QTRY_VERIFY(settled(*window) && window->modelView()->scene()->model.regions[0].mesh_size == 0.0);
     QCOMPARE(window->modelView()->scene()->statistics.elements, automatic);
 }
 
