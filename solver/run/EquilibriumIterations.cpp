@@ -258,7 +258,7 @@ std::optional<Simulation::LineSearch> Simulation::energy_line_search(const Eigen
 
 ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, const Eigen::VectorXd& d,
                                                         double load_scale, double last_correction, bool newton,
-                                                        bool plain) const {
+                                                        bool plain, bool flow_counts) const {
     ConvergenceMonitor::Iteration it;
     it.k = k;
     it.norm = b.norm;
@@ -275,6 +275,7 @@ ConvergenceMonitor::Iteration Simulation::iteration_of(int k, const Balance& b, 
     // small-strain analysis, the increment's elsewhere.
     it.total = is_equilibrium_only();
     it.largest = it.total ? (state_.displacement + d).cwiseAbs().maxCoeff() : increment;
+    it.flow = flow_counts ? increment : 0.0;
     it.yielding = b.evaluation.yielding;
     it.newton = newton;
     return it;
@@ -309,12 +310,13 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
                               : balance_at(d, loads, contacts, bolts, matrix);
         searched_balance.reset();
         attempt.yielding = b.evaluation.yielding;
-        ConvergenceMonitor::Iteration it = iteration_of(k, b, d, loads_in_play, last_correction, newton, last_plain);
-        // (Not in strength reduction trials: counting a trial's flow as progress let trials just
-        // above the factor flow on until they converged, and the homogeneous slope's search took
-        // 10 trials to 1.5538 instead of 6 to 1.5469; a trial's verdict is resolved to the
-        // search's 0.5 %.)
-        if (last_minimised_energy && !model_.analysis.strength_reduction) it.flow = d.cwiseAbs().maxCoeff();
+        // The flow of a correction that minimised the energy counts as progress; not in strength
+        // reduction trials: there it let trials just above the factor flow on until they
+        // converged, and the homogeneous slope's search took 10 trials to 1.5538 instead of 6 to
+        // 1.5469 (a trial's verdict is resolved to the search's 0.5 %).
+        const ConvergenceMonitor::Iteration it =
+            iteration_of(k, b, d, loads_in_play, last_correction, newton, last_plain,
+                         last_minimised_energy && !model_.analysis.strength_reduction);
         const bool converged = monitor.converged(it, elastic_matrix);
         if (converged && monitor.mechanism_when_converged(it)) {
             attempt.why = monitor.why(ConvergenceMonitor::Verdict::Mechanism, it);
@@ -400,10 +402,12 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         // converge while the largest nodal force may rise on the way.
         const bool search = newton && (it.yielding > 0 || matrix == ElementMatrix::Tangent);
         const bool plain_newton = is_equilibrium_only() && !contacts.any_closed() && !monitor.polishing();
+        // (A plain Newton iteration that does not minimise the energy has no symmetric tangent,
+        // so it is not Newton at all outside a polish, and searches nothing.)
         Merit merit = Merit::LargestForce;
         if (minimises_energy(contacts, monitor.polishing()))
             merit = Merit::Energy;
-        else if (plain_newton || monitor.polishing())
+        else if (monitor.polishing())
             merit = Merit::SumOfSquares;
         LineSearch searched =
             search ? line_search(d, delta, loads, contacts, bolts, b, tolerance, it.scale, merit) : LineSearch{};

@@ -423,9 +423,11 @@ private:
     Balance balance_at(const Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
                        const std::vector<BoltLink>& bolts, ElementMatrix matrix);
     Balance balance_of(Eigen::VectorXd residual, const ElementAssembly::Evaluation& evaluation);
-    /// An iteration's numbers for the ConvergenceMonitor.
+    /// An iteration's numbers for the ConvergenceMonitor; with `flow_counts` its flow (the
+    /// increment's largest displacement) counts as progress (Iteration::flow).
     ConvergenceMonitor::Iteration iteration_of(int k, const Balance& b, const Eigen::VectorXd& d, double load_scale,
-                                               double last_correction, bool newton, bool plain) const;
+                                               double last_correction, bool newton, bool plain,
+                                               bool flow_counts) const;
     /// Equilibrium iterations for fixed contact states (see the file comment); true when
     /// converged, d updated in place.
     bool equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, const ContactSet& contacts,
