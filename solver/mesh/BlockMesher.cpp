@@ -279,8 +279,19 @@ constexpr double crack_tip_size_fraction = 0.1;
 /// one (a stiff structure need not follow the refinement of the ground it stands on), finer
 /// towards the tips of its cracks.
 SizeField block_size_field(const Model& model, const Block& block, const SizeField& model_field, const CrackTips& tips) {
-    const double region_size =
+    double region_size =
         block.region >= 0 && block.region < static_cast<int>(model.regions.size()) ? model.regions[block.region].mesh_size : 0.0;
+    if (region_size > 0.0) {
+        // Not beyond the block's extent: a size a thousand times the block's edges would leave
+        // its triangles unrefined for their shape (the refinement's rule for faces far below the
+        // size asked, SizeFieldCriteria), below the minimum angle.
+        double box[4] = {1e300, 1e300, -1e300, -1e300};
+        for (const Point2& p : block.outer) {
+            box[0] = std::min(box[0], p.x); box[1] = std::min(box[1], p.y);
+            box[2] = std::max(box[2], p.x); box[3] = std::max(box[3], p.y);
+        }
+        region_size = std::min(region_size, std::hypot(box[2] - box[0], box[3] - box[1]));
+    }
     MeshControls controls = model.mesh;
     if (region_size > 0.0) controls.local.clear();
     for (const auto& [at, length] : tips) {

@@ -124,6 +124,10 @@ TEST(BlockMesher, ARegionsMeshSizeReplacesTheModelsSizeFieldInside) {
     std::cout << "estimate lower by " << saved << " triangles, the mesh by " << footing_before - footing << "\n";
     EXPECT_GT(saved, 0.5 * (footing_before - footing));
     EXPECT_LT(saved, 2.0 * (footing_before - footing));
+    // A size far beyond the block ("as coarse as it gets") still meets the minimum angle.
+    const Preprocessed huge = preprocess_file(file, {"/regions/1/mesh_size=1e300"});
+    ASSERT_TRUE(huge.ok) << all_messages(huge.diagnostics);
+    EXPECT_GE(huge.statistics.min_angle_deg, huge.model.mesh.min_angle * 180.0 / M_PI - 1e-9);
 }
 
 TEST(BlockMesher, EveryExampleMeshesAtItsRequestedAngle) {
