@@ -569,7 +569,8 @@ Mesh mesh_blocks(const Model& model, const std::vector<Block>& blocks, std::vect
 
     for (std::size_t bi = 0; bi < blocks.size(); ++bi) {
         const Block& block = blocks[bi];
-        // The size field of the block: the model's, finer towards the tips of its cracks.
+        // The size field of the block: the model's or its region's, finer towards the tips of its
+        // cracks.
         const CrackTips tips = crack_tips(block);
         const SizeField field = block_size_field(model, block, model_field, tips);
         const SizeFieldCriteria criteria(model.mesh.min_angle, field);
