@@ -111,7 +111,7 @@ ConvergenceMonitor::Verdict ConvergenceMonitor::assess(const Iteration& it) {
     // mechanism too (mechanism_when_converged). Letting iterates pass the limit on their way,
     // up to ten times it, changed no verdict on 192 refined footings and cost 15–50 % more
     // factorisations (docs/benchmarks.md, "Newton minimising the energy under a load").
-    const bool mechanism = it.yielding > 0 && it.largest > mechanism_displacement_;
+    const bool mechanism = beyond_mechanism_limit(it);
     const bool capped = polishing_ ? it.k - polish_from_ >= polish_iterations : it.k >= max_iterations_;
     if (diverging) return Verdict::Diverging;
     if (mechanism) return Verdict::Mechanism;

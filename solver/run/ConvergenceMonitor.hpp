@@ -57,9 +57,7 @@ public:
 
     /// A small-strain increment (`total`) that converged with a displacement beyond the
     /// mechanism limit, material yielding: not carried, a mechanism (see assess).
-    bool mechanism_when_converged(const Iteration& it) const {
-        return it.total && it.yielding > 0 && it.largest > mechanism_displacement_;
-    }
+    bool mechanism_when_converged(const Iteration& it) const { return it.total && beyond_mechanism_limit(it); }
 
     enum class Verdict { Continue, Diverging, Stalled, Mechanism, Capped };
     /// Records the iteration and judges it (see the rules in the .cpp).
@@ -97,6 +95,10 @@ private:
     double tolerance_;
     int max_iterations_;
     double mechanism_displacement_;
+    /// Material yielding and the displacement the mechanism rule weighs beyond its limit.
+    bool beyond_mechanism_limit(const Iteration& it) const {
+        return it.yielding > 0 && it.largest > mechanism_displacement_;
+    }
     double first_norm_ = 0.0;
     double best_norm_, best_correction_;
     double flow_mark_ = 0.0;  ///< the flow when it last doubled
