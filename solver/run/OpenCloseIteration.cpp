@@ -164,6 +164,7 @@ void Simulation::open_close(Eigen::VectorXd& d, const Eigen::VectorXd& loads, co
         attempt.may_stop_unsettled = equilibrium_only && iterations < max_iterations;
         if (!equilibrate_or_fail(d, loads, contacts, factor_valid, attempt)) return;
         attempt.d = d;
+        attempt.motion = std::max(attempt.motion, largest_increment(d));
         attempt.residual -= shift;  // reactions balance the loads actually applied
         // A bolt pulled beyond its strength breaks, and the try goes on without it.
         if (break_overloaded_bolts(d, attempt)) {

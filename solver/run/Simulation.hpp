@@ -272,6 +272,9 @@ private:
         int open_close_iterations = 0;
         int iterations = 0;  ///< equilibrium iterations
         int yielding = 0;
+        /// Largest displacement the try's converged solves reached: what a smaller Δt is to
+        /// reduce where contacts do not settle (Simulation::time_step_futile).
+        double motion = 0.0;
         std::string why;     ///< for failures
         /// In: equilibrate may return once the force balances, before the displacement settles,
         /// when the contact states would then change (the open–close loop goes on from there).
@@ -348,7 +351,16 @@ private:
         double increment = 1.0;    ///< of the step's load, this try
         double failed_end = -1.0;  ///< load position where the last try failed (negative: none)
         int time_step_cuts = 0;
+        /// Motion of the try whose contacts did not settle and that cut Δt last, at this load
+        /// increment (0: none, or another failure since).
+        double cut_motion = 0.0;
+        /// A Δt cut at this step left the motion as it was: failures are load questions for the
+        /// rest of the step.
+        bool time_step_futile = false;
     };
+    /// Whether a smaller Δt is no answer to the `attempt` whose contacts did not settle: the Δt
+    /// cut after such a try before it did not make it move less. Records the motion in `steps`.
+    static bool time_step_futile(const Attempt& attempt, LoadSteps& steps);
     Attempt try_static_increment(double increment);
     void cut_static_time_step(const Attempt& attempt, double largest, StepReport& report, LoadSteps& steps);
     /// Commits an increment; true when it completed the step.
