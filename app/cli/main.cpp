@@ -8,11 +8,13 @@
 #include "VirtualDisplay.hpp"
 #include "Version.hpp"
 #include "linalg/BlasInfo.hpp"
+#include "linalg/FreedMemoryReuse.hpp"
 
 #include <iostream>
 
 int main(int argc, char** argv) {
     using namespace mcdda::cli;
+    mcdda::reuse_freed_memory();  // before any thread starts
     const std::vector<std::string> args(argv + 1, argv + argc);
     std::string error;
     const auto request = parse_command_line(args, error);

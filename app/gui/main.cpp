@@ -4,6 +4,7 @@
 #include "Language.hpp"
 #include "MainWindow.hpp"
 #include "Version.hpp"
+#include "linalg/FreedMemoryReuse.hpp"
 #include "run/RunOutput.hpp"
 
 #include <QApplication>
@@ -82,6 +83,7 @@ void install_translations(QCoreApplication& app)
 
 int main(int argc, char** argv)
 {
+    mcdda::reuse_freed_memory();  // before any thread starts: the solver's thread shares the heap
     if (wants_text_only(argc, argv)) {
         QCoreApplication app(argc, argv);
         set_identity();

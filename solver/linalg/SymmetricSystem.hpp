@@ -12,6 +12,7 @@
 /// the whole matrix and factorises it by LU (UMFPACK), keeping UMFPACK's symbolic analysis
 /// while the pattern is unchanged.
 
+#include "linalg/FreedMemoryReuse.hpp"
 #include "linalg/LowRankCorrection.hpp"
 
 #include <Eigen/Sparse>
@@ -124,6 +125,8 @@ public:
     const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
 private:
+    /// First member, so the last destroyed: the factors' memory is free when it trims the heap.
+    FreedMemoryReuse memory_reuse_;
     int equations_ = 0;
     Eigen::SparseMatrix<double> matrix_;   ///< lower triangle, CSC
     std::vector<int> group_size_;
