@@ -35,6 +35,12 @@ SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()),
     // reference BLAS and on OpenBLAS alike; from about 20k six-node equations on both switches
     // pick the supernodal method (docs/plasticity.md).
     factor_->llt.cholmod().supernodal_switch = 300;
+    // No iterative refinement of LU solves: the equilibrium iterations refine the solution
+    // themselves (each solves for the out-of-balance force of the last), and UMFPACK's check of
+    // every solve's backward error (a product with the matrix and an estimate) took a fifth to a
+    // third of the solve time of Salençon's tunnel with ψ = 0 while it refined nothing there (the
+    // same results to the last bit; docs/benchmarks.md, "LU solves without iterative refinement").
+    lu_->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
     set_try_nested_dissection(true);
 }
 
