@@ -23,6 +23,13 @@ void Progress::update(const StepReport& r) {
     // Static DDA: the increments that relaxed the step to equilibrium at its loads.
     const std::string relaxed =
         r.relaxation_increments > 0 ? " + " + std::to_string(r.relaxation_increments) + " relaxing" : std::string();
+    // A static step that started in equilibrium under loads it does not change had nothing to do.
+    char work[120];
+    if (r.load_increments == 0)
+        std::snprintf(work, sizeof work, "in equilibrium, loads unchanged: nothing to solve");
+    else
+        std::snprintf(work, sizeof work, "equilibrium iterations %d in %d load increment%s%s", r.plastic_iterations,
+                      r.load_increments, r.load_increments == 1 ? "" : "s", relaxed.c_str());
     const int width = 24;
     const int filled = total_ > 0 ? width * r.step / total_ : width;
     char bar[width + 1];
@@ -30,10 +37,9 @@ void Progress::update(const StepReport& r) {
     bar[width] = '\0';
     std::snprintf(line, sizeof line,
                   "[%s] step %d/%d  t=%.4g s  dt=%.3g s  contacts open/sliding/locked %d/%d/%d  open-close %d  "
-                  "equilibrium iterations %d in %d load increment%s%s  yielding %d  unbalanced %.2e",
-                  bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations,
-                  r.plastic_iterations, r.load_increments, r.load_increments == 1 ? "" : "s", relaxed.c_str(), r.yielding,
-                  r.unbalanced_ratio);
+                  "%s  yielding %d  unbalanced %.2e",
+                  bar, r.step, total_, r.time, r.time_step, r.open, r.sliding, r.locked, r.open_close_iterations, work,
+                  r.yielding, r.unbalanced_ratio);
     if (terminal_) {
         if (now - last_draw_ < std::chrono::milliseconds(100) && r.step != total_) return;
         std::fprintf(stderr, "\r%s\033[K", line);

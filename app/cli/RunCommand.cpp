@@ -47,7 +47,11 @@ void print_timings(const RunTimings& t, int steps) {
                                            " flops per Cholesky factorization")
               << "\n"
               << "equilibrium iterations " << t.iterations << " (at most " << t.max_iterations << " in a step), "
-              << t.load_cuts << " load increments halved\n"
+              << t.load_cuts << " load increments halved"
+              << (t.steps_at_rest > 0 ? "; " + std::to_string(t.steps_at_rest) +
+                                            " steps in equilibrium at unchanged loads, nothing to solve"
+                                      : std::string())
+              << "\n"
               << "threads " << thread_count() << " (element loops and contact search)\n"
               << "CPU time of the process " << static_cast<double>(std::clock()) / CLOCKS_PER_SEC << " s\n";
     if (steps > 0 && t.factorizations > 0)

@@ -405,7 +405,8 @@ void add_timings(const Simulation& sim, nlohmann::json& j) {
     j["iterations"] = {{"total", t.iterations},
                        {"per_step", steps > 0 ? static_cast<double>(t.iterations) / steps : 0.0},
                        {"max_per_step", t.max_iterations},
-                       {"load_cuts", t.load_cuts}};
+                       {"load_cuts", t.load_cuts},
+                       {"steps_at_rest", t.steps_at_rest}};
 }
 
 /// The collapse load lies between the last load carried and the first not carried.

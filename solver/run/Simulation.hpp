@@ -62,6 +62,7 @@ struct RunTimings {
     int iterations = 0;        ///< equilibrium iterations of all accepted steps
     int max_iterations = 0;    ///< the most in one accepted step
     int load_cuts = 0;         ///< load increments halved (static)
+    int steps_at_rest = 0;     ///< static steps in equilibrium at unchanged loads: nothing solved
     std::string ordering;             ///< of the Cholesky factor (SymmetricSystem::ordering)
     double factorization_flops = 0.0;  ///< of one Cholesky factorisation with it
 };
@@ -367,6 +368,11 @@ private:
     bool accept_static(const Attempt& attempt, double largest, double dt, StepReport& report, LoadSteps& steps);
     /// Static DDA (deformed geometry): settles the state at the step's loads (see StaticStep.cpp).
     void relax(StepReport& report);
+    /// The next static step's loads are those of the state reached and it is in equilibrium
+    /// under them, so the step has nothing to do (see StaticStep.cpp).
+    bool at_rest_under_unchanged_loads();
+    /// Completes such a step without a try.
+    StepReport hold_static_step();
     /// Largest nodal displacement of increments d.
     static double largest_increment(const Eigen::VectorXd& d);
     /// On the updated shape (`"geometry": "updated"`): the first active element that the

@@ -42,6 +42,7 @@ RunTimings difference(const RunTimings& t, const RunTimings& before) {
     d.iterations = t.iterations - before.iterations;
     d.max_iterations = t.max_iterations;
     d.load_cuts = t.load_cuts - before.load_cuts;
+    d.steps_at_rest = t.steps_at_rest - before.steps_at_rest;
     d.ordering = t.ordering;
     d.factorization_flops = t.factorization_flops;
     return d;
@@ -94,6 +95,7 @@ void StrengthReductionSearch::add_timings(const RunTimings& t) {
     timings_.iterations += t.iterations;
     timings_.max_iterations = std::max(timings_.max_iterations, t.max_iterations);
     timings_.load_cuts += t.load_cuts;
+    timings_.steps_at_rest += t.steps_at_rest;
     timings_.ordering = t.ordering;
     timings_.factorization_flops = t.factorization_flops;
 }

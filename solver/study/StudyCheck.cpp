@@ -66,7 +66,7 @@ std::vector<std::pair<std::string, std::size_t>> summary_patterns(const Model& m
     for (const char* key : {"assembly", "factorization", "solve", "contact", "plasticity", "total"})
         p.push_back({std::string("/timing/") + key, 0});
     for (const char* key : {"matrices", "iterations"}) p.push_back({std::string("/reused_factors/") + key, 0});
-    for (const char* key : {"total", "per_step", "max_per_step", "load_cuts"})
+    for (const char* key : {"total", "per_step", "max_per_step", "load_cuts", "steps_at_rest"})
         p.push_back({std::string("/iterations/") + key, 0});
     for (const char* key : {"nodes", "elements", "blocks"}) p.push_back({std::string("/model/") + key, 0});
     for (const char* side : {"carried", "not_carried"}) {

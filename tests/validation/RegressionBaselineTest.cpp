@@ -34,7 +34,13 @@
 // moved by 1.8e-12 m); Salençon when LU solves stopped being refined by UMFPACK (the equilibrium
 // iterations refine them): every recorded value moved by less than 6e-13 relative, and one
 // element of 13,415 whose stress sits on the yield surface counts as yielded before instead of
-// yielding now (2,606 and 3,229 instead of 2,607 and 3,228).
+// yielding now (2,606 and 3,229 instead of 2,607 and 3,228); Kirsch, Lavarak and Salençon when a
+// static step whose loads do not change, from a state within the equilibrium tolerance, began to
+// solve nothing (their later steps used to iterate on from that state: Kirsch's displacements
+// moved by up to 1.4e-4 of the largest, within the tolerance of 1e-4 its first step relaxed to,
+// Lavarak's by about 1e-6 relative; the 3,229 elements of Salençon's that its third step counted
+// as yielded before stay yielding, as its second step left them: nothing unloads in a step that
+// does not move).
 // After a deliberate change, rerun with MCDDA_RECORD_BASELINE=1 and state the reason in the commit.
 //
 //   MCDDA_RECORD_BASELINE=1 ./mcdda_validation_tests --gtest_filter='*RegressionBaseline*'

@@ -154,11 +154,15 @@ TEST(Bolts, BrokenBoltLetsTheBlockFallFreely) {
     EXPECT_NEAR(fall, free_fall, 0.01 * free_fall);
 }
 
-TEST(Equilibrium, KirschReachesARatioBelow1e5AndTheSlidingWedgeIsReportedUnbalanced) {
+// The Kirsch plate (elastic, static DDA) relaxes in its first step to within the equilibrium
+// iterations' tolerance; its later steps, at the same loads, have nothing to do and leave it there
+// (they used to take it on to 1e-15, one more solve each).
+TEST(Equilibrium, KirschEndsWithinTheToleranceAndTheSlidingWedgeIsReportedUnbalanced) {
     auto kirsch = test::run_example("kirsch.json");
     ASSERT_TRUE(kirsch.simulation);
     std::cout << "Kirsch: unbalanced-force ratio " << kirsch.simulation->state().unbalanced_ratio << "\n";
-    EXPECT_LT(kirsch.simulation->state().unbalanced_ratio, 1e-5);
+    EXPECT_LE(kirsch.simulation->state().unbalanced_ratio, kirsch.simulation->analysis().plastic_tolerance);
+    EXPECT_GT(kirsch.simulation->state().step, 1);
 
     const Preprocessed p = preprocess_file(std::string(MCDDA_EXAMPLES_DIR) + "/slope-wedge.json", {});
     ASSERT_TRUE(p.ok);
