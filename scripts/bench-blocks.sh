@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Ten thousand blocks: the rock mass of scripts/bench-run.sh with both joint sets at 0.4 m
-# (10,201 blocks, 68,702 six-node elements, 231,193 nodes, about 240,000 contacts) under
+# (10,201 blocks, 68,732 six-node elements, about 240,000 contacts) under
 # gravity, in-situ stress and a constant overburden. Prints mcdda run --profile: time per step,
 # factorisations, CPU time of the process.
 # Usage: bash scripts/bench-blocks.sh [STEPS] [mcdda run options...]   (default 20 steps)
