@@ -322,13 +322,14 @@ void Simulation::commit(const Eigen::VectorXd& d, double dt, const std::vector<C
     }
 }
 
-void Simulation::finish_report(StepReport& report, double largest, const Eigen::VectorXd& residual) {
+void Simulation::finish_report(StepReport& report, double largest, const Eigen::VectorXd& residual,
+                               std::optional<double> ratio) {
     // A small-strain static step's converged residual is the out-of-balance force of the state
     // reached already (no mass term, loads and elements on the undeformed shape), as the
     // iterations judged it; otherwise the state is evaluated once more without the inertia that
     // balanced it.
     const bool converged = is_equilibrium_only() && residual.size() == state_.displacement.size();
-    state_.unbalanced_ratio = unbalanced_ratio(converged ? &residual : nullptr);
+    state_.unbalanced_ratio = ratio ? *ratio : unbalanced_ratio(converged ? &residual : nullptr);
     report.unbalanced_ratio = state_.unbalanced_ratio;
     report.stage = stage_;
     StageRecord& record = stages_[stage_];
@@ -501,7 +502,7 @@ StepReport Simulation::advance() {
         if (stage_complete()) begin_stage(stage_ + 1);
         report = model_.analysis.kind == AnalysisSettings::Kind::Static ? advance_static() : advance_dynamic();
     } catch (const PlasticCollapse& e) {
-        collapse_ = CollapseBracket{e.carried, e.not_carried};
+        collapse_ = CollapseBracket{e.carried, e.not_carried, e.motion};
         timings_.total += seconds_since(start);
         record_solver_counts();
         throw;

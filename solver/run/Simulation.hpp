@@ -114,10 +114,13 @@ struct SimulationState {
 /// The equilibrium iterations of a step did not converge even for the smallest load increment:
 /// the model cannot carry the load. The state stays at the last load carried.
 struct PlasticCollapse : std::runtime_error {
-    PlasticCollapse(const std::string& what, double carried_at, double failed_at)
-        : std::runtime_error(what), carried(carried_at), not_carried(failed_at) {}
+    PlasticCollapse(const std::string& what, double carried_at, double failed_at, Eigen::VectorXd failed_motion = {})
+        : std::runtime_error(what), carried(carried_at), not_carried(failed_at), motion(std::move(failed_motion)) {}
     double carried = 0.0;      ///< load position (steps, fractional) of the last state carried
     double not_carried = 0.0;  ///< the smallest position tried beyond it that could not be carried
+    /// Where the last try that failed went from the state carried (2 per node; empty when its
+    /// matrix was singular): the motion of the mechanism that would not come to rest.
+    Eigen::VectorXd motion;
 };
 
 /// A stop was requested (Ctrl-C, a batch system's SIGTERM, Cancel) while a step was being solved:
@@ -217,6 +220,9 @@ public:
     const std::vector<StageRecord>& stages() const { return stages_; }
     /// The analysis settings of the current stage (the model's without stages).
     const AnalysisSettings& analysis() const { return model_.analysis; }
+    /// The largest displacement increment a step may take (m): `max_displacement_ratio` of the
+    /// model's size.
+    double displacement_limit() const { return displacement_limit_; }
     /// The model as given (model() is the current stage's view of it: absent supports and loads
     /// cleared, the stage's materials and settings).
     const Model& full_model() const { return base_model_; }
@@ -261,6 +267,7 @@ public:
     /// [last carried, first not carried]; empty otherwise.
     struct CollapseBracket {
         double carried = 0.0, not_carried = 0.0;
+        Eigen::VectorXd motion;  ///< PlasticCollapse::motion
     };
     const std::optional<CollapseBracket>& collapse() const { return collapse_; }
 
@@ -369,10 +376,11 @@ private:
     /// Static DDA (deformed geometry): settles the state at the step's loads (see StaticStep.cpp).
     void relax(StepReport& report);
     /// The next static step's loads are those of the state reached and it is in equilibrium
-    /// under them, so the step has nothing to do (see StaticStep.cpp).
-    bool at_rest_under_unchanged_loads();
-    /// Completes such a step without a try.
-    StepReport hold_static_step();
+    /// under them, so the step has nothing to do (see StaticStep.cpp): the state's
+    /// unbalanced-force ratio then, nothing otherwise.
+    std::optional<double> at_rest_under_unchanged_loads();
+    /// Completes such a step without a try; `ratio`: the state's unbalanced-force ratio.
+    StepReport hold_static_step(double ratio);
     /// Largest nodal displacement of increments d.
     static double largest_increment(const Eigen::VectorXd& d);
     /// On the updated shape (`"geometry": "updated"`): the first active element that the
@@ -528,8 +536,9 @@ private:
     /// Bolts present, linearised on the step's start geometry.
     std::vector<BoltLink> bolt_links() const;
     /// Completes the report of an accepted step; `residual`: the out-of-balance force of its
-    /// last converged try.
-    void finish_report(StepReport& report, double largest, const Eigen::VectorXd& residual);
+    /// last converged try; `ratio`: the state's unbalanced-force ratio when known already.
+    void finish_report(StepReport& report, double largest, const Eigen::VectorXd& residual,
+                       std::optional<double> ratio = std::nullopt);
 
     Model model_;
     Mesh mesh_;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 namespace mcdda {
@@ -141,7 +142,7 @@ Simulation::Attempt Simulation::try_static_increment(double increment) {
 }
 
 StepReport Simulation::advance_static() {
-    if (at_rest_under_unchanged_loads()) return hold_static_step();
+    if (const std::optional<double> ratio = at_rest_under_unchanged_loads()) return hold_static_step(*ratio);
     StepReport report;
     report.load_increments = 0;
     const double floor = model_.analysis.min_load_fraction;
@@ -173,7 +174,8 @@ StepReport Simulation::advance_static() {
                 throw PlasticCollapse("the load could not be carried beyond " + describe_position(from) + " (" +
                                           attempt.why + " for a load increment of " + std::to_string(steps.increment) +
                                           " of a step)",
-                                      from, from + steps.increment);
+                                      from, from + steps.increment,
+                                      attempt.outcome == Outcome::Singular ? Eigen::VectorXd() : attempt.d);
             case StaticResponse::SmallerTimeStep:
                 cut_static_time_step(attempt, largest, report, steps);
                 continue;
@@ -311,23 +313,26 @@ void Simulation::relax(StepReport& report) {
 // held at constant loads took 3–4 equilibrium iterations and half a factorisation per step, its
 // sliding joints creeping 2.4 % of its largest displacement over 19 steps, and Salençon's tunnel
 // 5 iterations per step at rest, its wall creeping 0.014 % over 18 steps.
-// A construction stage's first step is always tried: the stage changes what is present. So is
-// every step of a strength reduction trial: the picture of its mechanism is the difference
-// between the last two trials that stood, and near the factor of safety it is the slow slip of
-// their later steps that draws it (on the slope wedge, trials stood in 7 equilibrium iterations
-// instead of 79–144 without them, with the same factor, and the wedge no longer stood out).
-bool Simulation::at_rest_under_unchanged_loads() {
-    if (state_.step_fraction != 0.0 || state_.step <= stage_start_step_ || model_.analysis.strength_reduction)
-        return false;
+// A construction stage's first step is always tried: the stage changes what is present. The
+// steps of a strength reduction trial are no exception: on the slope wedge, trials that stand
+// take 6–13 equilibrium iterations instead of 79–144, with the same factor, and their largest
+// displacement no longer creeps up by 9 % as the factor nears the factor of safety (the
+// mechanism's picture, once drawn by that creep, is the motion of the first trial that did not
+// stand: StrengthReduction.cpp, save_critical_pair).
+std::optional<double> Simulation::at_rest_under_unchanged_loads() {
+    if (state_.step_fraction != 0.0 || state_.step <= stage_start_step_) return std::nullopt;
     const double from = state_.step, to = from + 1.0;
     const double time = state_.time + model_.analysis.time_step;
-    if (prescribed_increments(to, time).lpNorm<Eigen::Infinity>() != 0.0) return false;
+    if (prescribed_increments(to, time).lpNorm<Eigen::Infinity>() != 0.0) return std::nullopt;
     const Eigen::VectorXd now = applied_forces(from, state_.time);
-    if (!same_bytes(now.data(), applied_forces(to, time).data(), static_cast<std::size_t>(now.size()))) return false;
-    return unbalanced_ratio() <= model_.analysis.plastic_tolerance;
+    if (!same_bytes(now.data(), applied_forces(to, time).data(), static_cast<std::size_t>(now.size())))
+        return std::nullopt;
+    const double ratio = unbalanced_ratio();
+    if (ratio > model_.analysis.plastic_tolerance) return std::nullopt;
+    return ratio;
 }
 
-StepReport Simulation::hold_static_step() {
+StepReport Simulation::hold_static_step(double ratio) {
     StepReport report;
     report.load_increments = 0;
     report.time_step = state_.time_step;
@@ -335,7 +340,7 @@ StepReport Simulation::hold_static_step() {
     state_.step += 1;
     state_.time += model_.analysis.time_step;
     // The stresses stay where they were: what was yielding stays on its yield surface.
-    finish_report(report, 0.0, Eigen::VectorXd());
+    finish_report(report, 0.0, Eigen::VectorXd(), ratio);
     return report;
 }
 

@@ -26,6 +26,14 @@ double largest_displacement(const SimulationState& s) {
     return largest;
 }
 
+/// The largest nodal length of a motion (2 per node); 0 when it is empty or not finite.
+double largest_motion(const Eigen::VectorXd& u) {
+    if (!u.allFinite()) return 0.0;
+    double largest = 0.0;
+    for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
+    return largest;
+}
+
 /// t − before, field by field (the counts and seconds of one trial).
 RunTimings difference(const RunTimings& t, const RunTimings& before) {
     RunTimings d;
@@ -69,6 +77,8 @@ struct StrengthReductionSearch::Trial {
     /// Collapsed: the share of the analysis's load it carried. (The middle of the collapse
     /// bracket, as a guess of what it could carry, chose worse factors to try.)
     double carried = 0.0;
+    /// Collapsed: where its last try went from `state` (Simulation::CollapseBracket::motion).
+    Eigen::VectorXd motion;
 };
 
 StrengthReductionSearch::StrengthReductionSearch(const Preprocessed& p) : model_(p) {
@@ -119,6 +129,7 @@ StrengthReductionSearch::Trial StrengthReductionSearch::run_trial(double factor,
     trial.cancelled = end.status == RunStatus::Cancelled;
     trial.collapsed = end.status == RunStatus::Collapsed;
     if (trial.collapsed) trial.carried = end.collapse_carried / std::max(1, simulation_->analysis().steps);
+    if (trial.collapsed && simulation_->collapse()) trial.motion = simulation_->collapse()->motion;
     trial.state = simulation_->state();
     StrengthTrial& r = trial.record;
     r.number = static_cast<int>(factor_.table.size()) + 1;
@@ -253,11 +264,19 @@ std::pair<double, StrengthReductionSearch::Pick> StrengthReductionSearch::next_i
 }
 
 // The critical pair: the last state that stood and the first that did not. The latter carries
-// the mechanism engineers look at: the increments of displacement and plastic strain from the
-// next lower factor that stood to the last one — both in equilibrium under the full load, so the
-// increments concentrate on the slip surface. (The trial that did not stand stopped at part of
-// its load, so its difference to the last that stood mixes load and strength.) Without a lower
-// factor that stood, the increments from the construction's end.
+// the mechanism engineers look at:
+// - its displacement increment is the motion of that trial's last try, the one that would not
+//   come to rest: where the model goes at the reduced strengths. A mechanism has a shape but no
+//   size, so it is scaled to the largest increment a step may take (`max_displacement_ratio` of
+//   the model's size). The difference between the last two factors that stood was the picture
+//   once, but a wedge held by friction until it slides stands the same at both: it stood out only
+//   while every step of a trial iterated on at loads it already carried, creeping below the
+//   tolerance, so the picture depended on the number of steps a trial took. That difference is
+//   kept where the trial ended without a motion (a singular matrix, a motion not finite);
+// - its plastic strain increment is that from the next lower factor that stood to the last one,
+//   both in equilibrium under the full load, so it concentrates on the slip surface (without a
+//   lower factor that stood, from the construction's end). The trial that did not stand stopped
+//   at part of its load, so its own state mixes load and strength.
 void StrengthReductionSearch::save_critical_pair(const Bracket& b, RunOutput* output, double last_time) {
     int number = simulation_->state().step;
     if (b.stood) {
@@ -270,10 +289,14 @@ void StrengthReductionSearch::save_critical_pair(const Bracket& b, RunOutput* ou
     extra.field_data.push_back({"strength_factor", 1, {b.fell->record.factor}});
     if (b.stood) {
         // (A trial's displacements are reported from its start: the construction's end.)
-        Eigen::VectorXd du = b.stood->state.reported_displacement();
-        std::vector<double> plastic = b.stood->state.plastic_strain;
         const SimulationState* from = b.below ? &b.below->state : start_ ? &start_->state : nullptr;
-        if (b.below) du -= b.below->state.reported_displacement();
+        Eigen::VectorXd du = b.stood->state.reported_displacement();
+        const double motion = largest_motion(b.fell->motion);
+        if (motion > 0.0 && b.fell->motion.size() == du.size())
+            du = (simulation_->displacement_limit() / motion) * b.fell->motion;
+        else if (b.below)
+            du -= b.below->state.reported_displacement();
+        std::vector<double> plastic = b.stood->state.plastic_strain;
         if (from)
             for (std::size_t e = 0; e < plastic.size() && e < from->plastic_strain.size(); ++e)
                 plastic[e] -= from->plastic_strain[e];
