@@ -33,7 +33,7 @@ StepReport Simulation::advance_dynamic() {
             if (!any_contact || dt < plastic_collapse_time_step * largest_step)
                 throw PlasticCollapse("the load could not be carried at step " + std::to_string(state_.step + 1) +
                                           " (" + attempt.why + ")",
-                                      state_.step, state_.step + 1, attempt.d);
+                                      state_.step, state_.step + 1, mechanism_motion(attempt));
         }
         if (attempt.outcome == Outcome::Singular) last_singular_ = attempt.why;
         const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;

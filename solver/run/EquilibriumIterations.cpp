@@ -320,6 +320,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         const bool converged = monitor.converged(it, elastic_matrix);
         if (converged && monitor.mechanism_when_converged(it)) {
             attempt.why = monitor.why(ConvergenceMonitor::Verdict::Mechanism, it);
+            attempt.mechanism = true;
             return false;
         }
         if (converged ||
@@ -349,6 +350,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         }
         if (verdict != ConvergenceMonitor::Verdict::Continue) {
             attempt.why = monitor.why(verdict, it);
+            attempt.mechanism = verdict == ConvergenceMonitor::Verdict::Mechanism;
             return false;
         }
         if (matrix != ElementMatrix::None) {
@@ -414,6 +416,7 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
         if (plain_newton && monitor.beyond_improvement(it, searched.lowered)) {
             if (monitor.mechanism_when_converged(it)) {
                 attempt.why = monitor.why(ConvergenceMonitor::Verdict::Mechanism, it);
+                attempt.mechanism = true;
                 return false;
             }
             attempt.residual = b.residual;

@@ -118,8 +118,8 @@ struct PlasticCollapse : std::runtime_error {
         : std::runtime_error(what), carried(carried_at), not_carried(failed_at), motion(std::move(failed_motion)) {}
     double carried = 0.0;      ///< load position (steps, fractional) of the last state carried
     double not_carried = 0.0;  ///< the smallest position tried beyond it that could not be carried
-    /// Where the last try that failed went from the state carried (2 per node; empty when its
-    /// matrix was singular): the motion of the mechanism that would not come to rest.
+    /// Where the last try that failed went from the state carried (2 per node), where that is
+    /// the motion of a mechanism (Simulation::mechanism_motion); empty otherwise.
     Eigen::VectorXd motion;
 };
 
@@ -284,6 +284,9 @@ private:
         /// reduce where contacts do not settle (Simulation::time_step_futile).
         double motion = 0.0;
         std::string why;     ///< for failures
+        /// Failed: its iterate flowed past the mechanism limit with material yielding
+        /// (ConvergenceMonitor's mechanism rule).
+        bool mechanism = false;
         /// In: equilibrate may return once the force balances, before the displacement settles,
         /// when the contact states would then change (the open–close loop goes on from there).
         bool may_stop_unsettled = false;
@@ -383,6 +386,9 @@ private:
     StepReport hold_static_step(double ratio);
     /// Largest nodal displacement of increments d.
     static double largest_increment(const Eigen::VectorXd& d);
+    /// The motion of a try that failed, where it is a mechanism's (PlasticCollapse::motion;
+    /// see StaticStep.cpp); empty otherwise.
+    static Eigen::VectorXd mechanism_motion(const Attempt& attempt);
     /// On the updated shape (`"geometry": "updated"`): the first active element that the
     /// increments d turn inside out, or −1.
     int inverted_element(const Eigen::VectorXd& d) const;

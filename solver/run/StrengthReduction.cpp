@@ -265,18 +265,20 @@ std::pair<double, StrengthReductionSearch::Pick> StrengthReductionSearch::next_i
 
 // The critical pair: the last state that stood and the first that did not. The latter carries
 // the mechanism engineers look at:
-// - its displacement increment is the motion of that trial's last try, the one that would not
-//   come to rest: where the model goes at the reduced strengths. A mechanism has a shape but no
-//   size, so it is scaled to the largest increment a step may take (`max_displacement_ratio` of
-//   the model's size). The difference between the last two factors that stood was the picture
-//   once, but a wedge held by friction until it slides stands the same at both: it stood out only
-//   while every step of a trial iterated on at loads it already carried, creeping below the
-//   tolerance, so the picture depended on the number of steps a trial took. That difference is
-//   kept where the trial ended without a motion (a singular matrix, a motion not finite);
+// - its displacement increment is, where that trial's last try failed as a mechanism
+//   (Simulation::mechanism_motion: blocks sliding with nothing yielding, or an iterate that flowed
+//   past the mechanism limit), the motion of that try: where the model goes at the reduced
+//   strengths. A mechanism has a shape but no size, so it is scaled to the largest increment a
+//   step may take (`max_displacement_ratio` of the model's size). Otherwise it is the
+//   displacement from the next lower factor that stood to the last one, both in equilibrium
+//   under the full load. That difference was the wedge's picture too once, but a wedge held by
+//   friction until it slides stands nearly the same at both (its toe slips 10⁻⁶ m): it stood out
+//   only while every step of a trial iterated on at loads it already carried, creeping below the
+//   tolerance, so the picture depended on the number of steps a trial took;
 // - its plastic strain increment is that from the next lower factor that stood to the last one,
-//   both in equilibrium under the full load, so it concentrates on the slip surface (without a
-//   lower factor that stood, from the construction's end). The trial that did not stand stopped
-//   at part of its load, so its own state mixes load and strength.
+//   so it concentrates on the slip surface (without a lower factor that stood, from the
+//   construction's end). The trial that did not stand stopped at part of its load, so its own
+//   state mixes load and strength.
 void StrengthReductionSearch::save_critical_pair(const Bracket& b, RunOutput* output, double last_time) {
     int number = simulation_->state().step;
     if (b.stood) {
