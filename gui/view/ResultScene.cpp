@@ -99,9 +99,8 @@ const FieldInfo field_table[] = {
      QT_TRANSLATE_NOOP("mcdda::view", "effective principal stress 1")},
     {"effective_stress_3", "effective_stress", false, principal_3, "Pa",
      QT_TRANSLATE_NOOP("mcdda::view", "effective principal stress 3")},
-    // The mechanism of a strength reduction (in the last saved step only): the motion of the
-    // first factor that did not stand, and the plastic strain from the next lower factor that
-    // stood to the last one (docs/running.md, "Strength reduction runs").
+    // The mechanism of a strength reduction, in the last saved step only (docs/running.md,
+    // "Strength reduction runs").
     {"displacement_increment", "displacement_increment", true, magnitude, "m",
      QT_TRANSLATE_NOOP("mcdda::view", "displacement increment")},
     {"plastic_strain_increment", "plastic_strain_increment", false, 0, "-",

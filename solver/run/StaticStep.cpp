@@ -328,7 +328,7 @@ void Simulation::relax(StepReport& report) {
 // steps of a strength reduction trial are no exception: on the slope wedge, trials that stand
 // take 6–13 equilibrium iterations instead of 79–144, with the same factor, and their largest
 // displacement no longer creeps up by 9 % as the factor nears the factor of safety (the
-// mechanism's picture, once drawn by that creep, is the motion of the first trial that did not
+// wedge's mechanism, once drawn by that creep, is now the motion of the first trial that did not
 // stand: StrengthReduction.cpp, save_critical_pair).
 std::optional<double> Simulation::at_rest_under_unchanged_loads() {
     if (state_.step_fraction != 0.0 || state_.step <= stage_start_step_) return std::nullopt;
@@ -339,7 +339,7 @@ std::optional<double> Simulation::at_rest_under_unchanged_loads() {
     if (!same_bytes(now.data(), applied_forces(to, time).data(), static_cast<std::size_t>(now.size())))
         return std::nullopt;
     const double ratio = unbalanced_ratio();
-    if (ratio > model_.analysis.plastic_tolerance) return std::nullopt;
+    if (!(ratio <= model_.analysis.plastic_tolerance)) return std::nullopt;
     return ratio;
 }
 
