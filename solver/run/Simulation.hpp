@@ -223,6 +223,8 @@ public:
     /// The largest displacement increment a step may take (m): `max_displacement_ratio` of the
     /// model's size.
     double displacement_limit() const { return displacement_limit_; }
+    /// Largest nodal displacement of increments d (2 per node).
+    static double largest_increment(const Eigen::VectorXd& d);
     /// The model as given (model() is the current stage's view of it: absent supports and loads
     /// cleared, the stage's materials and settings).
     const Model& full_model() const { return base_model_; }
@@ -384,8 +386,6 @@ private:
     std::optional<double> at_rest_under_unchanged_loads();
     /// Completes such a step without a try; `ratio`: the state's unbalanced-force ratio.
     StepReport hold_static_step(double ratio);
-    /// Largest nodal displacement of increments d.
-    static double largest_increment(const Eigen::VectorXd& d);
     /// The motion of a try that failed, where it is a mechanism's (PlasticCollapse::motion;
     /// see StaticStep.cpp); empty otherwise.
     static Eigen::VectorXd mechanism_motion(const Attempt& attempt);

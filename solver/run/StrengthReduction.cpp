@@ -19,20 +19,10 @@ constexpr double bracket_growth = 1.5;
 /// Factors beyond these are not searched: "stands at 100" or "does not stand at 0.01" is the answer.
 constexpr double largest_factor = 100.0, smallest_factor = 0.01;
 
-double largest_displacement(const SimulationState& s) {
-    const Eigen::VectorXd u = s.reported_displacement();
-    double largest = 0.0;
-    for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
-    return largest;
-}
+double largest_displacement(const SimulationState& s) { return Simulation::largest_increment(s.reported_displacement()); }
 
 /// The largest nodal length of a motion (2 per node); 0 when it is empty or not finite.
-double largest_motion(const Eigen::VectorXd& u) {
-    if (!u.allFinite()) return 0.0;
-    double largest = 0.0;
-    for (Eigen::Index i = 0; i + 1 < u.size(); i += 2) largest = std::max(largest, std::hypot(u[i], u[i + 1]));
-    return largest;
-}
+double largest_motion(const Eigen::VectorXd& u) { return u.allFinite() ? Simulation::largest_increment(u) : 0.0; }
 
 /// t − before, field by field (the counts and seconds of one trial).
 RunTimings difference(const RunTimings& t, const RunTimings& before) {
