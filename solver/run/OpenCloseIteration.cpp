@@ -25,6 +25,9 @@ constexpr int max_friction_rounds = 10;
 constexpr double unsettled_round_rise = 2.0;
 constexpr int unsettled_round_floor = 100;
 constexpr int unsettled_round_share = 100;  // 1 %
+/// Where a smaller Δt has been shown not to help, a round whose increment moves a node more than
+/// this many times the per-step displacement limit ends the try unsettled (open_close).
+constexpr double beyond_reach_limits = 20.0;
 
 }  // namespace
 
@@ -56,8 +59,9 @@ Eigen::VectorXd Simulation::prepare_try(const Eigen::VectorXd& external, double 
 
 Simulation::Attempt Simulation::solve_increments(const Eigen::VectorXd& external, const Eigen::VectorXd* start_external,
                                                  double lambda, double dt, std::vector<Contact> contacts,
-                                                 const Eigen::VectorXd& prescribed) {
+                                                 const Eigen::VectorXd& prescribed, bool ends_beyond_reach) {
     Attempt attempt;
+    attempt.ends_beyond_reach = ends_beyond_reach;
     attempt.contacts = std::move(contacts);
     Eigen::VectorXd loads = prepare_try(external, dt, attempt);
     ContactSet set = contact_set(std::move(attempt.contacts));
@@ -164,8 +168,23 @@ void Simulation::open_close(Eigen::VectorXd& d, const Eigen::VectorXd& loads, co
         attempt.may_stop_unsettled = equilibrium_only && iterations < max_iterations;
         if (!equilibrate_or_fail(d, loads, contacts, factor_valid, attempt)) return;
         attempt.d = d;
-        attempt.motion = std::max(attempt.motion, largest_increment(d));
+        const double motion = largest_increment(d);
+        attempt.motion = std::max(attempt.motion, motion);
         attempt.residual -= shift;  // reactions balance the loads actually applied
+        // Where a smaller Δt has been shown not to help (the rest of the step halves the load:
+        // StaticStep.cpp, time_step_futile), a round that moved a node many times as far as a
+        // step may has set blocks loose far beyond the contacts found for the step (detection
+        // looks 2.5 limits out), and no try that moves more than one limit is accepted. On a
+        // slope cut by a 10,000-vertex rough joint the tries at a sixteenth of the step's load
+        // and less moved 6–8 m (65–95 limits) in their second round and up to 850–2,600 m
+        // later, each ending unsettled after all ten rounds. Not before Δt has failed: there the
+        // rounds of a loose block do come back, held by the mass term (on the slope wedge, tries
+        // whose rounds had moved up to 78,000 limits settled within one and were accepted).
+        if (attempt.ends_beyond_reach && motion > beyond_reach_limits * displacement_limit_) {
+            attempt.outcome = Outcome::Unsettled;
+            attempt.why = "contacts do not settle";
+            return;
+        }
         // A bolt pulled beyond its strength breaks, and the try goes on without it.
         if (break_overloaded_bolts(d, attempt)) {
             rebuild_pattern_if_needed(contacts.contacts(), attempt.bolts);

@@ -292,6 +292,9 @@ private:
         /// In: equilibrate may return once the force balances, before the displacement settles,
         /// when the contact states would then change (the open–close loop goes on from there).
         bool may_stop_unsettled = false;
+        /// In: a round that moves a node far beyond a step's reach ends the try unsettled
+        /// (open_close): where a smaller Δt has been shown not to help.
+        bool ends_beyond_reach = false;
         Eigen::VectorXd residual;  ///< out-of-balance force at d (converged: the support reactions, negated)
         std::vector<Contact> contacts;  ///< with the states the try ended with
         std::vector<BoltLink> bolts;  ///< the bolts that held (those that broke in the try left out)
@@ -374,7 +377,8 @@ private:
     /// Whether a smaller Δt is no answer to the `attempt` whose contacts did not settle: the Δt
     /// cut after such a try before it did not make it move less. Records the motion in `steps`.
     static bool time_step_futile(const Attempt& attempt, LoadSteps& steps);
-    Attempt try_static_increment(double increment);
+    /// `load_question`: a smaller Δt has been shown not to help in this step (LoadSteps).
+    Attempt try_static_increment(double increment, bool load_question);
     void cut_static_time_step(const Attempt& attempt, double largest, StepReport& report, LoadSteps& steps);
     /// Commits an increment; true when it completed the step.
     bool accept_static(const Attempt& attempt, double largest, double dt, StepReport& report, LoadSteps& steps);
@@ -396,8 +400,10 @@ private:
     // One try of a load increment (OpenCloseIteration.cpp).
     /// Solves the increments of one try: loads `external`; a static increment applies only the
     /// share `lambda` of the out-of-balance force found at its start (`start_external` there).
+    /// `ends_beyond_reach`: Attempt::ends_beyond_reach.
     Attempt solve_increments(const Eigen::VectorXd& external, const Eigen::VectorXd* start_external, double lambda,
-                             double dt, std::vector<Contact> contacts, const Eigen::VectorXd& prescribed);
+                             double dt, std::vector<Contact> contacts, const Eigen::VectorXd& prescribed,
+                             bool ends_beyond_reach = false);
     /// Bolts, matrix pattern and element matrices for the try; the loads with inertia.
     Eigen::VectorXd prepare_try(const Eigen::VectorXd& external, double dt, Attempt& attempt);
     ContactSet contact_set(std::vector<Contact> contacts);

@@ -127,7 +127,7 @@ Simulation::StaticResponse Simulation::judge_static(const Attempt& attempt, doub
     return StaticResponse::Accept;
 }
 
-Simulation::Attempt Simulation::try_static_increment(double increment) {
+Simulation::Attempt Simulation::try_static_increment(double increment, bool load_question) {
     const double from = state_.step + state_.step_fraction;
     const double to = from + increment;
     const double time = state_.time + increment * model_.analysis.time_step;  // follows the load position
@@ -138,7 +138,7 @@ Simulation::Attempt Simulation::try_static_increment(double increment) {
     Eigen::VectorXd start_external;
     if (lambda < 1.0) start_external = applied_forces(from, state_.time);
     return solve_increments(applied_forces(to, time), lambda < 1.0 ? &start_external : nullptr, lambda,
-                            state_.time_step, std::move(contacts), prescribed_increments(to, time));
+                            state_.time_step, std::move(contacts), prescribed_increments(to, time), load_question);
 }
 
 StepReport Simulation::advance_static() {
@@ -150,7 +150,7 @@ StepReport Simulation::advance_static() {
     while (true) {
         steps.increment = std::min(steps.increment, 1.0 - state_.step_fraction);
         const double dt = state_.time_step, from = state_.step + state_.step_fraction;
-        Attempt attempt = try_static_increment(steps.increment);
+        Attempt attempt = try_static_increment(steps.increment, steps.time_step_futile);
         report.plastic_iterations += attempt.iterations;
         const double largest = attempt.outcome == Outcome::Converged ? largest_increment(attempt.d) : 0.0;
         StaticResponse response = judge_static(attempt, steps.increment, dt, largest);
