@@ -63,12 +63,11 @@ bool crosses_between(Point2 p, Point2 q, Point2 a, Point2 b, double margin) {
     return t * length > margin && (1.0 - t) * length > margin;
 }
 
-/// Whether p lies inside the block bounded by `edges` (their indices in topology.edges): the
-/// parity of the edges a ray from p towards +x crosses. The two faces of a crack cross it
-/// together and cancel.
-bool inside_block(Point2 p, const std::vector<Point2>& nodes, const MeshTopology& topology, const std::vector<int>& edges) {
+/// Whether p lies inside `block`: the parity of its boundary edges a ray from p towards +x
+/// crosses. The two faces of a crack cross it together and cancel.
+bool inside_block(Point2 p, const std::vector<Point2>& nodes, const MeshTopology& topology, int block) {
     bool inside = false;
-    for (int e : edges) {
+    for (int e = topology.block_edge_begin[block]; e < topology.block_edge_begin[block + 1]; ++e) {
         const Point2& a = nodes[topology.edges[e].from];
         const Point2& b = nodes[topology.edges[e].to];
         if ((a.y > p.y) == (b.y > p.y)) continue;
@@ -110,9 +109,6 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
     std::map<std::pair<int, int>, const Contact*> before;  // (node, edge block) → contact
     for (const Contact& c : previous) before[{c.node, c.edge_block}] = &c;
 
-    // Each block's boundary edges, for the test whether a vertex behind an edge is in its block.
-    std::vector<std::vector<int>> block_edges(static_cast<std::size_t>(mesh.block_count()));
-    for (std::size_t e = 0; e < topology.edges.size(); ++e) block_edges[topology.edges[e].block].push_back(static_cast<int>(e));
     const double touching = 1e-9 * topology.model_size;  // a vertex this near an edge lies on it
 
     // Boundary nodes are searched on the worker threads in contiguous ranges; the ranges' contacts
@@ -158,23 +154,24 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
                 // before is on the far side of a thin block (a sliver where a joint meets a
                 // boundary), not touching it. (Such vertices, locked at 0.17–0.25 m penetration, put
                 // GPa stresses into the jointed-tunnel example.)
-                if (gap < -0.1 * search_distance) {
-                    const auto it = before.find({node, edge.block});
-                    if (it == before.end() || it->second->edge != e) continue;
-                }
                 // Nor does a vertex behind an edge penetrate its block unless it is inside the block:
                 // behind a short edge of a sliver, below the sliver's tip, it is outside (a 1 cm
                 // sliver where a joint meets a boundary locked a vertex at 2.2 cm, and every try of
                 // the step failed), and at a joint junction a vertex just outside a block's acute
                 // corner is behind the edge beside the corner by µm. Such a vertex takes the edge
                 // it is nearest to from outside, if any.
-                if (edge.block != block && gap < -touching) {
-                    const auto it = before.find({node, edge.block});
-                    if (it == before.end() || it->second->edge != e) {
-                        auto known = inside.find(edge.block);
-                        if (known == inside.end())
-                            known = inside.emplace(edge.block, inside_block(nodes[node], nodes, topology, block_edges[edge.block])).first;
-                        if (!known->second) continue;
+                if (gap < -touching) {
+                    const auto held = before.find({node, edge.block});
+                    if (held == before.end() || held->second->edge != e) {  // not the edge it had
+                        if (gap < -0.1 * search_distance) continue;
+                        if (edge.block != block) {
+                            auto known = inside.find(edge.block);
+                            if (known == inside.end())
+                                known =
+                                    inside.emplace(edge.block, inside_block(nodes[node], nodes, topology, edge.block))
+                                        .first;
+                            if (!known->second) continue;
+                        }
                     }
                 }
                 // Shi's entrance rule, simplified: a vertex can only enter an edge it faces. A vertex

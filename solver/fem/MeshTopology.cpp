@@ -80,7 +80,9 @@ MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks) 
         t.edge_into[to] = static_cast<int>(t.edges.size());
         t.edges.push_back({from, to, block, source.joint, source.crack});
     };
-    for (int b = 0; b < mesh.block_count(); ++b)
+    t.block_edge_begin.assign(static_cast<std::size_t>(mesh.block_count()) + 1, 0);
+    for (int b = 0; b < mesh.block_count(); ++b) {
+        t.block_edge_begin[b] = static_cast<int>(t.edges.size());
         for (int e = mesh.block_triangle_begin[b]; e < mesh.block_triangle_begin[b + 1]; ++e)
             for (int k = 0; k < 3; ++k) {
                 const int m = mesh.quadratic() ? mesh.midside[e][k] : -1;
@@ -97,6 +99,8 @@ MeshTopology build_topology(const Mesh& mesh, const std::vector<Block>& blocks) 
                     link(m, j, b, source);
                 }
             }
+    }
+    t.block_edge_begin[mesh.block_count()] = static_cast<int>(t.edges.size());
     for (std::size_t i = 0; i < n; ++i)
         if (t.edge_out_of[i] >= 0) t.boundary_nodes.push_back(static_cast<int>(i));
     return t;

@@ -24,7 +24,8 @@ struct BoundaryEdge {
 };
 
 struct MeshTopology {
-    std::vector<BoundaryEdge> edges;
+    std::vector<BoundaryEdge> edges;  ///< block by block: block b's are [block_edge_begin[b], block_edge_begin[b + 1])
+    std::vector<int> block_edge_begin;
     /// For each node: the boundary edges ending at / starting from it (−1 for interior nodes).
     std::vector<int> edge_into, edge_out_of;
     std::vector<int> boundary_nodes;  ///< nodes on some block boundary

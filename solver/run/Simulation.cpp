@@ -219,9 +219,6 @@ void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts,
         if (topology_.edge_out_of[e.to] >= 0)
             reserve.push_back(coupling({c.node, e.to, topology_.edges[topology_.edge_out_of[e.to]].to}));
     }
-    // Static DDA orders by AMD alone: on the staged tunnel's coarse mesh the rounding of
-    // another ordering flips the verdict of a loose floor wedge (docs/benchmarks.md).
-    system_.set_try_nested_dissection(is_equilibrium_only());
     system_.set_pattern(bc_.equation_count, groups, reserve);
     pattern_stale_ = false;
 }

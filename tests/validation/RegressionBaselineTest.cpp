@@ -43,7 +43,10 @@
 // does not move); the jointed tunnel when a vertex behind an edge began to take it only from
 // inside the edge's block (vertices a few µm outside a block's acute corner at a joint junction,
 // behind the edge beside the corner, no longer lock against it: the largest displacement moved
-// by 2.5e-4 of itself, 0.19 µm of 0.75 mm).
+// by 2.5e-4 of itself, 0.19 µm of 0.75 mm); the stable incline when static DDA began to order its
+// factor by nested dissection where that is smaller and to end open–close rounds whose contacts
+// are about to change before they settle (its displacements moved by at most 2.0e-6 relative,
+// 2e-10 m, below the equilibrium tolerance).
 // After a deliberate change, rerun with MCDDA_RECORD_BASELINE=1 and state the reason in the commit.
 //
 //   MCDDA_RECORD_BASELINE=1 ./mcdda_validation_tests --gtest_filter='*RegressionBaseline*'
