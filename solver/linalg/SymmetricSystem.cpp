@@ -41,22 +41,18 @@ SymmetricSystem::SymmetricSystem() : factor_(std::make_unique<CholmodFactor>()),
     // third of the solve time of Salençon's tunnel with ψ = 0 while it refined nothing there (the
     // same results to the last bit; docs/benchmarks.md, "LU solves without iterative refinement").
     lu_->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
-    set_try_nested_dissection(true);
-}
-
-void SymmetricSystem::set_try_nested_dissection(bool on) {
     // Fill-reducing ordering: the symbolic analysis tries AMD and METIS's nested dissection and
     // keeps the one whose factor has fewer entries. On the default example's 31k equations
     // nested dissection gives 1.84M entries and 2.2e8 flops per factorisation against AMD's
     // 1.98M and 3.1e8; the Hoek–Brown tunnel's run takes a fifth less CPU with it
     // (docs/benchmarks.md). The price is one METIS call per pattern (about 0.2 s at 31k
-    // equations). Off: CHOLMOD's default strategy (AMD on these matrices).
+    // equations).
     cholmod_common& c = factor_->llt.cholmod();
-    c.nmethods = on ? 2 : 0;
-    c.method[0].ordering = on ? CHOLMOD_AMD : CHOLMOD_GIVEN;
-    c.method[1].ordering = on ? CHOLMOD_METIS : CHOLMOD_AMD;
-    analysed_ = false;
+    c.nmethods = 2;
+    c.method[0].ordering = CHOLMOD_AMD;
+    c.method[1].ordering = CHOLMOD_METIS;
 }
+
 SymmetricSystem::~SymmetricSystem() = default;
 
 void SymmetricSystem::set_pattern(int equations, const std::vector<CouplingGroup>& groups,

@@ -110,9 +110,6 @@ public:
 
     int factorizations() const { return factorizations_; }
     int symbolic_analyses() const { return analyses_; }
-    /// Whether the symbolic analysis tries METIS's nested dissection besides AMD and keeps the
-    /// smaller factor (the default), or orders by AMD alone. Forces a new symbolic analysis.
-    void set_try_nested_dissection(bool on);
     /// The fill-reducing ordering the last symbolic analysis of the Cholesky factor chose ("AMD"
     /// or "METIS"; empty before one), and the flops of one factorisation with it.
     const char* ordering() const;
