@@ -83,6 +83,11 @@ public:
     /// non-associated model): a fresh stall window and a cap of its own.
     void start_polishing(const Iteration& it);
     bool polishing() const { return polishing_; }
+    /// The contraction of plain elastic corrections that earlier equilibrium iterations of the
+    /// same step measured (0: none): `settled` takes it until this iteration has measured its own.
+    void set_step_contraction(double contraction) { step_contraction_ = contraction; }
+    /// The last contraction this iteration measured (0: none yet).
+    double contraction() const { return contraction_; }
 
     /// Why a failed try failed, in words for the user.
     std::string why(Verdict v, const Iteration& it) const;
@@ -108,6 +113,8 @@ private:
     double plain_before_ = 0.0;  ///< the plain correction before the last one (0: none)
     double ratio_before_ = 0.0;  ///< the contraction between the two before (0: none)
     int polish_from_ = 0;
+    double step_contraction_ = 0.0;  ///< see set_step_contraction
+    double contraction_ = 0.0;       ///< see contraction()
 };
 
 }  // namespace mcdda

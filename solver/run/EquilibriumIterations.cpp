@@ -286,6 +286,15 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
     const double tolerance = model_.analysis.plastic_tolerance;
     const double loads_in_play = load_scale(loads);
     ConvergenceMonitor monitor(tolerance, model_.analysis.max_plastic_iterations, mechanism_displacements * displacement_limit_);
+    monitor.set_step_contraction(step_contraction_);
+    // Whichever way the iteration ends, what it measured serves the step's next ones.
+    struct KeepContraction {
+        const ConvergenceMonitor& monitor;
+        double& kept;
+        ~KeepContraction() {
+            if (monitor.contraction() > 0.0) kept = monitor.contraction();
+        }
+    } keep_contraction{monitor, step_contraction_};
     elements_.set_elastic_share(0.0);  // the consistent tangent until it fails (stiffen_tangent)
     AndersonMixing anderson(anderson_depth);
     double previous = std::numeric_limits<double>::infinity(), last_correction = 0.0;

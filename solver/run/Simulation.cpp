@@ -495,6 +495,7 @@ StepReport Simulation::advance() {
     if (finished()) throw std::runtime_error("the analysis has run all its steps");
     iterating_ = IterationInfo{};
     iterating_.step = state_.step + 1;
+    step_contraction_ = 0.0;  // measured anew in every step (ConvergenceMonitor::settled)
     try {
         if (stage_complete()) begin_stage(stage_ + 1);
         report = model_.analysis.kind == AnalysisSettings::Kind::Static ? advance_static() : advance_dynamic();

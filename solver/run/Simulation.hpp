@@ -574,6 +574,9 @@ private:
         std::vector<long long> closed;  ///< per closed contact: node, edge and state, packed
     };
     HeldFactor held_;
+    /// The contraction of plain elastic corrections measured so far in this step (0: none):
+    /// ConvergenceMonitor::set_step_contraction.
+    double step_contraction_ = 0.0;
     /// What the matrix depends on besides the elements: closed contacts and bolts holding.
     std::vector<long long> closed_signature(const std::vector<Contact>& contacts, const std::vector<BoltLink>& bolts) const;
     void record_solver_counts();  ///< the system's factorisation counts and time into timings_

@@ -67,6 +67,46 @@ TEST(ConvergenceMonitor, PlainCorrectionsSettleAgainstTheDisplacementSoFar) {
     EXPECT_TRUE(bumpy.converged(plain(4, 0.12e-3, 100.0), false));  // 0.17 and 0.6 since
 }
 
+// The open–close rounds and relaxation increments of one step iterate about the same plastic
+// zone: an iteration takes the contraction an earlier one of its step measured until it has two
+// ratios of its own.
+TEST(ConvergenceMonitor, TheStepsContractionServesUntilAnIterationMeasuresItsOwn) {
+    auto plain = [](int k, double correction) {
+        ConvergenceMonitor::Iteration it = at(k, 1e-6, correction);
+        it.displacement = 100.0;
+        it.plain = true;
+        return it;
+    };
+    ConvergenceMonitor first(1e-4, 200, 1.0);
+    EXPECT_EQ(first.contraction(), 0.0);
+    first.converged(plain(1, 1e-3), false);
+    first.converged(plain(2, 0.88e-3), false);
+    first.converged(plain(3, 0.7744e-3), false);
+    EXPECT_NEAR(first.contraction(), 0.88, 1e-12);
+
+    // 0.5e-3 · 0.88 / 0.12 = 3.7e-3 ≤ 1e-4 · 100 at its first plain correction; alone it would
+    // need two more.
+    ConvergenceMonitor next(1e-4, 200, 1.0);
+    next.set_step_contraction(first.contraction());
+    EXPECT_TRUE(next.converged(plain(1, 0.5e-3), false));
+    ConvergenceMonitor alone(1e-4, 200, 1.0);
+    EXPECT_FALSE(alone.converged(plain(1, 0.5e-3), false));
+
+    // A step whose corrections hardly contract: the tail 0.5e-3 · 0.999 / 0.001 = 0.5 is too long.
+    ConvergenceMonitor slow(1e-4, 200, 1.0);
+    slow.set_step_contraction(0.999);
+    EXPECT_FALSE(slow.converged(plain(1, 0.5e-3), false));
+    // A ratio of its own larger than the step's rules: 2e-2 → 1.96e-2 is 0.98, a tail of 0.96.
+    ConvergenceMonitor larger(1e-4, 200, 1.0);
+    larger.set_step_contraction(0.5);
+    EXPECT_FALSE(larger.converged(plain(1, 2e-2), false));
+    EXPECT_FALSE(larger.converged(plain(2, 0.98 * 2e-2), false));
+    // No contraction at all (corrections that grew) lends nothing.
+    ConvergenceMonitor grown(1e-4, 200, 1.0);
+    grown.set_step_contraction(1.2);
+    EXPECT_FALSE(grown.converged(plain(1, 0.5e-3), false));
+}
+
 TEST(ConvergenceMonitor, BalancedNeedsOnlyTheForceAfterTheFirstIteration) {
     const ConvergenceMonitor m(1e-4, 200, 1.0);
     EXPECT_FALSE(m.balanced(at(0, 1e-6, 1e-6)));      // nothing solved yet
