@@ -202,7 +202,7 @@ std::vector<Contact> detect_contacts(const std::vector<Point2>& nodes, const Mes
                             // to this one, at a tip of the block where the nearer edges do not face it: a
                             // vertex of the 500-vertex zigzag joint of a fuzzed jointed tunnel, at a
                             // 2.75° tooth of a neighbouring block, lay "inside" it by parity and took an
-                            // edge 2 cm off (3 such contacts; every try of the step failed, >300 s).
+                            // edge 2 cm off (3 such contacts; every try of the step failed, past 240 s).
                             if (gap < -deep_share * search_distance) {
                                 if (n.nearest < 0.0)
                                     n.nearest = nearest_edge_distance(nodes[node], nodes, topology, *near, edge.block);
