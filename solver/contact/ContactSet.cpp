@@ -8,6 +8,15 @@ namespace mcdda {
 namespace {
 /// A state change by a force below this share of the largest contact force is marginal.
 constexpr double marginal_force_share = 1e-3;
+
+/// Adds a contact sliding before and after an update to the friction in use and to how much the
+/// update's normal force changes it.
+void add_friction(const Contact& before, const Contact& after, double tan_friction, double& used, double& change) {
+    if (before.state != ContactState::Sliding || after.state != ContactState::Sliding) return;
+    const double normal_used = std::max(0.0, before.normal_force);
+    used += normal_used * tan_friction;
+    change += std::fabs(std::max(0.0, after.normal_force) - normal_used) * tan_friction;
+}
 }  // namespace
 
 ContactSet::ContactSet(std::vector<Contact> contacts,
@@ -75,7 +84,6 @@ ContactSet::Update ContactSet::update_states(const Eigen::VectorXd& d, bool equi
     const double force_tolerance = marginal_force_share * u.largest_force;
     for (std::size_t i = 0; i < contacts_.size(); ++i) {
         const Contact before = contacts_[i];
-        const double normal_used = std::max(0.0, before.normal_force);
         double change_force = 0.0;
         const StateChange found =
             update_contact_state(contacts_[i], kinematics_[i], properties_[i], local(i, d), force_tolerance, &change_force);
@@ -85,11 +93,7 @@ ContactSet::Update ContactSet::update_states(const Eigen::VectorXd& d, bool equi
             u.cycling_force = std::max(u.cycling_force, change_force);
         if (change == StateChange::Significant) ++u.changes;
         if (change == StateChange::Marginal) marginal_.push_back({i, before, found == StateChange::Significant});
-        if (before.state == ContactState::Sliding && contacts_[i].state == ContactState::Sliding) {
-            u.friction_used += normal_used * properties_[i].tan_friction;
-            u.friction_change +=
-                std::fabs(std::max(0.0, contacts_[i].normal_force) - normal_used) * properties_[i].tan_friction;
-        }
+        add_friction(before, contacts_[i], properties_[i].tan_friction, u.friction_used, u.friction_change);
     }
     return u;
 }
@@ -109,17 +113,20 @@ StateChange ContactSet::cycling_rule(const Contact& before, Contact& after, Stat
     return equilibrium_only && stick_slip ? change : StateChange::Marginal;
 }
 
-bool ContactSet::would_change(const Eigen::VectorXd& d, bool equilibrium_only) const {
+bool ContactSet::would_change(const Eigen::VectorXd& d, bool equilibrium_only, bool friction_too) const {
     double largest = 0.0;
     for (const Contact& c : contacts_) largest = std::max(largest, std::fabs(c.normal_force));
+    double friction_used = 0.0, friction_change = 0.0;  // as update_states sums them
     for (std::size_t i = 0; i < contacts_.size(); ++i) {
-        Contact after = contacts_[i];
+        const Contact& before = contacts_[i];
+        Contact after = before;
         const StateChange found =
             update_contact_state(after, kinematics_[i], properties_[i], local(i, d), marginal_force_share * largest);
         const int flips = flips_[i] + (found == StateChange::Significant ? 1 : 0);
-        if (cycling_rule(contacts_[i], after, found, flips, equilibrium_only) == StateChange::Significant) return true;
+        if (cycling_rule(before, after, found, flips, equilibrium_only) == StateChange::Significant) return true;
+        add_friction(before, after, properties_[i].tan_friction, friction_used, friction_change);
     }
-    return false;
+    return friction_too && friction_change > friction_agreement * friction_used;
 }
 
 void ContactSet::undo_marginal(bool cycling_too) {

@@ -42,7 +42,12 @@ public:
         double friction_change = 0.0;  ///< how much of it the new normal forces changed
         double cycling_force = 0.0;  ///< the largest change of a cycling contact that was let pass
         double largest_force = 0.0;  ///< the largest contact force of the last solve
+        /// The friction forces in use agree with the new normal forces (no friction round needed).
+        bool friction_agrees() const { return friction_change <= friction_agreement * friction_used; }
     };
+    /// Friction forces agree with the normal forces when the normal forces of the last solve
+    /// change them by at most this share of the friction in use.
+    static constexpr double friction_agreement = 1e-3;
     /// Checks every contact against increments d (update_contact_state). Changes by a force
     /// below a thousandth of the largest contact force are marginal: kept aside (undo_marginal)
     /// while the iteration goes on. A contact that changed more than twice in the try is
@@ -56,7 +61,9 @@ public:
     void undo_marginal(bool cycling_too = true);
     /// Whether update_states(d) would make a significant change, without making it: an
     /// equilibrium iteration need not settle a displacement whose contact states change anyway.
-    bool would_change(const Eigen::VectorXd& d, bool equilibrium_only) const;
+    /// With `friction_too`, also whether the friction forces would not agree with the new normal
+    /// forces (Update::friction_agrees): a friction round then follows from d just the same.
+    bool would_change(const Eigen::VectorXd& d, bool equilibrium_only, bool friction_too) const;
 
 private:
     Vector6 local(std::size_t i, const Eigen::VectorXd& d) const;

@@ -332,8 +332,9 @@ bool Simulation::equilibrate(Eigen::VectorXd& d, const Eigen::VectorXd& loads, c
             attempt.mechanism = true;
             return false;
         }
-        if (converged ||
-            (attempt.may_stop_unsettled && monitor.balanced(it) && contacts.would_change(d, is_equilibrium_only()))) {
+        attempt.stopped_unsettled = !converged && attempt.may_stop_unsettled && monitor.balanced(it) &&
+                                    contacts.would_change(d, is_equilibrium_only(), attempt.may_stop_for_friction);
+        if (converged || attempt.stopped_unsettled) {
             attempt.residual = b.residual;
             return true;
         }

@@ -159,13 +159,18 @@ void Simulation::open_close(Eigen::VectorXd& d, const Eigen::VectorXd& loads, co
     int fewest_changes = std::numeric_limits<int>::max();  // of the rounds after the first
     int& iterations = attempt.open_close_iterations;
     iterations = 1;
+    bool must_settle = false;  // the next round settles whatever happens
     while (iterations <= max_iterations) {
         // A round whose contact states then change need not settle its displacement: the next
         // round starts from it. The last round allowed settles whatever happens, as its few
         // changes may be accepted. (Static DDA settled every round while its staged tunnel's
         // verdict at a loose floor wedge hung on rounding: docs/benchmarks.md, "Fill-reducing
-        // ordering, and rounds that need not settle", and "Static DDA's solves at last".)
-        attempt.may_stop_unsettled = iterations < max_iterations;
+        // ordering, and rounds that need not settle", and "Static DDA's solves at last".) Nor
+        // need one whose friction forces are then brought into agreement with its normal forces,
+        // unless that round is the last friction round allowed (its friction is accepted as it is).
+        attempt.may_stop_unsettled = iterations < max_iterations && !must_settle;
+        attempt.may_stop_for_friction = friction_rounds < max_friction_rounds;
+        must_settle = false;
         if (!equilibrate_or_fail(d, loads, contacts, factor_valid, attempt)) return;
         attempt.d = d;
         const double motion = largest_increment(d);
@@ -215,9 +220,16 @@ void Simulation::open_close(Eigen::VectorXd& d, const Eigen::VectorXd& loads, co
             ++iterations;
             continue;
         }
+        // A round that stopped before it settled is not accepted as it stands (should the update
+        // find nothing to change after all): the same states settle from there.
+        if (attempt.stopped_unsettled && update.friction_agrees()) {
+            contacts.undo_marginal();
+            must_settle = true;
+            continue;
+        }
         // Friction of sliding contacts was taken from the normal forces of the previous solve;
         // repeat until they agree (with the same factor).
-        if (update.friction_change <= 1e-3 * update.friction_used || ++friction_rounds > max_friction_rounds) {
+        if (update.friction_agrees() || ++friction_rounds > max_friction_rounds) {
             // A relaxation increment leaves its contacts as it solved them. The marginal changes
             // this last update made (each by less than a thousandth of the largest contact
             // force) are kept at the end of other tries, so that states follow a moving model;

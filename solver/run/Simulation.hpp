@@ -292,6 +292,11 @@ private:
         /// In: equilibrate may return once the force balances, before the displacement settles,
         /// when the contact states would then change (the open–close loop goes on from there).
         bool may_stop_unsettled = false;
+        /// In: ... also when the friction forces of sliding contacts would then change by more
+        /// than ContactSet::friction_agreement (a friction round goes on from there).
+        bool may_stop_for_friction = false;
+        /// Out: equilibrate returned at a balanced iterate before it settled.
+        bool stopped_unsettled = false;
         /// In: a round that moves a node far beyond a step's reach ends the try unsettled
         /// (open_close): where a smaller Δt has been shown not to help.
         bool ends_beyond_reach = false;

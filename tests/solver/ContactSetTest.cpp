@@ -104,16 +104,40 @@ TEST(ContactSet, WouldChangeForeseesTheUpdateWithoutMakingIt) {
     ContactSet set = contact_set_of(t);
     // Pressed together a little: every contact stays closed, nothing to change.
     const Eigen::VectorXd pressed = upper_block_moves(t, 0.0, -1e-6);
-    EXPECT_FALSE(set.would_change(pressed, false));
+    EXPECT_FALSE(set.would_change(pressed, false, false));
     EXPECT_EQ(set.update_states(pressed, false).changes, 0);
     // Pulled apart: they would all open, and asking leaves them closed.
     const Eigen::VectorXd pulled = upper_block_moves(t, 0.0, 1e-2);
-    EXPECT_TRUE(set.would_change(pulled, false));
-    EXPECT_TRUE(set.would_change(pulled, true));
+    EXPECT_TRUE(set.would_change(pulled, false, false));
+    EXPECT_TRUE(set.would_change(pulled, true, false));
     EXPECT_EQ(set.count(ContactState::Open), 0);
     EXPECT_GT(set.update_states(pulled, false).changes, 0);
     EXPECT_EQ(set.count(ContactState::Open), static_cast<int>(t.contacts.size()));
     // Open and still apart: no change foreseen, none made.
-    EXPECT_FALSE(set.would_change(pulled, false));
+    EXPECT_FALSE(set.would_change(pulled, false, true));
     EXPECT_EQ(set.update_states(pulled, false).changes, 0);
+}
+
+TEST(ContactSet, WouldChangeForeseesAFrictionRoundOnlyWhenAskedTo) {
+    const TwoBlocks t = two_blocks();
+    ContactSet set = contact_set_of(t);
+    // Pressed and sheared far beyond the joint's 30° of friction: the contacts slide, with friction
+    // forces from the normal forces of this solve.
+    const ContactSet::Update slid = set.update_states(upper_block_moves(t, 1e-2, -1e-4), false);
+    ASSERT_GT(slid.changes, 0);
+    const int sliding = set.count(ContactState::Sliding);
+    ASSERT_GT(sliding, 0);
+    // Pressed twice as hard, still sliding: no state changes, but the friction in use is half
+    // what the new normal forces call for, so a friction round would follow.
+    const Eigen::VectorXd harder = upper_block_moves(t, 1e-2, -2e-4);
+    EXPECT_FALSE(set.would_change(harder, false, false));
+    EXPECT_TRUE(set.would_change(harder, false, true));
+    const ContactSet::Update round = set.update_states(harder, false);
+    EXPECT_EQ(round.changes, 0);
+    EXPECT_EQ(set.count(ContactState::Sliding), sliding);
+    EXPECT_GT(round.friction_used, 0.0);
+    EXPECT_FALSE(round.friction_agrees());
+    // The same increments again: the friction now agrees, and nothing is foreseen.
+    EXPECT_FALSE(set.would_change(harder, false, true));
+    EXPECT_TRUE(set.update_states(harder, false).friction_agrees());
 }
