@@ -292,8 +292,9 @@ private:
         /// In: equilibrate may return once the force balances, before the displacement settles,
         /// when the contact states would then change (the open–close loop goes on from there).
         bool may_stop_unsettled = false;
-        /// In: ... also when the friction forces of sliding contacts would then change by more
-        /// than ContactSet::friction_agreement (a friction round goes on from there).
+        /// In: with may_stop_unsettled, equilibrate may also return so when the friction forces
+        /// of sliding contacts would then change by more than ContactSet::friction_agreement of
+        /// them (a friction round goes on from there).
         bool may_stop_for_friction = false;
         /// Out: equilibrate returned at a balanced iterate before it settled.
         bool stopped_unsettled = false;
