@@ -1,5 +1,7 @@
 #include "linalg/SymmetricSystem.hpp"
 
+#include "linalg/SinglePrecisionFactor.hpp"
+
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
 
@@ -16,7 +18,25 @@ using StorageIndex = Eigen::SparseMatrix<double>::StorageIndex;
 // blocks), which pays only on large factors.
 class CholmodFactor {
 public:
-    Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+    struct Decomposition : Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> {
+        const cholmod_factor& factor() const { return *m_cholmodFactor; }
+    };
+    Decomposition llt;
+    /// The factor in single precision, for the solves that only precondition: those with a
+    /// factor held from an earlier matrix (copied at the first of them after a factorisation).
+    SinglePrecisionFactor single;
+    bool single_current = false;
+
+    /// Solves with the factor's single-precision copy (one column per right-hand side).
+    Eigen::MatrixXd precondition(const Eigen::MatrixXd& r) {
+        if (!single_current) {
+            single.assign(llt.factor());
+            single_current = true;
+        }
+        Eigen::MatrixXd z(r.rows(), r.cols());
+        single.solve(r.data(), z.data(), static_cast<int>(r.cols()));
+        return z;
+    }
 };
 
 // UMFPACK's LU with its default (unsymmetric or symmetric) strategy chosen from the pattern.
@@ -252,6 +272,7 @@ void SymmetricSystem::factorize_now() {
     factored_values_.assign(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros());
     correction_.clear();
     correction_built_ = false;
+    factor_->single_current = false;
     factor_->llt.factorize(matrix_);
     ++factorizations_;
     factorization_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -328,16 +349,19 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs, double tolera
     if (!stale_) return factor_->llt.solve(rhs);
     if (!correction_built_) {
         // Its directions are solved for together, each after the first at about half the price
-        // of a solve of its own (measured on the default example: 4 ms for one, 1–1.3 ms for
-        // each further one); worth it while that costs at most three quarters of a factorisation.
+        // of a solve of its own (measured with CHOLMOD's factor on the default example: 4 ms for
+        // one, 1–1.3 ms for each further one; the single-precision copy, too, reads the factor
+        // once for all of them); worth it while that costs at most three quarters of a
+        // factorisation.
         const int max_rank = std::max(1, static_cast<int>(1.0 + 2.0 * (0.75 * c.fl / iteration_flops - 1.0)));
         correction_built_ = true;
-        correction_.build(matrix_, factored_values_,
-                          [this](const Eigen::MatrixXd& b) -> Eigen::MatrixXd { return factor_->llt.solve(b); },
-                          6 * max_rank, max_rank);
+        correction_.build(
+            matrix_, factored_values_, [this](const Eigen::MatrixXd& b) { return factor_->precondition(b); },
+            6 * max_rank, max_rank);
         if (correction_.rank() > 0) refinement_flops_ += (0.5 + 0.5 * correction_.rank()) * iteration_flops;
     }
-    // Conjugate gradients on the current matrix, preconditioned by the held factor (corrected).
+    // Conjugate gradients on the current matrix, preconditioned by the held factor (its copy in
+    // single precision, corrected).
     const auto A = matrix_.selfadjointView<Eigen::Lower>();
     const double target = tolerance * rhs.norm();
     Eigen::VectorXd x = Eigen::VectorXd::Zero(rhs.size()), r = rhs, z, p, Ap;
@@ -348,7 +372,7 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs, double tolera
             held_misfits_ = 0;
             return x;
         }
-        z = factor_->llt.solve(r);
+        z = factor_->precondition(r);
         correction_.apply(r, z);
         const double rz_next = r.dot(z);
         // A preconditioner that is not positive definite (a correction of a matrix that is not

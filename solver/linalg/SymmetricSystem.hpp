@@ -97,7 +97,8 @@ public:
     void factorize(bool may_reuse = false);
 
     /// Solves with the current matrix: directly with its factor, or iterating with a held one
-    /// until the residual is within `tolerance` of the right-hand side. The default, `exact`, is
+    /// (preconditioned by its copy in single precision, SinglePrecisionFactor) until the residual
+    /// is within `tolerance` of the right-hand side. The default, `exact`, is
     /// far below any force tolerance of the equilibrium iterations, which check every solution
     /// against their own; an inexact Newton correction asks for much less. The matrix values must
     /// not change between factorize() and solve().

@@ -46,7 +46,11 @@
 // by 2.5e-4 of itself, 0.19 µm of 0.75 mm); the stable incline when static DDA began to order its
 // factor by nested dissection where that is smaller and to end open–close rounds whose contacts
 // are about to change before they settle (its displacements moved by at most 2.0e-6 relative,
-// 2e-10 m, below the equilibrium tolerance).
+// 2e-10 m, below the equilibrium tolerance); the two inclines when the solves with a held factor,
+// which only precondition conjugate gradients, began to use a copy of it in single precision (the
+// iterations stop at their tolerance along another path: the sliding block's displacements moved
+// by at most 1.3e-6 relative and one stress sample by 3.1e-5 of itself, the stable block's
+// displacements by at most 1.7e-6 relative, 1.1e-11 m).
 // After a deliberate change, rerun with MCDDA_RECORD_BASELINE=1 and state the reason in the commit.
 //
 //   MCDDA_RECORD_BASELINE=1 ./mcdda_validation_tests --gtest_filter='*RegressionBaseline*'
