@@ -27,15 +27,14 @@ public:
     SinglePrecisionFactor single;
     bool single_current = false;
 
-    /// Solves with the factor's single-precision copy (one column per right-hand side).
-    Eigen::MatrixXd precondition(const Eigen::MatrixXd& r) {
+    /// z = A⁻¹ r with the factor's single-precision copy, for `columns` right-hand sides
+    /// (column-major).
+    void precondition(const double* r, double* z, int columns) {
         if (!single_current) {
             single.assign(llt.factor());
             single_current = true;
         }
-        Eigen::MatrixXd z(r.rows(), r.cols());
-        single.solve(r.data(), z.data(), static_cast<int>(r.cols()));
-        return z;
+        single.solve(r, z, columns);
     }
 };
 
@@ -356,7 +355,12 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs, double tolera
         const int max_rank = std::max(1, static_cast<int>(1.0 + 2.0 * (0.75 * c.fl / iteration_flops - 1.0)));
         correction_built_ = true;
         correction_.build(
-            matrix_, factored_values_, [this](const Eigen::MatrixXd& b) { return factor_->precondition(b); },
+            matrix_, factored_values_,
+            [this](const Eigen::MatrixXd& b) {
+                Eigen::MatrixXd z(b.rows(), b.cols());
+                factor_->precondition(b.data(), z.data(), static_cast<int>(b.cols()));
+                return z;
+            },
             6 * max_rank, max_rank);
         if (correction_.rank() > 0) refinement_flops_ += (0.5 + 0.5 * correction_.rank()) * iteration_flops;
     }
@@ -372,7 +376,8 @@ Eigen::VectorXd SymmetricSystem::solve(const Eigen::VectorXd& rhs, double tolera
             held_misfits_ = 0;
             return x;
         }
-        z = factor_->precondition(r);
+        z.resize(r.size());
+        factor_->precondition(r.data(), z.data(), 1);
         correction_.apply(r, z);
         const double rz_next = r.dot(z);
         // A preconditioner that is not positive definite (a correction of a matrix that is not
