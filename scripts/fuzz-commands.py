@@ -30,7 +30,9 @@ std::, what(), terminate called, unexpected failure, bad_alloc, VTK or CGAL mess
 exit with no message). The counts go to stdout and OUT/summary.json — also when the run is
 stopped early by Ctrl-C or SIGTERM (kill, a batch system's time limit, or SIGINT to a run started
 in the background, where the shell ignores it otherwise); every CRASH, HANG and UNCLEAR input is
-kept in OUT/findings/<name>/ with repro.sh (the command line) and output.txt.
+kept in OUT/findings/<name>/ with repro.sh (the command line) and output.txt. With --emit-only
+nothing is run: every mutant is written to OUT/mutants/<number>-<command>/ with its repro.sh
+(with --only N, one finding's input made again without waiting for it to hang).
 The exit status is 1 when there is any finding, 0 otherwise, 2 on a usage or set-up problem.
 
 Sanitized builds (scripts/sanitize.sh, or a CLI built with -fsanitize=address,undefined) work
@@ -1498,6 +1500,24 @@ class Harness:
                 if self.args.stop_on_finding:
                     self.stop = True
 
+    def emit_case(self, case):
+        """Writes the mutant's files and its command line to OUT/mutants/, without running it."""
+        folder = os.path.join(self.out, "mutants", "%06d-%s" % (case.index, case.command))
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(folder)
+        for name, data in case.files.items():
+            with open(os.path.join(folder, name), "wb") as f:
+                f.write(data)
+        cmd = " ".join(shlex.quote(a) for a in [self.mcdda] + case.args)
+        with open(os.path.join(folder, "repro.sh"), "w") as f:
+            f.write("#!/bin/sh\n# %s - mutant %d of seed %s, base %s, mutations: %s\n"
+                    % (case.command, case.index, self.args.seed, case.base, ", ".join(case.kinds)))
+            f.write('cd "$(dirname "$0")" && %s\n' % cmd)
+        os.chmod(os.path.join(folder, "repro.sh"), 0o755)
+        with self.lock:
+            self.done += 1
+            self.counts[case.command]["emitted"] += 1
+
     def write_repro(self, folder, case, rc, out, outcome, reason, seconds, timed_out):
         cmd = " ".join(shlex.quote(a) for a in [self.mcdda] + case.args)
         with open(os.path.join(folder, "repro.sh"), "w") as f:
@@ -1594,6 +1614,9 @@ def main():
     ap.add_argument("--stop-on-finding", action="store_true")
     ap.add_argument("--verbose", action="store_true", help="one line per call")
     ap.add_argument("--keep-going", action="store_true", help="exit 0 even with findings")
+    ap.add_argument("--emit-only", action="store_true",
+                    help="write each mutant and its command line to OUT/mutants/NNNNNN-COMMAND/ without running it "
+                         "(with --only: to make one finding's input again)")
     args = ap.parse_args()
 
     commands = [c.strip() for c in args.commands.split(",") if c.strip()]
@@ -1606,6 +1629,8 @@ def main():
     os.makedirs(h.out, exist_ok=True)
     shutil.rmtree(h.cases_dir, ignore_errors=True)
     shutil.rmtree(h.findings_dir, ignore_errors=True)
+    if args.emit_only:
+        shutil.rmtree(os.path.join(h.out, "mutants"), ignore_errors=True)
     os.makedirs(h.cases_dir)
     corpus = Corpus(args, h.mcdda, h.out)
     if "render" in commands:
@@ -1656,7 +1681,7 @@ def main():
                         exhausted = True
                         break
                     case = make_case(i, command_of(i), corpus, args.seed)
-                    pending.add(pool.submit(h.run_case, case))
+                    pending.add(pool.submit(h.emit_case if args.emit_only else h.run_case, case))
                 if not pending:
                     break
                 done, pending = concurrent.futures.wait(pending, return_when=concurrent.futures.FIRST_COMPLETED)
@@ -1678,6 +1703,10 @@ def main():
     finally:
         h.stop_display()
     wall = time.monotonic() - start
+    if args.emit_only:
+        print("%d mutants written to %s (not run)" % (h.done, os.path.join(h.out, "mutants")))
+        shutil.rmtree(h.cases_dir, ignore_errors=True)
+        sys.exit(130 if interrupted else 2 if harness_error else 0)
     print(h.summary(wall, planned))
     shutil.rmtree(h.cases_dir, ignore_errors=True)
     if interrupted:

@@ -160,6 +160,10 @@ int ElementAssembly::evaluate_element(int e, const Eigen::VectorXd& d, const Poi
         const Eigen::Vector3d sigma(r.stress.xx, r.stress.yy, r.stress.xy);
         f.noalias() += w * g.B[q].transpose() * sigma;
         if (!k) continue;
+        // Bᵀ C B as lazy products: a six-node element's 12 × 12 matrix of depth 3, summed
+        // coefficient by coefficient. Eigen's general product packs both factors for its blocked
+        // kernel, which took 4 % of the default example's run; the sums are the same, term by
+        // term in the same order.
         if (want_tangent && r.plastic) {
             // Symmetric up to round-off for ψ = φ (symmetrised, so Cholesky sees an exactly
             // symmetric matrix); for ψ < φ the exact unsymmetric tangent, which keeps Newton's
@@ -167,12 +171,12 @@ int ElementAssembly::evaluate_element(int e, const Eigen::VectorXd& d, const Poi
             if (law.symmetric_tangent()) {
                 const Eigen::Matrix3d C =
                     (1.0 - elastic_share_) * 0.5 * (tangent + tangent.transpose()) + elastic_share_ * D;
-                k->noalias() += w * g.B[q].transpose() * C * g.B[q];
+                k->noalias() += (w * g.B[q].transpose() * C).lazyProduct(g.B[q]);
             } else {
-                k->noalias() += w * g.B[q].transpose() * tangent * g.B[q];
+                k->noalias() += (w * g.B[q].transpose() * tangent).lazyProduct(g.B[q]);
             }
         } else {
-            k->noalias() += w * g.B[q].transpose() * D * g.B[q];
+            k->noalias() += (w * g.B[q].transpose() * D).lazyProduct(g.B[q]);
         }
     }
     // Rayleigh damping acts on the end-of-step velocity rate·d + rest.

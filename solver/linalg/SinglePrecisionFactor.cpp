@@ -102,29 +102,46 @@ namespace {
 template <int W>
 void forward(int w, const float* block, const float* below, const int* row, int rows, double* yg, double* y) {
     constexpr int capacity = W > 0 ? W : 1;
+    const double* v = yg;
+    double registers[capacity];
     if constexpr (W == 0) {  // any width: the general loops
         for (int j = 0; j < w; ++j) {
             const double yj = (yg[j] /= block[j + j * w]);
             for (int r = j + 1; r < w; ++r) yg[r] -= block[r + j * w] * yj;
         }
-        for (int r = 0; r < rows; ++r, below += w) {
-            double sum = 0.0;
-            for (int j = 0; j < w; ++j) sum += below[j] * yg[j];
-            y[row[r]] -= sum;
-        }
     } else {
-        double v[capacity];
-        for (int j = 0; j < W; ++j) v[j] = yg[j];
+        w = W;
+        for (int j = 0; j < W; ++j) registers[j] = yg[j];
         for (int j = 0; j < W; ++j) {
-            v[j] /= block[j + j * W];
-            for (int r = j + 1; r < W; ++r) v[r] -= block[r + j * W] * v[j];
+            registers[j] /= block[j + j * W];
+            for (int r = j + 1; r < W; ++r) registers[r] -= block[r + j * W] * registers[j];
         }
-        for (int j = 0; j < W; ++j) yg[j] = v[j];
-        for (int r = 0; r < rows; ++r, below += W) {
-            double sum = 0.0;
-            for (int j = 0; j < W; ++j) sum += below[j] * v[j];
-            y[row[r]] -= sum;
+        for (int j = 0; j < W; ++j) yg[j] = registers[j];
+        v = registers;
+    }
+    // The rows' sums four at a time: each row's sum is one chain of dependent additions, which
+    // alone would wait on the adder's latency at every term; four rows' chains overlap. Each
+    // row's terms are still added in the same order (the same rounding as one row at a time).
+    int r = 0;
+    for (; r + 4 <= rows; r += 4, below += 4 * w) {
+        const float *b0 = below, *b1 = below + w, *b2 = below + 2 * w, *b3 = below + 3 * w;
+        double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+        for (int j = 0; j < w; ++j) {
+            const double vj = v[j];
+            s0 += b0[j] * vj;
+            s1 += b1[j] * vj;
+            s2 += b2[j] * vj;
+            s3 += b3[j] * vj;
         }
+        y[row[r]] -= s0;
+        y[row[r + 1]] -= s1;
+        y[row[r + 2]] -= s2;
+        y[row[r + 3]] -= s3;
+    }
+    for (; r < rows; ++r, below += w) {
+        double sum = 0.0;
+        for (int j = 0; j < w; ++j) sum += below[j] * v[j];
+        y[row[r]] -= sum;
     }
 }
 
@@ -134,7 +151,22 @@ template <int W>
 void back(int w, const float* block, const float* below, const int* row, int rows, double* yg, double* y) {
     constexpr int capacity = W > 0 ? W : 1;
     if constexpr (W == 0) {
-        for (int r = 0; r < rows; ++r, below += w) {
+        // Four rows per pass over the group's unknowns (each unknown takes their terms in the
+        // rows' order, as one row at a time would).
+        int r = 0;
+        for (; r + 4 <= rows; r += 4, below += 4 * w) {
+            const float *b0 = below, *b1 = below + w, *b2 = below + 2 * w, *b3 = below + 3 * w;
+            const double y0 = y[row[r]], y1 = y[row[r + 1]], y2 = y[row[r + 2]], y3 = y[row[r + 3]];
+            for (int j = 0; j < w; ++j) {
+                double v = yg[j];
+                v -= b0[j] * y0;
+                v -= b1[j] * y1;
+                v -= b2[j] * y2;
+                v -= b3[j] * y3;
+                yg[j] = v;
+            }
+        }
+        for (; r < rows; ++r, below += w) {
             const double yr = y[row[r]];
             for (int j = 0; j < w; ++j) yg[j] -= below[j] * yr;
         }

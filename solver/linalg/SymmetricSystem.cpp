@@ -128,16 +128,6 @@ int SymmetricSystem::slot_of(int i, int j) const {
     return it != end && *it == row ? static_cast<int>(it - inner) : -1;
 }
 
-bool SymmetricSystem::pattern_contains(const std::vector<CouplingGroup>& groups) const {
-    for (const CouplingGroup& g : groups)
-        for (int a = 0; a < g.size; ++a)
-            for (int b = 0; b <= a; ++b) {
-                const int i = g.equation[a], j = g.equation[b];
-                if (i >= 0 && j >= 0 && slot_of(i, j) < 0) return false;
-            }
-    return true;
-}
-
 void SymmetricSystem::set_groups(const std::vector<CouplingGroup>& groups, int keep) {
     group_size_.resize(keep);
     group_slot_offset_.resize(keep + 1);
@@ -151,6 +141,33 @@ void SymmetricSystem::set_groups(const std::vector<CouplingGroup>& groups, int k
             }
         group_slot_offset_.push_back(static_cast<int>(slots_.size()));
     }
+}
+
+bool SymmetricSystem::set_groups_if_in_pattern(const std::vector<CouplingGroup>& groups, int keep) {
+    // The new groups' slots are found first, aside: a coupling missing from the pattern leaves
+    // the groups as they were.
+    new_slots_.clear();
+    for (const CouplingGroup& g : groups)
+        for (int a = 0; a < g.size; ++a)
+            for (int b = 0; b <= a; ++b) {
+                const int i = g.equation[a], j = g.equation[b];
+                if (i < 0 || j < 0) {
+                    new_slots_.push_back(-1);
+                    continue;
+                }
+                const int slot = slot_of(i, j);
+                if (slot < 0) return false;
+                new_slots_.push_back(2 * slot + (i < j ? 1 : 0));
+            }
+    group_size_.resize(keep);
+    group_slot_offset_.resize(keep + 1);
+    slots_.resize(group_slot_offset_.back());
+    slots_.insert(slots_.end(), new_slots_.begin(), new_slots_.end());
+    for (const CouplingGroup& g : groups) {
+        group_size_.push_back(g.size);
+        group_slot_offset_.push_back(group_slot_offset_.back() + g.size * (g.size + 1) / 2);
+    }
+    return true;
 }
 
 void SymmetricSystem::clear_values() {

@@ -51,12 +51,14 @@ public:
     void set_pattern(int equations, const std::vector<CouplingGroup>& groups,
                      const std::vector<CouplingGroup>& pattern_only = {});
 
-    /// True when every coupling of the groups is already in the pattern.
-    bool pattern_contains(const std::vector<CouplingGroup>& groups) const;
-
     /// Replaces the groups after the first `keep` (their slots) without touching the pattern,
-    /// which must contain them (pattern_contains): the symbolic analysis stays valid.
+    /// which must contain them: the symbolic analysis stays valid.
     void set_groups(const std::vector<CouplingGroup>& groups, int keep = 0);
+
+    /// set_groups(groups, keep) when the pattern holds every coupling of the groups, and true;
+    /// otherwise false, and nothing changed (set_pattern is then needed). One look-up per
+    /// coupling either way.
+    bool set_groups_if_in_pattern(const std::vector<CouplingGroup>& groups, int keep);
 
     int equations() const { return equations_; }
     int group_count() const { return static_cast<int>(group_slot_offset_.size()) - 1; }
@@ -133,6 +135,7 @@ private:
     /// plus one when equation a < equation b (the block's (a, b) entry is then above the diagonal).
     std::vector<int> slots_;
     std::vector<int> diagonal_slot_;
+    std::vector<int> new_slots_;  ///< set_groups_if_in_pattern's slots before they are taken
 
     int slot_of(int i, int j) const;  ///< position of entry (i, j) in the values, or −1
     std::unique_ptr<CholmodFactor> factor_;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 
 namespace mcdda {
 
@@ -128,23 +129,39 @@ ReturnResult MohrCoulomb::return_map(const PlaneStress& trial) const { return re
 ReturnResult MohrCoulomb::return_map(const PlaneStress& trial, Eigen::Matrix3d* tangent) const {
     ReturnResult result;
     result.stress = trial;
-
-    // Principal values sorted (the frame keeps the way back to x, y, z).
-    const PrincipalFrame frame(trial);
-    const Eigen::Vector3d& s = frame.sorted;
-
     auto violation = [&](const Eigen::Vector3d& x) {
         double worst = -1e300;
         for (int i = 0; i < plane_count_; ++i) worst = std::max(worst, planes_[i].n.dot(x) - planes_[i].k);
         return worst;
     };
-    if (violation(s) <= tolerance_) {  // elastic
+    auto elastic = [&]() {
         if (tangent) {
             const double diagonal = lambda_ + 2 * shear_modulus_;
             *tangent << diagonal, lambda_, 0.0, lambda_, diagonal, 0.0, 0.0, 0.0, shear_modulus_;
         }
         return result;
+    };
+    // Most points stay elastic, and the test needs no principal frame (a hypot, a division)
+    // where it passes with room to spare: the radius of Mohr's circle is at most
+    // |½(σxx − σyy)| + |τxy|, and with a larger radius the major principal value can only rise
+    // and the minor only fall, which raises the largest of the planes' functions (that of the
+    // major and the minor value, or the major's tension cut-off). Passed by more than any
+    // rounding there, the exact test below passes too: the same verdict, not an approximation.
+    {
+        const double centre = 0.5 * (trial.xx + trial.yy);
+        const double radius_bound = std::fabs(0.5 * (trial.xx - trial.yy)) + std::fabs(trial.xy);
+        double v[3] = {centre + radius_bound, centre - radius_bound, trial.zz};
+        if (v[2] > v[0]) std::swap(v[2], v[0]);
+        if (v[2] > v[1]) std::swap(v[2], v[1]);
+        const double rounding =
+            1e-13 * (std::fabs(v[0]) + std::fabs(v[1]) + std::fabs(v[2]) + cohesion_ + tensile_strength_);
+        if (violation(Eigen::Vector3d(v[0], v[1], v[2])) <= tolerance_ - rounding) return elastic();
     }
+
+    // Principal values sorted (the frame keeps the way back to x, y, z).
+    const PrincipalFrame frame(trial);
+    const Eigen::Vector3d& s = frame.sorted;
+    if (violation(s) <= tolerance_) return elastic();
 
     const double scale = tolerance_;
     Eigen::Vector3d best = s;

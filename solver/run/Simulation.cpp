@@ -202,10 +202,8 @@ void Simulation::rebuild_pattern_if_needed(const std::vector<Contact>& contacts,
     // Contacts come and go and move between neighbouring edges; as long as the pattern already
     // holds their couplings only the slots change and CHOLMOD's symbolic analysis is kept.
     if (!pattern_stale_ && system_.group_count() >= elements && system_.equations() == bc_.equation_count &&
-        system_.pattern_contains(contact_groups)) {
-        system_.set_groups(contact_groups, elements);
+        system_.set_groups_if_in_pattern(contact_groups, elements))
         return;
-    }
     std::vector<CouplingGroup> groups;
     groups.reserve(elements + contacts.size());
     for (int e = 0; e < elements; ++e) groups.push_back(element_coupling(e));

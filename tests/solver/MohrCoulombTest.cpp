@@ -31,6 +31,30 @@ TEST(MohrCoulomb, InsideTheSurfaceNothingChanges) {
     EXPECT_EQ(r.stress.xy, s.xy);
 }
 
+TEST(MohrCoulomb, TheElasticVerdictIsTheYieldFunctionsEvenJustInsideTheSurface) {
+    // Trial stresses scattered about the surface (in-plane shear as large as the normal
+    // difference, where the quick bound on Mohr's radius is loosest, and the out-of-plane value
+    // anywhere in the order): plastic exactly where the yield function is positive, with and
+    // without the tension cut-off, with the tangent asked for or not.
+    for (const double tension : {0.0, 0.2e6}) {
+        const MohrCoulomb m(E, nu, c, 35 * deg, 5 * deg, tension);
+        int elastic = 0, plastic = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const double a = std::sin(1.7 * i), b = std::sin(2.3 * i + 1.0), z = std::sin(0.7 * i + 2.0);
+            const double size = 0.3e6 + 4e6 * (0.5 + 0.5 * std::sin(0.31 * i));
+            PlaneStress s{-2e6 + size * a, -2e6 + size * b, size * 0.5 * (a - b) * std::cos(0.9 * i), -2e6 + size * z};
+            const double f = m.yield(s);
+            if (std::fabs(f) < 1e-6 * c) continue;  // on the surface: rounding decides
+            Eigen::Matrix3d tangent;
+            const ReturnResult r = m.return_map(s, i % 2 ? &tangent : nullptr);
+            ASSERT_EQ(r.plastic, f > 0.0) << i << ": f = " << f;
+            (r.plastic ? plastic : elastic) += 1;
+        }
+        EXPECT_GT(elastic, 1000);
+        EXPECT_GT(plastic, 1000);
+    }
+}
+
 TEST(MohrCoulomb, ReturnsOntoTheMainPlane) {
     const MohrCoulomb m(E, nu, c, 30 * deg, 10 * deg, 0);
     const PlaneStress trial{-1e6, -12e6, 2e6, -6e6};  // σ1, σ2, σ3 well apart

@@ -342,6 +342,48 @@ TEST(SymmetricSystem, AHeldFactorIsCorrectedForAFewLargeChanges) {
     EXPECT_LT((s.solve(b) - x).norm(), 1e-8 * x.norm());
 }
 
+TEST(SymmetricSystem, GroupsWithinThePatternReplaceTheOldOnesAndOthersLeaveThemAsTheyWere) {
+    // A chain whose last spring is first left out of the pattern, then reserved (pattern_only):
+    // the springs as groups after the first, as contacts are after the elements.
+    const Chain chain(6);
+    SymmetricSystem s;
+    const std::vector<CouplingGroup> first(chain.groups.begin(), chain.groups.begin() + 1);
+    const std::vector<CouplingGroup> middle(chain.groups.begin() + 1, chain.groups.end() - 1);
+    const std::vector<CouplingGroup> all_but_first(chain.groups.begin() + 1, chain.groups.end());
+    std::vector<CouplingGroup> initial = first;
+    initial.insert(initial.end(), middle.begin(), middle.end());
+    s.set_pattern(chain.n, initial);
+    // The last spring couples equations 4 and 5, which the pattern does not: refused, and the
+    // groups stay as they were (the first and the middle ones).
+    EXPECT_FALSE(s.set_groups_if_in_pattern(all_but_first, 1));
+    EXPECT_EQ(s.group_count(), 1 + static_cast<int>(middle.size()));
+    // Within the pattern: the middle groups in reverse order replace the old ones.
+    std::vector<CouplingGroup> reversed(middle.rbegin(), middle.rend());
+    ASSERT_TRUE(s.set_groups_if_in_pattern(reversed, 1));
+    EXPECT_EQ(s.group_count(), 1 + static_cast<int>(reversed.size()));
+    // Assembled through the new groups, the matrix is the chain's without its last spring.
+    std::vector<double> k = {1.0, 2.0, 3.0, 4.0, 0.0};
+    s.clear_values();
+    const double b0[4] = {k[0], -k[0], -k[0], k[0]};
+    s.add(0, b0);
+    for (std::size_t i = 0; i < reversed.size(); ++i) {
+        const double ki = k[reversed[i].equation[0]];  // spring i joins equations i and i + 1
+        const double b[4] = {ki, -ki, -ki, ki};
+        s.add(1 + static_cast<int>(i), b);
+    }
+    s.add_diagonal(0, 1.0);
+    s.add_diagonal(5, 1.0);  // equation 5 held on its own
+    s.factorize();
+    Eigen::MatrixXd dense = chain.dense(k, 1.0);
+    dense(5, 5) += 1.0;
+    const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(chain.n, 1.0, 2.0);
+    EXPECT_LT((dense * s.solve(rhs) - rhs).norm(), 1e-12 * rhs.norm());
+    // With the last spring reserved in the pattern it is accepted.
+    s.set_pattern(chain.n, first, all_but_first);
+    EXPECT_TRUE(s.set_groups_if_in_pattern(all_but_first, 1));
+    EXPECT_EQ(s.group_count(), chain.n - 1);
+}
+
 TEST(SymmetricSystem, ASingularMatrixIsReportedAlsoWhenAFactorIsHeld) {
     const Chain chain(30);
     SymmetricSystem s;
