@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     single.assign(llt.factor());
     std::vector<double> b(n), x(n);
     for (int i = 0; i < n; ++i) b[i] = std::sin(0.1 * i);
-    const int solves = 300;
+    const int solves = 1000;
     double checksum = 0.0;
     const auto start = std::chrono::steady_clock::now();
     for (int k = 0; k < solves; ++k) {
